@@ -1,0 +1,57 @@
+# libsmg top-level Makefile.
+#
+# Each part of the project owns one fragment in mk/ and adds its outputs to
+# the shared lists below, so parts can grow without editing each other:
+#   ALL_TARGETS    built by `make`
+#   TEST_TARGETS   run by `make test` (each must fail the build on failure)
+#   BENCH_TARGETS  run by `make bench` (print figures; never pass/fail on time)
+# Layout: include/ (public headers), libsmg/common (blob container, shared by
+# runtime and baker), libsmg/runtime (libsmg.a/.so), libsmg/bake (offline,
+# libsmg_bake.a, links assimp), tools/ (CLIs), tests/, demo/, bindings/.
+
+PREFIX ?= /usr/local
+DESTDIR ?=
+BUILD ?= build
+
+CC ?= cc
+CXX ?= c++
+OPT ?= -O2 -g
+WARN := -Wall -Wextra -Wpedantic -Werror
+CSTD := -std=c99
+CPPFLAGS_COMMON := -Iinclude -Ilibsmg/common -D_POSIX_C_SOURCE=200809L
+CFLAGS_LIB := $(CSTD) $(WARN) $(OPT) -fPIC -fvisibility=hidden $(CPPFLAGS_COMMON)
+CFLAGS_TOOL := $(CSTD) $(WARN) $(OPT) $(CPPFLAGS_COMMON) -Ilibsmg/bake -Ilibsmg/runtime
+LDLIBS_M := -lm
+
+ALL_TARGETS :=
+TEST_TARGETS :=
+BENCH_TARGETS :=
+
+.DEFAULT_GOAL := all
+
+include mk/lib.mk
+-include mk/bake.mk
+-include mk/tools.mk
+-include mk/tests.mk
+-include mk/demo.mk
+-include mk/godot.mk
+-include mk/eval.mk
+
+.PHONY: all test bench clean deps
+all: $(ALL_TARGETS)
+
+# Tests run in the listed order; each target fails the whole run on failure.
+test: all
+	@set -e; for t in $(TEST_TARGETS); do $(MAKE) --no-print-directory $$t; done
+	@echo "make test: all test targets passed ($(TEST_TARGETS))"
+
+bench: all
+	@set -e; for t in $(BENCH_TARGETS); do $(MAKE) --no-print-directory $$t; done
+
+clean:
+	rm -rf $(BUILD)
+
+# Installs every Debian package the project needs (as root), else prints the
+# exact command and fails.
+deps:
+	@sh tools/deps.sh
