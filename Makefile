@@ -29,13 +29,11 @@ BENCH_TARGETS :=
 
 .DEFAULT_GOAL := all
 
+# lib.mk and bake.mk define the libraries others link; every other fragment
+# (tools, tests, demo, godot, eval, ...) is picked up automatically.
 include mk/lib.mk
--include mk/bake.mk
--include mk/tools.mk
--include mk/tests.mk
--include mk/demo.mk
--include mk/godot.mk
--include mk/eval.mk
+include mk/bake.mk
+include $(filter-out mk/lib.mk mk/bake.mk,$(sort $(wildcard mk/*.mk)))
 
 .PHONY: all test bench clean deps
 all: $(ALL_TARGETS)

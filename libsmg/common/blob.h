@@ -1,0 +1,37 @@
+/*
+ * blob.h - the graph blob container: deterministic writer and validating
+ * reader, shared by the baker (writes) and the runtime (reads).
+ * Format: docs/blob-format.md; records: smg_format.h.
+ */
+#ifndef SMG_BLOB_H
+#define SMG_BLOB_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "smg.h"
+#include "smg_format.h"
+
+/* FNV-1a 64-bit hash (the payload checksum). */
+uint64_t smgi_fnv1a64(const void* data, size_t size);
+
+/* Serialise `graph` into one freshly allocated, 16-byte aligned buffer
+ * (through `allocator`, NULL = malloc). Same input -> byte-identical output
+ * (padding is zeroed). The writer validates what it writes with the same
+ * checks as the reader, so a baker bug cannot produce a blob the runtime
+ * rejects. Free with smgi_blob_free. */
+smg_result smgi_blob_write(const smgi_graph_data* graph,
+                           const smg_allocator* allocator, void** out_data,
+                           size_t* out_size, char* error, size_t error_size);
+void smgi_blob_free(void* data, const smg_allocator* allocator);
+
+/* Validate `data` (size bytes, 16-byte aligned) completely and fill `out`
+ * with pointers into it. On failure returns the specific SMG_ERROR_BLOB_*
+ * code and writes a one-line reason (section, record, field) into `error`
+ * (may be NULL). flags: SMG_GRAPH_SKIP_CHECKSUM. Never reads outside
+ * [data, data + size). */
+smg_result smgi_blob_read(const void* data, size_t size, uint32_t flags,
+                          smgi_graph_data* out, char* error,
+                          size_t error_size);
+
+#endif /* SMG_BLOB_H */

@@ -1,0 +1,34 @@
+/*
+ * graph_internal.h - what an smg_graph is inside the runtime. Characters
+ * read `data` (validated once at load, immutable afterwards) and bump
+ * `character_count` so the graph cannot be destroyed under them.
+ */
+#ifndef SMG_GRAPH_INTERNAL_H
+#define SMG_GRAPH_INTERNAL_H
+
+#include <stdint.h>
+
+#include "smg.h"
+#include "smg_format.h"
+
+struct smg_graph {
+  smgi_graph_data data;      /* validated view into the blob */
+  smg_allocator allocator;   /* resolved: never NULL functions */
+  smg_logger logger;
+  void* owned_blob;          /* the file's bytes when loaded from a file,
+                                NULL when loaded in place */
+  uint64_t blob_size;
+  uint32_t format_version;
+  uint32_t character_count;  /* live characters; changed only through
+                                smgi_graph_retain/release (atomic) */
+};
+
+void smgi_graph_retain(smg_graph* graph);
+void smgi_graph_release(smg_graph* graph);
+
+/* Pose record i (SMGI_POSE_STRIDE floats). */
+static inline const float* smgi_graph_pose(const smg_graph* g, uint32_t i) {
+  return g->data.poses + (uint64_t)i * SMGI_POSE_STRIDE(g->data.joint_count);
+}
+
+#endif /* SMG_GRAPH_INTERNAL_H */
