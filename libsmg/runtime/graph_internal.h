@@ -21,7 +21,14 @@ struct smg_graph {
   uint32_t format_version;
   uint32_t character_count;  /* live characters; changed only through
                                 smgi_graph_retain/release (atomic) */
+  void* derived;             /* smgi_derived (graph_derived.h): runtime
+                                lookup tables built at load */
 };
+
+/* Runtime-derived tables (graph_derived.c): graph.c calls build after the
+ * blob validated (failure fails the load) and free in destroy. */
+smg_result smgi_graph_derived_build(smg_graph* graph);
+void smgi_graph_derived_free(smg_graph* graph);
 
 void smgi_graph_retain(smg_graph* graph);
 void smgi_graph_release(smg_graph* graph);

@@ -1,0 +1,163 @@
+/*
+ * graph_derived.c - load-time lookup tables for the runtime (see
+ * graph_derived.h). Everything lives in one allocation so destroy is one
+ * free and the tables stay close together in memory.
+ */
+#include "graph_derived.h"
+
+#include <string.h>
+
+#include "alloc.h"
+
+static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
+
+/* Multi-source BFS on reversed edges: hops[n*L + l] = 0 where node n has an
+ * out-edge labelled l, else 1 + min over out-edges of hops[to]. `in_first`
+ * / `in_edges` is the reverse adjacency (CSR), `queue` node_count scratch. */
+static void compute_hops(const smgi_node* nodes, uint32_t node_count,
+                         const smgi_edge* edges, uint32_t label_count,
+                         const uint32_t* in_first, const uint32_t* in_edges,
+                         uint32_t* queue, uint8_t* hops) {
+  for (uint32_t l = 0; l < label_count; ++l) {
+    uint32_t head = 0, tail = 0;
+    for (uint32_t n = 0; n < node_count; ++n) {
+      uint8_t h = SMGI_HOPS_UNREACHABLE;
+      for (uint32_t k = 0; k < nodes[n].edge_count; ++k) {
+        if (edges[nodes[n].first_edge + k].label == l) {
+          h = 0;
+          break;
+        }
+      }
+      hops[(size_t)n * label_count + l] = h;
+      if (h == 0) queue[tail++] = n;
+    }
+    while (head < tail) {
+      uint32_t n = queue[head++];
+      uint8_t hn = hops[(size_t)n * label_count + l];
+      if (hn + 1u >= SMGI_HOPS_UNREACHABLE) continue;
+      for (uint32_t k = in_first[n]; k < in_first[n + 1]; ++k) {
+        uint32_t from = edges[in_edges[k]].from;
+        uint8_t* hf = &hops[(size_t)from * label_count + l];
+        if (*hf == SMGI_HOPS_UNREACHABLE) {
+          *hf = (uint8_t)(hn + 1u);
+          queue[tail++] = from;
+        }
+      }
+    }
+  }
+}
+
+/* Reverse adjacency of one graph into caller scratch: in_first has
+ * node_count + 1 entries, in_edges edge_count. */
+static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
+                          uint32_t node_count, uint32_t* in_first,
+                          uint32_t* in_edges) {
+  memset(in_first, 0, sizeof(uint32_t) * ((size_t)node_count + 1u));
+  for (uint32_t e = 0; e < edge_count; ++e) in_first[edges[e].to + 1u]++;
+  for (uint32_t n = 0; n < node_count; ++n) in_first[n + 1u] += in_first[n];
+  for (uint32_t e = 0; e < edge_count; ++e) {
+    /* in_first[to] is used as a cursor and restored below */
+    in_edges[in_first[edges[e].to]++] = e;
+  }
+  for (uint32_t n = node_count; n > 0; --n) in_first[n] = in_first[n - 1u];
+  in_first[0] = 0;
+}
+
+smg_result smgi_graph_derived_build(smg_graph* g) {
+  if (!g) return SMG_ERROR_INVALID_ARGUMENT;
+  const smgi_graph_data* d = &g->data;
+  const uint32_t F = d->frame_count;
+  const uint32_t S = d->style_count, A = d->action_count;
+  const uint32_t LN = d->lower_node_count, UN = d->upper_node_count;
+
+  size_t off_lh = 0;
+  size_t off_uh = off_lh + align16((size_t)LN * S);
+  size_t off_sf = off_uh + align16((size_t)UN * A);
+  size_t off_fu = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
+  size_t off_af = off_fu + align16(sizeof(uint32_t) * (size_t)F);
+  size_t off_sn = off_af + align16(sizeof(uint32_t) * (size_t)A);
+  size_t total = off_sn + align16(sizeof(uint32_t) * (size_t)S);
+  size_t block = align16(sizeof(smgi_derived));
+
+  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 16);
+  if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
+  memset(mem, 0, block + total);
+  smgi_derived* dv = (smgi_derived*)mem;
+  uint8_t* base = mem + block;
+  uint8_t* lower_hops = base + off_lh;
+  uint8_t* upper_hops = base + off_uh;
+  uint32_t* splice_first = (uint32_t*)(base + off_sf);
+  uint32_t* frame_upper = (uint32_t*)(base + off_fu);
+  uint32_t* action_first = (uint32_t*)(base + off_af);
+  uint32_t* style_first = (uint32_t*)(base + off_sn);
+
+  /* Scratch for the BFS: reverse adjacency of the larger graph. */
+  uint32_t maxn = LN > UN ? LN : UN;
+  uint32_t maxe = d->lower_edge_count > d->upper_edge_count
+                      ? d->lower_edge_count
+                      : d->upper_edge_count;
+  size_t scratch_size = sizeof(uint32_t) * ((size_t)maxn + 1u + maxe + maxn);
+  uint32_t* scratch = (uint32_t*)smgi_alloc(&g->allocator, scratch_size, 16);
+  if (!scratch) {
+    smgi_free(&g->allocator, mem);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  uint32_t* in_first = scratch;
+  uint32_t* in_edges = scratch + maxn + 1u;
+  uint32_t* queue = in_edges + maxe;
+
+  build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_edges);
+  compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_edges,
+               queue, lower_hops);
+  build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_edges);
+  compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_edges,
+               queue, upper_hops);
+  smgi_free(&g->allocator, scratch);
+
+  /* Splice index: SPLC is sorted by lower_frame (validated), so a counting
+   * pass gives the CSR offsets. */
+  for (uint32_t i = 0; i < d->splice_count; ++i) {
+    uint32_t f = d->splices[i].lower_frame;
+    if (f < F) splice_first[f + 1u]++;
+  }
+  for (uint32_t f = 0; f < F; ++f) splice_first[f + 1u] += splice_first[f];
+
+  for (uint32_t f = 0; f < F; ++f) frame_upper[f] = SMGI_NONE;
+  for (uint32_t e = 0; e < d->upper_edge_count; ++e) {
+    const smgi_edge* ue = &d->upper_edges[e];
+    for (uint32_t k = 0; k < ue->frame_count; ++k) {
+      uint64_t f = (uint64_t)ue->first_frame + k;
+      if (f < F && frame_upper[f] == SMGI_NONE) frame_upper[f] = e;
+    }
+  }
+  for (uint32_t a = 0; a < A; ++a) action_first[a] = SMGI_NONE;
+  for (uint32_t e = d->upper_edge_count; e > 0; --e) {
+    uint32_t l = d->upper_edges[e - 1u].label;
+    if (l < A) action_first[l] = e - 1u;
+  }
+  for (uint32_t s = 0; s < S; ++s) style_first[s] = SMGI_NONE;
+  for (uint32_t n = LN; n > 0; --n) {
+    uint32_t l = d->lower_nodes[n - 1u].label;
+    if (l < S) style_first[l] = n - 1u;
+  }
+  uint32_t maxdeg = 0;
+  for (uint32_t n = 0; n < LN; ++n)
+    if (d->lower_nodes[n].edge_count > maxdeg)
+      maxdeg = d->lower_nodes[n].edge_count;
+
+  dv->lower_hops = lower_hops;
+  dv->upper_hops = upper_hops;
+  dv->splice_first = splice_first;
+  dv->frame_upper_edge = frame_upper;
+  dv->action_first_edge = action_first;
+  dv->style_first_node = style_first;
+  dv->max_lower_degree = maxdeg;
+  g->derived = dv;
+  return SMG_OK;
+}
+
+void smgi_graph_derived_free(smg_graph* g) {
+  if (!g || !g->derived) return;
+  smgi_free(&g->allocator, g->derived);
+  g->derived = NULL;
+}

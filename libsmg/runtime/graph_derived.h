@@ -1,0 +1,51 @@
+/*
+ * graph_derived.h - tables the runtime derives from a validated blob once at
+ * load time (graph.c calls smgi_graph_derived_build after validation and
+ * smgi_graph_derived_free in destroy). They turn per-frame questions such as
+ * "how far is the nearest run edge from this node?" or "which splice
+ * candidates exist at this lower frame?" into O(1) lookups, so character
+ * stepping never scans the graph.
+ */
+#ifndef SMG_GRAPH_DERIVED_H
+#define SMG_GRAPH_DERIVED_H
+
+#include <stdint.h>
+
+#include "graph_internal.h"
+
+#define SMGI_HOPS_UNREACHABLE 255u
+
+typedef struct smgi_derived {
+  /* lower_hops[node * style_count + style]: number of edges to traverse
+   * from `node` before an out-edge labelled `style` is available (0: the
+   * node itself has one); SMGI_HOPS_UNREACHABLE when none can be reached.
+   * Drives transition planning: near a transition point the planner
+   * prefers edges whose `to` node is fewer hops from the target style. */
+  const uint8_t* lower_hops;
+  /* Same for the upper graph and actions. */
+  const uint8_t* upper_hops;
+  /* Splices at lower frame f are splices[splice_first[f] ..
+   * splice_first[f + 1]) (SPLC is sorted by lower_frame); frame_count + 1
+   * entries. */
+  const uint32_t* splice_first;
+  /* The upper edge whose frames contain POSE frame f, or SMGI_NONE. */
+  const uint32_t* frame_upper_edge;
+  /* First upper edge labelled with each action (SMGI_NONE if none): the
+   * entry used when a splice must happen but no candidate was found. */
+  const uint32_t* action_first_edge;
+  /* First lower node labelled with each style (SMGI_NONE if none). */
+  const uint32_t* style_first_node;
+  /* Largest out-degree of any lower node (bounds planner work). */
+  uint32_t max_lower_degree;
+} smgi_derived;
+
+/* Build g->derived through g->allocator. The graph must be validated. */
+smg_result smgi_graph_derived_build(smg_graph* g);
+/* Free g->derived (NULL-safe) and set it to NULL. */
+void smgi_graph_derived_free(smg_graph* g);
+
+static inline const smgi_derived* smgi_derived_of(const smg_graph* g) {
+  return (const smgi_derived*)g->derived;
+}
+
+#endif /* SMG_GRAPH_DERIVED_H */
