@@ -74,7 +74,7 @@ smg_result smgb_clip_copy(const smgb_clip* src, smgb_clip* out);
 smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
                               smgb_clip* out);
 /* Reflect across the sagittal (x = 0) plane and swap left/right joints by
- * name (Left*/Right*, L*/R* prefixes). mirror(mirror(c)) == c. */
+ * name (Left.../Right..., L.../R... prefixes). mirror(mirror(c)) == c. */
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out);
 /* Put `clip` on `reference` (same joint names and order required, else
  * SMG_ERROR_INVALID_ARGUMENT with a message): keep joint rotations, scale

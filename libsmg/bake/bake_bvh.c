@@ -1,0 +1,918 @@
+/*
+ * bake_bvh.c - BVH (Biovision hierarchy) reader and writer.
+ *
+ * The reader accepts any hierarchy (up to SMGB_BVH_MAX_JOINTS joints), any
+ * subset of the six channels per joint in any order, and turns every frame
+ * into the blob's pose layout: root translation + one local quaternion per
+ * joint. A joint's rotation is the product of its per-channel rotations in
+ * the listed order (for "Zrotation Xrotation Yrotation": R = Rz * Rx * Ry,
+ * acting on column vectors, local to the parent).
+ *
+ * Position channels *replace* the matching OFFSET component: on the root they
+ * give the per-frame root translation; on other joints they are accepted only
+ * when constant over the clip (several exporters write 6 channels on every
+ * joint with the rest offset repeated), in which case they become that
+ * joint's offset. Animated non-root translation cannot be represented in the
+ * pose layout and is rejected with SMG_ERROR_UNSUPPORTED.
+ *
+ * The input is untrusted: every error names file:line and the problem, all
+ * memory is bounded (joint, frame and byte caps, allocation never exceeds
+ * what the remaining text could possibly hold) and nothing reads past
+ * `size` (the text need not be NUL-terminated).
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bake_clip.h"
+#include "bake_import_util.h"
+
+#define SMGB_BVH_MAX_JOINTS 512u
+#define SMGB_BVH_MAX_FRAMES 10000000u
+#define SMGB_BVH_MAX_POSE_BYTES ((size_t)1 << 30) /* 1 GiB of poses */
+#define SMGB_BVH_MAX_FILE_BYTES ((size_t)1 << 30)
+#define SMGB_BVH_MAX_VALUE 1e6
+#define SMGB_BVH_TOKEN_MAX 64 /* including the terminating NUL */
+
+enum { CH_XPOS, CH_YPOS, CH_ZPOS, CH_XROT, CH_YROT, CH_ZROT };
+
+typedef struct bvh_joint {
+  char name[SMGB_NAME_MAX];
+  int32_t parent;
+  double offset[3];
+  uint32_t channel_count;
+  uint8_t channels[6];
+  uint32_t first_channel; /* index of its first value in a frame line */
+  uint32_t channels_line; /* for errors about its channels */
+  int has_offset, has_channels, has_children;
+} bvh_joint;
+
+typedef struct bvh_lexer {
+  const char* p;
+  const char* end;
+  uint32_t line;
+  const char* name;
+  smgb_error* err;
+  char tok[SMGB_BVH_TOKEN_MAX];
+  size_t tok_len;
+  uint32_t tok_line;
+} bvh_lexer;
+
+static int is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' ||
+         c == '\f';
+}
+
+/* Next whitespace-separated token ('{' and '}' always stand alone).
+ * Returns 1 on a token, 0 at end of input, -1 on an overlong token. */
+static int lex_next(bvh_lexer* lx) {
+  const char* start;
+  while (lx->p < lx->end && is_space(*lx->p)) {
+    if (*lx->p == '\n') lx->line++;
+    lx->p++;
+  }
+  if (lx->p >= lx->end) {
+    lx->tok[0] = '\0';
+    lx->tok_len = 0;
+    lx->tok_line = lx->line;
+    return 0;
+  }
+  start = lx->p;
+  lx->tok_line = lx->line;
+  if (*lx->p == '{' || *lx->p == '}') {
+    lx->p++;
+  } else {
+    while (lx->p < lx->end && !is_space(*lx->p) && *lx->p != '{' &&
+           *lx->p != '}')
+      lx->p++;
+  }
+  lx->tok_len = (size_t)(lx->p - start);
+  if (lx->tok_len >= SMGB_BVH_TOKEN_MAX) {
+    smgb_imp_errorf(lx->err, "%s:%u: token longer than %d characters",
+                    lx->name, lx->tok_line, SMGB_BVH_TOKEN_MAX - 1);
+    return -1;
+  }
+  memcpy(lx->tok, start, lx->tok_len);
+  lx->tok[lx->tok_len] = '\0';
+  return 1;
+}
+
+/* Printable copy of the current token for messages (control bytes -> '?'). */
+static const char* tok_show(bvh_lexer* lx) {
+  size_t i;
+  for (i = 0; i < lx->tok_len; ++i)
+    if (!isprint((unsigned char)lx->tok[i])) lx->tok[i] = '?';
+  return lx->tok_len ? lx->tok : "end of file";
+}
+
+/* Parse a finite number within +-SMGB_BVH_MAX_VALUE from a NUL-terminated
+ * token. Returns 0 on success, 1 not numeric, 2 not finite, 3 too large. */
+static int parse_number(const char* s, size_t len, double* out) {
+  char* endp = NULL;
+  double v;
+  if (len == 0) return 1;
+  errno = 0;
+  v = strtod(s, &endp);
+  if (endp != s + len) return 1;
+  if (!isfinite(v)) return 2;
+  if (fabs(v) > SMGB_BVH_MAX_VALUE) return 3;
+  *out = v;
+  return 0;
+}
+
+static const char* number_problem(int code) {
+  switch (code) {
+    case 1: return "is not a number";
+    case 2: return "is not finite (NaN or infinity)";
+    default: return "is too large (|v| > 1e6)";
+  }
+}
+
+/* Next token as a number; on failure fills the error and returns 0. */
+static int lex_number(bvh_lexer* lx, const char* what, double* out) {
+  int r = lex_next(lx), code;
+  if (r < 0) return 0;
+  if (r == 0) {
+    smgb_imp_errorf(lx->err, "%s:%u: unexpected end of file, expected %s",
+                    lx->name, lx->tok_line, what);
+    return 0;
+  }
+  code = parse_number(lx->tok, lx->tok_len, out);
+  if (code) {
+    smgb_imp_errorf(lx->err, "%s:%u: %s '%s' %s", lx->name, lx->tok_line, what,
+                    tok_show(lx), number_problem(code));
+    return 0;
+  }
+  return 1;
+}
+
+/* Next token must equal `word`. */
+static int lex_expect(bvh_lexer* lx, const char* word, const char* context) {
+  int r = lex_next(lx);
+  if (r < 0) return 0;
+  if (r == 0 || strcmp(lx->tok, word) != 0) {
+    smgb_imp_errorf(lx->err, "%s:%u: expected '%s' %s, found '%s'", lx->name,
+                    lx->tok_line, word, context, tok_show(lx));
+    return 0;
+  }
+  return 1;
+}
+
+static int channel_from_name(const char* s) {
+  static const char* const names[6] = {"Xposition", "Yposition", "Zposition",
+                                       "Xrotation", "Yrotation", "Zrotation"};
+  int i;
+  for (i = 0; i < 6; ++i)
+    if (strcmp(s, names[i]) == 0) return i;
+  return -1;
+}
+
+/* ---- hierarchy ----------------------------------------------------------- */
+
+typedef struct bvh_hier {
+  bvh_joint* joints;
+  uint32_t count;
+  uint32_t channels; /* values per frame line */
+} bvh_hier;
+
+static int hier_add_joint(bvh_lexer* lx, bvh_hier* h, int32_t parent) {
+  bvh_joint* j;
+  uint32_t i;
+  int r;
+  if (h->count >= SMGB_BVH_MAX_JOINTS) {
+    smgb_imp_errorf(lx->err, "%s:%u: too many joints (limit %u)", lx->name,
+                    lx->tok_line, SMGB_BVH_MAX_JOINTS);
+    return -1;
+  }
+  r = lex_next(lx);
+  if (r < 0) return -1;
+  if (r == 0 || strcmp(lx->tok, "{") == 0 || strcmp(lx->tok, "}") == 0) {
+    smgb_imp_errorf(lx->err, "%s:%u: expected a joint name, found '%s'",
+                    lx->name, lx->tok_line, tok_show(lx));
+    return -1;
+  }
+  for (i = 0; i < h->count; ++i) {
+    if (strcmp(h->joints[i].name, lx->tok) == 0) {
+      smgb_imp_errorf(lx->err, "%s:%u: duplicate joint name '%s'", lx->name,
+                      lx->tok_line, tok_show(lx));
+      return -1;
+    }
+  }
+  j = &h->joints[h->count];
+  memset(j, 0, sizeof *j);
+  memcpy(j->name, lx->tok, lx->tok_len + 1); /* tok_len < SMGB_NAME_MAX */
+  j->parent = parent;
+  if (parent >= 0) h->joints[parent].has_children = 1;
+  return (int)h->count++;
+}
+
+static int parse_offset(bvh_lexer* lx, double out[3]) {
+  return lex_number(lx, "OFFSET x", &out[0]) &&
+         lex_number(lx, "OFFSET y", &out[1]) &&
+         lex_number(lx, "OFFSET z", &out[2]);
+}
+
+static int parse_channels(bvh_lexer* lx, bvh_hier* h, bvh_joint* j) {
+  double n;
+  uint32_t i, k;
+  j->channels_line = lx->tok_line;
+  if (!lex_number(lx, "channel count", &n)) return 0;
+  if (n != floor(n) || n < 0 || n > 6) {
+    smgb_imp_errorf(lx->err, "%s:%u: channel count '%s' must be 0..6",
+                    lx->name, lx->tok_line, tok_show(lx));
+    return 0;
+  }
+  j->channel_count = (uint32_t)n;
+  j->first_channel = h->channels;
+  for (i = 0; i < j->channel_count; ++i) {
+    int c, r = lex_next(lx);
+    if (r < 0) return 0;
+    c = r ? channel_from_name(lx->tok) : -1;
+    if (c < 0) {
+      smgb_imp_errorf(lx->err,
+                      "%s:%u: joint '%s' declares %u channels but channel %u "
+                      "is '%s' (expected Xposition..Zrotation)",
+                      lx->name, lx->tok_line, j->name, j->channel_count, i + 1,
+                      tok_show(lx));
+      return 0;
+    }
+    for (k = 0; k < i; ++k) {
+      if (j->channels[k] == (uint8_t)c) {
+        smgb_imp_errorf(lx->err, "%s:%u: joint '%s' lists channel '%s' twice",
+                        lx->name, lx->tok_line, j->name, lx->tok);
+        return 0;
+      }
+    }
+    j->channels[i] = (uint8_t)c;
+  }
+  h->channels += j->channel_count;
+  j->has_channels = 1;
+  return 1;
+}
+
+/* HIERARCHY ... up to (not including) MOTION. Iterative: a hostile file
+ * cannot exhaust the C stack with deep nesting. */
+static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
+  int32_t stack[SMGB_BVH_MAX_JOINTS + 2];
+  int depth = 0, r, cur;
+  int in_end_site = 0; /* inside an End Site block */
+  int end_site_offset = 0;
+
+  if (!lex_expect(lx, "HIERARCHY", "at the start of a BVH file")) return 0;
+  if (!lex_expect(lx, "ROOT", "after HIERARCHY")) return 0;
+  cur = hier_add_joint(lx, h, -1);
+  if (cur < 0) return 0;
+  if (!lex_expect(lx, "{", "after the ROOT name")) return 0;
+  stack[depth++] = cur;
+
+  while (depth > 0) {
+    bvh_joint* j = &h->joints[stack[depth - 1]];
+    r = lex_next(lx);
+    if (r < 0) return 0;
+    if (r == 0) {
+      smgb_imp_errorf(lx->err,
+                      "%s:%u: unexpected end of file inside %s '%s' "
+                      "(unbalanced braces or truncated file)",
+                      lx->name, lx->tok_line,
+                      in_end_site ? "the End Site of" : "joint", j->name);
+      return 0;
+    }
+    if (in_end_site) {
+      if (strcmp(lx->tok, "OFFSET") == 0 && !end_site_offset) {
+        double tmp[3];
+        if (!parse_offset(lx, tmp)) return 0;
+        end_site_offset = 1;
+      } else if (strcmp(lx->tok, "}") == 0) {
+        if (!end_site_offset) {
+          smgb_imp_errorf(lx->err, "%s:%u: End Site of '%s' has no OFFSET",
+                          lx->name, lx->tok_line, j->name);
+          return 0;
+        }
+        in_end_site = 0;
+      } else {
+        smgb_imp_errorf(lx->err,
+                        "%s:%u: unexpected '%s' in the End Site of '%s' "
+                        "(only one OFFSET allowed)",
+                        lx->name, lx->tok_line, tok_show(lx), j->name);
+        return 0;
+      }
+      continue;
+    }
+    if (strcmp(lx->tok, "OFFSET") == 0) {
+      if (j->has_offset || j->has_children) {
+        smgb_imp_errorf(lx->err, "%s:%u: misplaced or repeated OFFSET in '%s'",
+                        lx->name, lx->tok_line, j->name);
+        return 0;
+      }
+      if (!parse_offset(lx, j->offset)) return 0;
+      j->has_offset = 1;
+    } else if (strcmp(lx->tok, "CHANNELS") == 0) {
+      if (j->has_channels || j->has_children) {
+        smgb_imp_errorf(lx->err,
+                        "%s:%u: misplaced or repeated CHANNELS in '%s'",
+                        lx->name, lx->tok_line, j->name);
+        return 0;
+      }
+      if (!parse_channels(lx, h, j)) return 0;
+    } else if (strcmp(lx->tok, "JOINT") == 0 || strcmp(lx->tok, "End") == 0 ||
+               strcmp(lx->tok, "}") == 0) {
+      if (!j->has_offset) {
+        smgb_imp_errorf(lx->err, "%s:%u: joint '%s' has no OFFSET", lx->name,
+                        lx->tok_line, j->name);
+        return 0;
+      }
+      if (!j->has_channels) {
+        smgb_imp_errorf(lx->err, "%s:%u: joint '%s' has no CHANNELS",
+                        lx->name, lx->tok_line, j->name);
+        return 0;
+      }
+      if (lx->tok[0] == '}') {
+        depth--;
+      } else if (lx->tok[0] == 'E') {
+        if (!lex_expect(lx, "Site", "after 'End'")) return 0;
+        if (!lex_expect(lx, "{", "after 'End Site'")) return 0;
+        j->has_children = 1;
+        in_end_site = 1;
+        end_site_offset = 0;
+      } else {
+        cur = hier_add_joint(lx, h, stack[depth - 1]);
+        if (cur < 0) return 0;
+        if (!lex_expect(lx, "{", "after the joint name")) return 0;
+        stack[depth++] = cur;
+      }
+    } else {
+      smgb_imp_errorf(lx->err,
+                      "%s:%u: unexpected '%s' in joint '%s' (expected OFFSET, "
+                      "CHANNELS, JOINT, End Site or '}')",
+                      lx->name, lx->tok_line, tok_show(lx), j->name);
+      return 0;
+    }
+  }
+  if (h->channels == 0) {
+    smgb_imp_errorf(lx->err, "%s:%u: the hierarchy has no channels", lx->name,
+                    lx->tok_line);
+    return 0;
+  }
+  return 1;
+}
+
+/* ---- motion -------------------------------------------------------------- */
+
+/* Reads one frame line into `row`. Returns the number of values read (which
+ * may differ from `want`; the caller reports it), or -1 on a bad value. Stops
+ * after `want + 1` values. Leaves lx->p at the start of the next line. */
+static long read_row(bvh_lexer* lx, double* row, uint32_t want) {
+  long n = 0;
+  const char* p = lx->p;
+  const char* end = lx->end;
+  while (p < end && *p != '\n') {
+    const char* s;
+    char buf[SMGB_BVH_TOKEN_MAX];
+    size_t len;
+    int code;
+    double v;
+    if (is_space(*p)) {
+      p++;
+      continue;
+    }
+    s = p;
+    while (p < end && !is_space(*p)) p++;
+    len = (size_t)(p - s);
+    if (len >= sizeof buf) {
+      smgb_imp_errorf(lx->err, "%s:%u: value longer than %d characters",
+                      lx->name, lx->line, SMGB_BVH_TOKEN_MAX - 1);
+      return -1;
+    }
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    code = parse_number(buf, len, &v);
+    if (code) {
+      size_t i;
+      for (i = 0; i < len; ++i)
+        if (!isprint((unsigned char)buf[i])) buf[i] = '?';
+      smgb_imp_errorf(lx->err, "%s:%u: value %ld '%s' %s", lx->name, lx->line,
+                      n + 1, buf, number_problem(code));
+      return -1;
+    }
+    if ((uint32_t)n < want) row[n] = v;
+    n++;
+    if ((uint32_t)n > want) break; /* reported by the caller */
+  }
+  while (p < end && *p != '\n') p++;
+  if (p < end) p++; /* the newline */
+  lx->p = p;
+  return n;
+}
+
+/* Convert one parsed frame (row of channel values, file units) to a pose. */
+static void row_to_pose(const bvh_hier* h, const double* row, double scale,
+                        float* pose) {
+  uint32_t ji, c;
+  double root[3];
+  root[0] = h->joints[0].offset[0];
+  root[1] = h->joints[0].offset[1];
+  root[2] = h->joints[0].offset[2];
+  for (ji = 0; ji < h->count; ++ji) {
+    const bvh_joint* j = &h->joints[ji];
+    double q[4] = {0.0, 0.0, 0.0, 1.0};
+    for (c = 0; c < j->channel_count; ++c) {
+      double v = row[j->first_channel + c];
+      int ch = j->channels[c];
+      if (ch <= CH_ZPOS) {
+        if (ji == 0) root[ch] = v;
+      } else {
+        double r[4];
+        smgb_qaxis(ch - CH_XROT, v * (SMGB_PI / 180.0), r);
+        smgb_qmul(q, r, q);
+      }
+    }
+    smgb_qnormalize(q);
+    pose[3 + 4 * ji + 0] = (float)q[0];
+    pose[3 + 4 * ji + 1] = (float)q[1];
+    pose[3 + 4 * ji + 2] = (float)q[2];
+    pose[3 + 4 * ji + 3] = (float)q[3];
+  }
+  pose[0] = (float)(root[0] * scale);
+  pose[1] = (float)(root[1] * scale);
+  pose[2] = (float)(root[2] * scale);
+}
+
+/* Frame rate from the frame time; snapped to an integer rate when the file's
+ * rounding is the only difference (".0083333" -> 120). */
+static float rate_from_frame_time(double ft) {
+  double rate = 1.0 / ft, r = floor(rate + 0.5);
+  if (r >= 1.0 && fabs(rate - r) <= 1e-4 * r) return (float)r;
+  return (float)rate;
+}
+
+/* Guess file units -> metres from the rest skeleton: pick the common unit
+ * (m, cm, mm, inch, CMU's 1/0.45 inch) that makes the leg (or, without named
+ * legs, the hips height) closest to a human's ~0.85 m in log scale. */
+static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
+  static const double units[5] = {1.0, 0.01, 0.001, 0.0254, 0.056444};
+  double size = 0.0, best = 1.0, best_err = 1e300;
+  int i;
+  smgb_skeleton s;
+  float(*offs)[3];
+  char(*names)[SMGB_NAME_MAX];
+  int32_t* parents;
+  uint32_t k;
+  offs = (float(*)[3])malloc(sizeof *offs * h->count);
+  names = (char(*)[SMGB_NAME_MAX])malloc(sizeof *names * h->count);
+  parents = (int32_t*)malloc(sizeof *parents * h->count);
+  if (offs && names && parents) {
+    for (k = 0; k < h->count; ++k) {
+      offs[k][0] = (float)h->joints[k].offset[0];
+      offs[k][1] = (float)h->joints[k].offset[1];
+      offs[k][2] = (float)h->joints[k].offset[2];
+      memcpy(names[k], h->joints[k].name, SMGB_NAME_MAX);
+      parents[k] = h->joints[k].parent;
+    }
+    s.joint_count = h->count;
+    s.names = names;
+    s.parents = parents;
+    s.offsets = offs;
+    size = smgb_skeleton_leg_length(&s);
+  }
+  free(offs);
+  free(names);
+  free(parents);
+  if (!(size > 0.0)) {
+    /* Hips height: the root's Y position channel in the first frame. */
+    const bvh_joint* r = &h->joints[0];
+    for (k = 0; k < r->channel_count; ++k)
+      if (r->channels[k] == CH_YPOS && first_row)
+        size = fabs(first_row[r->first_channel + k]) * 0.9;
+  }
+  if (!(size > 0.0)) return 1.0;
+  for (i = 0; i < 5; ++i) {
+    double e = fabs(log(size * units[i] / 0.85));
+    if (e < best_err) {
+      best_err = e;
+      best = units[i];
+    }
+  }
+  return best;
+}
+
+/* Non-root position channels: fold constant ones into the offset, reject
+ * animated ones. `rows` holds frame_count rows of h->channels values. */
+static int fold_joint_positions(bvh_lexer* lx, bvh_hier* h,
+                                const double* rows, uint32_t frame_count) {
+  uint32_t ji, c, f;
+  for (ji = 1; ji < h->count; ++ji) {
+    bvh_joint* j = &h->joints[ji];
+    for (c = 0; c < j->channel_count; ++c) {
+      uint32_t col = j->first_channel + c;
+      double v0;
+      if (j->channels[c] > CH_ZPOS) continue;
+      v0 = rows[col];
+      for (f = 1; f < frame_count; ++f) {
+        double v = rows[(size_t)f * h->channels + col];
+        if (fabs(v - v0) > 1e-5 * (1.0 + fabs(v0))) {
+          smgb_imp_errorf(lx->err,
+                          "%s:%u: joint '%s' has animated position channels "
+                          "(frame %u differs from frame 0); only the root may "
+                          "translate",
+                          lx->name, j->channels_line, j->name, f);
+          return 0;
+        }
+      }
+      j->offset[j->channels[c]] = v0;
+    }
+  }
+  return 1;
+}
+
+smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
+                          float unit_scale, uint32_t skip_first_frame,
+                          smgb_clip* out, smgb_error* err) {
+  bvh_lexer lx;
+  bvh_hier h;
+  smg_result res = SMG_ERROR_PARSE;
+  double frames_d, ft, scale;
+  uint32_t frames, capacity, nread = 0, first, kept, ji, f;
+  uint32_t frames_line, stride;
+  double* rows = NULL;
+  size_t remaining, max_by_bytes;
+  smgb_clip clip;
+  const char* base;
+
+  if (err) err->message[0] = '\0';
+  if (!out || (!text && size) || (unit_scale != 0.0f && !(unit_scale > 0.0f)) ||
+      !isfinite(unit_scale) || unit_scale > 1e3f) {
+    smgb_imp_errorf(err, "%s: invalid argument to smgb_bvh_parse",
+                    name ? name : "(bvh)");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  if (!name) name = "(bvh)";
+  memset(&clip, 0, sizeof clip);
+  memset(&h, 0, sizeof h);
+  memset(&lx, 0, sizeof lx);
+  lx.p = text;
+  lx.end = text + size;
+  lx.line = 1;
+  lx.name = name;
+  lx.err = err;
+
+  h.joints = (bvh_joint*)malloc(sizeof *h.joints * SMGB_BVH_MAX_JOINTS);
+  if (!h.joints) {
+    smgb_imp_errorf(err, "%s: out of memory", name);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  if (!parse_hierarchy(&lx, &h)) goto done;
+
+  /* MOTION / Frames: N / Frame Time: T */
+  if (lex_next(&lx) < 0) goto done;
+  if (strcmp(lx.tok, "MOTION") != 0) {
+    if (strcmp(lx.tok, "ROOT") == 0)
+      smgb_imp_errorf(err, "%s:%u: more than one ROOT is not supported", name,
+                      lx.tok_line);
+    else
+      smgb_imp_errorf(err,
+                      "%s:%u: expected 'MOTION' after the hierarchy, found "
+                      "'%s' (missing MOTION section or unbalanced braces)",
+                      name, lx.tok_line, tok_show(&lx));
+    goto done;
+  }
+  if (!lex_expect(&lx, "Frames:", "after MOTION (missing frame count)"))
+    goto done;
+  frames_line = lx.tok_line;
+  if (!lex_number(&lx, "frame count", &frames_d)) goto done;
+  if (frames_d != floor(frames_d) || frames_d < 0) {
+    smgb_imp_errorf(err, "%s:%u: frame count '%s' is not a whole number",
+                    name, lx.tok_line, lx.tok);
+    goto done;
+  }
+  if (frames_d == 0) {
+    smgb_imp_errorf(err, "%s:%u: the clip has zero frames", name, lx.tok_line);
+    goto done;
+  }
+  if (frames_d > SMGB_BVH_MAX_FRAMES ||
+      frames_d * SMGB_STRIDE(h.count) * sizeof(float) >
+          (double)SMGB_BVH_MAX_POSE_BYTES) {
+    smgb_imp_errorf(err,
+                    "%s:%u: too many frames (%.0f frames of %u joints exceed "
+                    "the 1 GiB limit)",
+                    name, lx.tok_line, frames_d, h.count);
+    res = SMG_ERROR_CAPACITY;
+    goto done;
+  }
+  frames = (uint32_t)frames_d;
+  if (!lex_expect(&lx, "Frame", "after the frame count (missing Frame Time)"))
+    goto done;
+  if (!lex_expect(&lx, "Time:", "after 'Frame'")) goto done;
+  if (!lex_number(&lx, "frame time", &ft)) goto done;
+  if (!(ft > 0.0) || ft > 10.0) {
+    smgb_imp_errorf(err, "%s:%u: frame time %s must be in (0, 10] seconds",
+                    name, lx.tok_line, lx.tok);
+    goto done;
+  }
+  /* The rest of the Frame Time line must be empty. */
+  while (lx.p < lx.end && *lx.p != '\n') {
+    if (!is_space(*lx.p)) {
+      smgb_imp_errorf(err, "%s:%u: unexpected text after the frame time",
+                      name, lx.line);
+      goto done;
+    }
+    lx.p++;
+  }
+  if (lx.p < lx.end) {
+    lx.p++;
+    lx.line++;
+  }
+
+  /* Never allocate more than the remaining text could hold: every value
+   * takes at least one character plus a separator. */
+  remaining = (size_t)(lx.end - lx.p);
+  max_by_bytes = remaining / (2u * (size_t)h.channels) + 1u;
+  capacity = frames < max_by_bytes ? frames : (uint32_t)max_by_bytes;
+  rows = (double*)malloc(sizeof *rows * (size_t)capacity * h.channels);
+  if (!rows) {
+    smgb_imp_errorf(err, "%s: out of memory for %u frames", name, capacity);
+    res = SMG_ERROR_OUT_OF_MEMORY;
+    goto done;
+  }
+  while (lx.p < lx.end) {
+    uint32_t line = lx.line;
+    long n;
+    double* row = nread < capacity ? rows + (size_t)nread * h.channels : NULL;
+    double scratch[1];
+    if (!row) {
+      /* Either more lines than Frames: says, or a blank tail. */
+      const char* q = lx.p;
+      while (q < lx.end && *q != '\n' && is_space(*q)) q++;
+      if (q < lx.end && *q != '\n') {
+        smgb_imp_errorf(err,
+                        "%s:%u: more frame lines than 'Frames: %u' (line %u) "
+                        "declares",
+                        name, line, frames, frames_line);
+        goto done;
+      }
+      n = read_row(&lx, scratch, 0);
+    } else {
+      n = read_row(&lx, row, h.channels);
+    }
+    lx.line++;
+    if (n < 0) goto done;
+    if (n == 0) continue; /* blank line */
+    if ((uint32_t)n != h.channels) {
+      smgb_imp_errorf(err,
+                      "%s:%u: frame %u has %s%ld values, the hierarchy "
+                      "declares %u channels",
+                      name, line, nread, (uint32_t)n > h.channels ? "more than " : "",
+                      (uint32_t)n > h.channels ? (long)h.channels : n,
+                      h.channels);
+      goto done;
+    }
+    nread++;
+  }
+  if (nread != frames) {
+    smgb_imp_errorf(err,
+                    "%s:%u: file ends after %u frame lines but 'Frames: %u' "
+                    "(line %u) declares %u (truncated file?)",
+                    name, lx.line, nread, frames, frames_line, frames);
+    goto done;
+  }
+  if (!fold_joint_positions(&lx, &h, rows, frames)) {
+    res = SMG_ERROR_UNSUPPORTED;
+    goto done;
+  }
+
+  first = skip_first_frame ? 1u : 0u;
+  if (frames <= first) {
+    smgb_imp_errorf(err,
+                    "%s:%u: no frames left after skipping the first (T-pose) "
+                    "frame",
+                    name, frames_line);
+    goto done;
+  }
+  kept = frames - first;
+  scale = unit_scale > 0.0f ? (double)unit_scale
+                            : guess_unit_scale(&h, rows + (size_t)first * h.channels);
+
+  /* Build the clip. */
+  res = SMG_ERROR_OUT_OF_MEMORY;
+  clip.skeleton.joint_count = h.count;
+  clip.skeleton.names =
+      (char(*)[SMGB_NAME_MAX])calloc(h.count, sizeof *clip.skeleton.names);
+  clip.skeleton.parents = (int32_t*)calloc(h.count, sizeof(int32_t));
+  clip.skeleton.offsets = (float(*)[3])calloc(h.count, sizeof *clip.skeleton.offsets);
+  stride = SMGB_STRIDE(h.count);
+  clip.poses = (float*)malloc(sizeof(float) * (size_t)kept * stride);
+  if (!clip.skeleton.names || !clip.skeleton.parents ||
+      !clip.skeleton.offsets || !clip.poses) {
+    smgb_imp_errorf(err, "%s: out of memory", name);
+    goto done;
+  }
+  for (ji = 0; ji < h.count; ++ji) {
+    memcpy(clip.skeleton.names[ji], h.joints[ji].name, SMGB_NAME_MAX);
+    clip.skeleton.parents[ji] = h.joints[ji].parent;
+    clip.skeleton.offsets[ji][0] = (float)(h.joints[ji].offset[0] * scale);
+    clip.skeleton.offsets[ji][1] = (float)(h.joints[ji].offset[1] * scale);
+    clip.skeleton.offsets[ji][2] = (float)(h.joints[ji].offset[2] * scale);
+  }
+  for (f = 0; f < kept; ++f) {
+    float* pose = clip.poses + (size_t)f * stride;
+    row_to_pose(&h, rows + (size_t)(f + first) * h.channels, scale, pose);
+    if (f > 0) {
+      /* Hemisphere continuity: q and -q are the same rotation; keep
+       * consecutive frames on the same side so interpolation is short. */
+      const float* prev = pose - stride;
+      for (ji = 0; ji < h.count; ++ji) {
+        float* q = pose + 3 + 4 * ji;
+        const float* p = prev + 3 + 4 * ji;
+        if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] + q[3] * p[3] < 0.0f) {
+          q[0] = -q[0]; q[1] = -q[1]; q[2] = -q[2]; q[3] = -q[3];
+        }
+      }
+    }
+  }
+  clip.frame_count = kept;
+  clip.frame_rate = rate_from_frame_time(ft);
+  base = strrchr(name, '/');
+  base = base ? base + 1 : name;
+  snprintf(clip.name, sizeof clip.name, "%s", base);
+  *out = clip;
+  memset(&clip, 0, sizeof clip);
+  res = SMG_OK;
+
+done:
+  smgb_clip_free(&clip);
+  free(rows);
+  free(h.joints);
+  return res;
+}
+
+/* Read a whole file (bounded by SMGB_BVH_MAX_FILE_BYTES). */
+static smg_result read_file(const char* path, char** out, size_t* out_size,
+                            smgb_error* err) {
+  FILE* fp = fopen(path, "rb");
+  char* buf = NULL;
+  size_t cap = 0, len = 0;
+  if (!fp) {
+    smgb_imp_errorf(err, "%s: cannot open: %s", path, strerror(errno));
+    return SMG_ERROR_IO;
+  }
+  for (;;) {
+    size_t got;
+    if (len == cap) {
+      size_t ncap = cap ? cap * 2 : 65536;
+      char* nb;
+      if (cap >= SMGB_BVH_MAX_FILE_BYTES) {
+        smgb_imp_errorf(err, "%s: file larger than 1 GiB", path);
+        free(buf);
+        fclose(fp);
+        return SMG_ERROR_CAPACITY;
+      }
+      nb = (char*)realloc(buf, ncap);
+      if (!nb) {
+        smgb_imp_errorf(err, "%s: out of memory reading file", path);
+        free(buf);
+        fclose(fp);
+        return SMG_ERROR_OUT_OF_MEMORY;
+      }
+      buf = nb;
+      cap = ncap;
+    }
+    got = fread(buf + len, 1, cap - len, fp);
+    len += got;
+    if (got == 0) break;
+  }
+  if (ferror(fp)) {
+    smgb_imp_errorf(err, "%s: read error: %s", path, strerror(errno));
+    free(buf);
+    fclose(fp);
+    return SMG_ERROR_IO;
+  }
+  fclose(fp);
+  *out = buf;
+  *out_size = len;
+  return SMG_OK;
+}
+
+smg_result smgb_bvh_load(const char* path, float unit_scale,
+                         uint32_t skip_first_frame, smgb_clip* out,
+                         smgb_error* err) {
+  char* text = NULL;
+  size_t size = 0;
+  smg_result r;
+  if (err) err->message[0] = '\0';
+  if (!path || !out) {
+    smgb_imp_errorf(err, "smgb_bvh_load: NULL path or output");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  r = read_file(path, &text, &size, err);
+  if (r != SMG_OK) return r;
+  r = smgb_bvh_parse(text, size, path, unit_scale, skip_first_frame, out, err);
+  free(text);
+  if (r == SMG_OK) {
+    /* Clip name: the file name without its directory. */
+    const char* base = strrchr(path, '/');
+    snprintf(out->name, sizeof out->name, "%s", base ? base + 1 : path);
+  }
+  return r;
+}
+
+/* ---- writer -------------------------------------------------------------- */
+
+static int write_joint(FILE* fp, const smgb_clip* c, uint32_t j, int depth) {
+  uint32_t k;
+  int has_child = 0;
+  const float* o = c->skeleton.offsets[j];
+  for (k = 0; k < (uint32_t)depth; ++k) fputc('\t', fp);
+  fprintf(fp, "%s %s\n", j == 0 ? "ROOT" : "JOINT", c->skeleton.names[j]);
+  for (k = 0; k < (uint32_t)depth; ++k) fputc('\t', fp);
+  fprintf(fp, "{\n");
+  for (k = 0; k < (uint32_t)depth + 1; ++k) fputc('\t', fp);
+  fprintf(fp, "OFFSET %.9g %.9g %.9g\n", o[0], o[1], o[2]);
+  for (k = 0; k < (uint32_t)depth + 1; ++k) fputc('\t', fp);
+  if (j == 0)
+    fprintf(fp, "CHANNELS 6 Xposition Yposition Zposition Zrotation "
+                "Yrotation Xrotation\n");
+  else
+    fprintf(fp, "CHANNELS 3 Zrotation Yrotation Xrotation\n");
+  for (k = j + 1; k < c->skeleton.joint_count; ++k) {
+    if (c->skeleton.parents[k] == (int32_t)j) {
+      has_child = 1;
+      write_joint(fp, c, k, depth + 1);
+    }
+  }
+  if (!has_child) {
+    /* A short End Site along the bone keeps viewers drawing the last bone. */
+    double len = sqrt((double)o[0] * o[0] + (double)o[1] * o[1] + (double)o[2] * o[2]);
+    double e[3] = {0.0, 0.05, 0.0};
+    if (len > 1e-6) {
+      e[0] = 0.25 * o[0]; e[1] = 0.25 * o[1]; e[2] = 0.25 * o[2];
+    }
+    for (k = 0; k < (uint32_t)depth + 1; ++k) fputc('\t', fp);
+    fprintf(fp, "End Site\n");
+    for (k = 0; k < (uint32_t)depth + 1; ++k) fputc('\t', fp);
+    fprintf(fp, "{\n");
+    for (k = 0; k < (uint32_t)depth + 2; ++k) fputc('\t', fp);
+    fprintf(fp, "OFFSET %.9g %.9g %.9g\n", e[0], e[1], e[2]);
+    for (k = 0; k < (uint32_t)depth + 1; ++k) fputc('\t', fp);
+    fprintf(fp, "}\n");
+  }
+  for (k = 0; k < (uint32_t)depth; ++k) fputc('\t', fp);
+  fprintf(fp, "}\n");
+  return 1;
+}
+
+smg_result smgb_bvh_save(const char* path, const smgb_clip* clip,
+                         smgb_error* err) {
+  FILE* fp;
+  uint32_t f, j, J, stride;
+  if (err) err->message[0] = '\0';
+  if (!path || !clip || clip->skeleton.joint_count == 0 ||
+      !clip->skeleton.names || !clip->skeleton.parents ||
+      !clip->skeleton.offsets || (clip->frame_count && !clip->poses) ||
+      !(clip->frame_rate > 0.0f)) {
+    smgb_imp_errorf(err, "%s: invalid clip for smgb_bvh_save",
+                    path ? path : "(null)");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  J = clip->skeleton.joint_count;
+  if (clip->skeleton.parents[0] != -1) {
+    smgb_imp_errorf(err, "%s: joint 0 must be the root", path);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  for (j = 1; j < J; ++j) {
+    if (clip->skeleton.parents[j] < 0 || clip->skeleton.parents[j] >= (int32_t)j) {
+      smgb_imp_errorf(err, "%s: joint %u's parent must precede it", path, j);
+      return SMG_ERROR_INVALID_ARGUMENT;
+    }
+  }
+  fp = fopen(path, "wb");
+  if (!fp) {
+    smgb_imp_errorf(err, "%s: cannot create: %s", path, strerror(errno));
+    return SMG_ERROR_IO;
+  }
+  fprintf(fp, "HIERARCHY\n");
+  write_joint(fp, clip, 0, 0);
+  fprintf(fp, "MOTION\nFrames: %u\nFrame Time: %.9g\n", clip->frame_count,
+          1.0 / (double)clip->frame_rate);
+  stride = SMGB_STRIDE(J);
+  for (f = 0; f < clip->frame_count; ++f) {
+    const float* pose = clip->poses + (size_t)f * stride;
+    fprintf(fp, "%.9g %.9g %.9g", pose[0], pose[1], pose[2]);
+    for (j = 0; j < J; ++j) {
+      double q[4], z, y, x;
+      q[0] = pose[3 + 4 * j]; q[1] = pose[4 + 4 * j];
+      q[2] = pose[5 + 4 * j]; q[3] = pose[6 + 4 * j];
+      smgb_qnormalize(q);
+      smgb_qto_euler_zyx(q, &z, &y, &x);
+      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_PI),
+              y * (180.0 / SMGB_PI), x * (180.0 / SMGB_PI));
+    }
+    fputc('\n', fp);
+  }
+  if (ferror(fp) || fclose(fp) != 0) {
+    smgb_imp_errorf(err, "%s: write error", path);
+    return SMG_ERROR_IO;
+  }
+  return SMG_OK;
+}

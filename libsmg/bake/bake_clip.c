@@ -1,0 +1,425 @@
+/*
+ * bake_clip.c - clip and skeleton utilities: free/copy, resampling,
+ * mirroring, retargeting to a reference skeleton, grounding, forward
+ * kinematics.
+ *
+ * Pose layout (bake_clip.h): root translation (the root joint's position in
+ * clip space; the root's OFFSET is informational only) followed by one local
+ * rotation per joint. FK: W_0 = q_0, P_0 = t; W_j = W_parent q_j,
+ * P_j = P_parent + W_parent offset_j.
+ */
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bake_clip.h"
+#include "bake_import_util.h"
+
+/* ---- skeleton ------------------------------------------------------------ */
+
+void smgb_skeleton_free(smgb_skeleton* s) {
+  if (!s) return;
+  free(s->names);
+  free(s->parents);
+  free(s->offsets);
+  memset(s, 0, sizeof *s);
+}
+
+smg_result smgb_skeleton_copy(const smgb_skeleton* src, smgb_skeleton* out) {
+  smgb_skeleton s;
+  uint32_t n;
+  if (!src || !out || src->joint_count == 0 || !src->names || !src->parents ||
+      !src->offsets)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  n = src->joint_count;
+  memset(&s, 0, sizeof s);
+  s.joint_count = n;
+  s.names = (char(*)[SMGB_NAME_MAX])malloc(sizeof *s.names * n);
+  s.parents = (int32_t*)malloc(sizeof *s.parents * n);
+  s.offsets = (float(*)[3])malloc(sizeof *s.offsets * n);
+  if (!s.names || !s.parents || !s.offsets) {
+    smgb_skeleton_free(&s);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  memcpy(s.names, src->names, sizeof *s.names * n);
+  memcpy(s.parents, src->parents, sizeof *s.parents * n);
+  memcpy(s.offsets, src->offsets, sizeof *s.offsets * n);
+  *out = s;
+  return SMG_OK;
+}
+
+/* The part of a joint name after any namespace ("mixamorig:LeftArm"). */
+static const char* strip_namespace(const char* name) {
+  const char* c = strrchr(name, ':');
+  return c ? c + 1 : name;
+}
+
+int32_t smgb_skeleton_find(const smgb_skeleton* s, const char* name) {
+  uint32_t i;
+  if (!s || !name || !s->names) return -1;
+  for (i = 0; i < s->joint_count; ++i)
+    if (strcmp(s->names[i], name) == 0) return (int32_t)i;
+  /* Fall back to a namespace-free match (assimp/FBX rigs). */
+  for (i = 0; i < s->joint_count; ++i)
+    if (strcmp(strip_namespace(s->names[i]), name) == 0) return (int32_t)i;
+  return -1;
+}
+
+static int32_t find_any(const smgb_skeleton* s, const char* const* names) {
+  for (; *names; ++names) {
+    int32_t j = smgb_skeleton_find(s, *names);
+    if (j >= 0) return j;
+  }
+  return -1;
+}
+
+float smgb_skeleton_leg_length(const smgb_skeleton* s) {
+  static const char* const hips[] = {"LeftUpLeg", "LeftHip", "LeftThigh",
+                                     "LeftUpperLeg", "LHip", "l_hip",
+                                     "thigh_l", "Left_Hip", NULL};
+  static const char* const ankles[] = {"LeftFoot", "LeftAnkle", "LFoot",
+                                       "LAnkle", "l_ankle", "foot_l",
+                                       "Left_Ankle", "Left_Foot", NULL};
+  int32_t hip, j;
+  double len = 0.0;
+  if (!s || !s->names || !s->parents || !s->offsets) return 0.0f;
+  hip = find_any(s, hips);
+  j = find_any(s, ankles);
+  if (hip < 0 || j < 0) return 0.0f;
+  /* Sum of bone lengths from the ankle up to the hip: independent of how
+   * bent the rest pose is. */
+  while (j != hip) {
+    const float* o;
+    if (j <= 0) return 0.0f; /* the ankle is not below the hip */
+    o = s->offsets[j];
+    len += sqrt((double)o[0] * o[0] + (double)o[1] * o[1] + (double)o[2] * o[2]);
+    j = s->parents[j];
+    if (j < 0 || (uint32_t)j >= s->joint_count) return 0.0f;
+  }
+  return (float)len;
+}
+
+/* ---- clip ---------------------------------------------------------------- */
+
+void smgb_clip_free(smgb_clip* clip) {
+  if (!clip) return;
+  smgb_skeleton_free(&clip->skeleton);
+  free(clip->poses);
+  memset(clip, 0, sizeof *clip);
+}
+
+static int clip_valid(const smgb_clip* c) {
+  return c && c->skeleton.joint_count > 0 && c->skeleton.names &&
+         c->skeleton.parents && c->skeleton.offsets && c->frame_count > 0 &&
+         c->poses && c->frame_rate > 0.0f && isfinite(c->frame_rate);
+}
+
+/* Allocate `out` with src's name/skeleton and `frames` uninitialised poses. */
+static smg_result clip_alloc_like(const smgb_clip* src, uint32_t frames,
+                                  smgb_clip* out) {
+  smgb_clip c;
+  smg_result r;
+  size_t n = (size_t)frames * SMGB_STRIDE(src->skeleton.joint_count);
+  memset(&c, 0, sizeof c);
+  memcpy(c.name, src->name, sizeof c.name);
+  c.name[SMGB_NAME_MAX - 1] = '\0';
+  r = smgb_skeleton_copy(&src->skeleton, &c.skeleton);
+  if (r != SMG_OK) return r;
+  c.poses = (float*)malloc(sizeof(float) * (n ? n : 1));
+  if (!c.poses) {
+    smgb_skeleton_free(&c.skeleton);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  c.frame_count = frames;
+  c.frame_rate = src->frame_rate;
+  *out = c;
+  return SMG_OK;
+}
+
+smg_result smgb_clip_copy(const smgb_clip* src, smgb_clip* out) {
+  smg_result r;
+  smgb_clip c;
+  if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
+  r = clip_alloc_like(src, src->frame_count, &c);
+  if (r != SMG_OK) return r;
+  memcpy(c.poses, src->poses,
+         sizeof(float) * (size_t)src->frame_count *
+             SMGB_STRIDE(src->skeleton.joint_count));
+  *out = c;
+  return SMG_OK;
+}
+
+smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
+                              smgb_clip* out) {
+  smgb_clip c;
+  smg_result r;
+  uint32_t frames, f, j, J, stride;
+  double duration, ratio;
+  if (!clip_valid(src) || !out || !(frame_rate > 0.0f) ||
+      !isfinite(frame_rate) || frame_rate > 1e5f)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  J = src->skeleton.joint_count;
+  stride = SMGB_STRIDE(J);
+  /* Keep the clip's time span [0, duration]; the last output frame is the
+   * last one at or before the end (a small epsilon absorbs rounding so that
+   * e.g. 121 frames at 120 Hz give exactly 31 frames at 30 Hz). */
+  duration = (double)(src->frame_count - 1) / src->frame_rate;
+  frames = (uint32_t)floor(duration * frame_rate + 1e-6) + 1u;
+  r = clip_alloc_like(src, frames, &c);
+  if (r != SMG_OK) return r;
+  c.frame_rate = frame_rate;
+  ratio = (double)src->frame_rate / frame_rate;
+  for (f = 0; f < frames; ++f) {
+    double s = f * ratio;
+    uint32_t i0 = (uint32_t)floor(s + 1e-9);
+    double t;
+    const float *a, *b;
+    float* o = c.poses + (size_t)f * stride;
+    if (i0 >= src->frame_count - 1) {
+      i0 = src->frame_count - 1;
+      t = 0.0;
+    } else {
+      t = s - i0;
+      if (t < 1e-9) t = 0.0;
+    }
+    a = src->poses + (size_t)i0 * stride;
+    b = t > 0.0 ? a + stride : a;
+    if (t == 0.0) {
+      memcpy(o, a, sizeof(float) * stride); /* exact frames stay exact */
+      continue;
+    }
+    for (j = 0; j < 3; ++j) o[j] = (float)((1.0 - t) * a[j] + t * b[j]);
+    for (j = 0; j < J; ++j) {
+      double qa[4], qb[4], qo[4];
+      int k;
+      for (k = 0; k < 4; ++k) {
+        qa[k] = a[3 + 4 * j + k];
+        qb[k] = b[3 + 4 * j + k];
+      }
+      smgb_qslerp(qa, qb, t, qo);
+      /* Stay in qa's hemisphere so the output stays continuous. */
+      if (qo[0] * qa[0] + qo[1] * qa[1] + qo[2] * qa[2] + qo[3] * qa[3] < 0)
+        for (k = 0; k < 4; ++k) qo[k] = -qo[k];
+      for (k = 0; k < 4; ++k) o[3 + 4 * j + k] = (float)qo[k];
+    }
+  }
+  *out = c;
+  return SMG_OK;
+}
+
+/* ---- mirroring ----------------------------------------------------------- */
+
+/* Writes the left/right counterpart name of `name` into `out`, or returns 0
+ * when the name has no side. Recognised (after an optional "ns:" prefix):
+ * Left.../Right..., L.../R... followed by an upper-case letter or '_' (CMU's
+ * LHipJoint, LThumb), left_/right_ and l_/r_ prefixes, and _L/_R, .L/.R,
+ * _l/_r suffixes. */
+static int counterpart_name(const char* name, char out[SMGB_NAME_MAX]) {
+  const char* base = strip_namespace(name);
+  size_t pre = (size_t)(base - name), n = strlen(base);
+  char tmp[SMGB_NAME_MAX * 2];
+  const char* rest = NULL;
+  const char* repl = NULL;
+  if (strncmp(base, "Left", 4) == 0) { repl = "Right"; rest = base + 4; }
+  else if (strncmp(base, "Right", 5) == 0) { repl = "Left"; rest = base + 5; }
+  else if (strncmp(base, "left", 4) == 0) { repl = "right"; rest = base + 4; }
+  else if (strncmp(base, "right", 5) == 0) { repl = "left"; rest = base + 5; }
+  else if ((base[0] == 'L' || base[0] == 'R' || base[0] == 'l' ||
+            base[0] == 'r') &&
+           (isupper((unsigned char)base[1]) || base[1] == '_')) {
+    static const char* const swap[4] = {"R", "L", "r", "l"};
+    repl = swap[base[0] == 'L' ? 0 : base[0] == 'R' ? 1 : base[0] == 'l' ? 2 : 3];
+    rest = base + 1;
+  }
+  if (repl) {
+    snprintf(tmp, sizeof tmp, "%.*s%s%s", (int)pre, name, repl, rest);
+  } else if (n >= 2 && (base[n - 2] == '_' || base[n - 2] == '.') &&
+             (base[n - 1] == 'L' || base[n - 1] == 'R' || base[n - 1] == 'l' ||
+              base[n - 1] == 'r')) {
+    char c = base[n - 1];
+    snprintf(tmp, sizeof tmp, "%s", name);
+    tmp[pre + n - 1] = c == 'L' ? 'R' : c == 'R' ? 'L' : c == 'l' ? 'r' : 'l';
+  } else {
+    return 0;
+  }
+  if (strlen(tmp) >= SMGB_NAME_MAX) return 0;
+  memcpy(out, tmp, strlen(tmp) + 1);
+  return 1;
+}
+
+smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
+  smgb_clip c;
+  smg_result r;
+  uint32_t J, j, f, stride;
+  int32_t* partner;
+  if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
+  J = src->skeleton.joint_count;
+  stride = SMGB_STRIDE(J);
+  partner = (int32_t*)malloc(sizeof *partner * J);
+  if (!partner) return SMG_ERROR_OUT_OF_MEMORY;
+  for (j = 0; j < J; ++j) {
+    char other[SMGB_NAME_MAX];
+    int32_t k = -1;
+    if (counterpart_name(src->skeleton.names[j], other)) {
+      uint32_t i;
+      for (i = 0; i < J; ++i)
+        if (strcmp(src->skeleton.names[i], other) == 0) k = (int32_t)i;
+    }
+    partner[j] = k >= 0 ? k : (int32_t)j;
+  }
+  /* Only swap true pairs (A->B and B->A); anything else stays in place. */
+  for (j = 0; j < J; ++j)
+    if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
+
+  r = clip_alloc_like(src, src->frame_count, &c);
+  if (r != SMG_OK) {
+    free(partner);
+    return r;
+  }
+  /* Skeleton: names and parents stay; each joint takes its partner's offset
+   * reflected in x (parents of partners are partners in sane rigs). */
+  for (j = 0; j < J; ++j) {
+    const float* o = src->skeleton.offsets[partner[j]];
+    c.skeleton.offsets[j][0] = -o[0];
+    c.skeleton.offsets[j][1] = o[1];
+    c.skeleton.offsets[j][2] = o[2];
+  }
+  /* Reflection S = diag(-1, 1, 1): a rotation R becomes S R S, which for a
+   * quaternion is (x, -y, -z, w); positions get x -> -x. */
+  for (f = 0; f < src->frame_count; ++f) {
+    const float* a = src->poses + (size_t)f * stride;
+    float* o = c.poses + (size_t)f * stride;
+    o[0] = -a[0];
+    o[1] = a[1];
+    o[2] = a[2];
+    for (j = 0; j < J; ++j) {
+      const float* q = a + 3 + 4 * partner[j];
+      float* d = o + 3 + 4 * j;
+      d[0] = q[0];
+      d[1] = -q[1];
+      d[2] = -q[2];
+      d[3] = q[3];
+    }
+  }
+  free(partner);
+  *out = c;
+  return SMG_OK;
+}
+
+/* ---- retargeting and grounding ------------------------------------------ */
+
+smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
+                              smgb_error* err) {
+  uint32_t J, j, f, stride;
+  float leg_clip, leg_ref, k;
+  if (err) err->message[0] = '\0';
+  if (!clip_valid(clip) || !reference || !reference->names ||
+      !reference->parents || !reference->offsets) {
+    smgb_imp_errorf(err, "smgb_clip_retarget: invalid clip or reference");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  J = clip->skeleton.joint_count;
+  if (reference->joint_count != J) {
+    smgb_imp_errorf(err,
+                    "%s: hierarchy mismatch: %u joints, the reference "
+                    "skeleton has %u",
+                    clip->name, J, reference->joint_count);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  for (j = 0; j < J; ++j) {
+    if (strcmp(clip->skeleton.names[j], reference->names[j]) != 0 ||
+        clip->skeleton.parents[j] != reference->parents[j]) {
+      smgb_imp_errorf(err,
+                      "%s: hierarchy mismatch at joint %u: '%s' (parent %d) "
+                      "vs reference '%s' (parent %d)",
+                      clip->name, j, clip->skeleton.names[j],
+                      (int)clip->skeleton.parents[j], reference->names[j],
+                      (int)reference->parents[j]);
+      return SMG_ERROR_INVALID_ARGUMENT;
+    }
+  }
+  leg_clip = smgb_skeleton_leg_length(&clip->skeleton);
+  leg_ref = smgb_skeleton_leg_length(reference);
+  if (!(leg_clip > 1e-6f) || !(leg_ref > 1e-6f)) {
+    smgb_imp_errorf(err,
+                    "%s: cannot retarget: no left leg (LeftUpLeg..LeftFoot) "
+                    "to measure in %s",
+                    clip->name, leg_clip > 1e-6f ? "the reference" : "the clip");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  k = leg_ref / leg_clip;
+  stride = SMGB_STRIDE(J);
+  for (f = 0; f < clip->frame_count; ++f) {
+    float* p = clip->poses + (size_t)f * stride;
+    p[0] *= k;
+    p[1] *= k;
+    p[2] *= k;
+  }
+  memcpy(clip->skeleton.offsets, reference->offsets, sizeof(float) * 3 * J);
+  return SMG_OK;
+}
+
+void smgb_clip_ground(smgb_clip* clip) {
+  uint32_t J, f, j, stride;
+  float* pos;
+  double lowest = 1e300;
+  if (!clip_valid(clip)) return;
+  J = clip->skeleton.joint_count;
+  stride = SMGB_STRIDE(J);
+  pos = (float*)malloc(sizeof(float) * 3 * J);
+  if (!pos) return;
+  for (f = 0; f < clip->frame_count; ++f) {
+    smgb_fk(&clip->skeleton, clip->poses + (size_t)f * stride, pos, NULL);
+    for (j = 0; j < J; ++j)
+      if (pos[3 * j + 1] < lowest) lowest = pos[3 * j + 1];
+  }
+  free(pos);
+  for (f = 0; f < clip->frame_count; ++f)
+    clip->poses[(size_t)f * stride + 1] -= (float)lowest;
+}
+
+/* ---- forward kinematics ------------------------------------------------- */
+
+void smgb_fk(const smgb_skeleton* s, const float* pose, float* out_positions,
+             float* out_rotations) {
+  uint32_t j, J;
+  /* World rotations are needed for every parent; keep them in the caller's
+   * buffer when given, else in a small stack cache per call chunk. */
+  double stackbuf[4 * 64];
+  double* W;
+  double* heap = NULL;
+  if (!s || !pose || !out_positions || !s->parents || !s->offsets) return;
+  J = s->joint_count;
+  if (J == 0) return;
+  if (J <= 64) {
+    W = stackbuf;
+  } else {
+    heap = (double*)malloc(sizeof(double) * 4 * J);
+    if (!heap) return;
+    W = heap;
+  }
+  for (j = 0; j < J; ++j) {
+    double q[4], *w = W + 4 * j;
+    int k;
+    for (k = 0; k < 4; ++k) q[k] = pose[3 + 4 * j + k];
+    smgb_qnormalize(q);
+    if (j == 0 || s->parents[j] < 0 || (uint32_t)s->parents[j] >= j) {
+      for (k = 0; k < 4; ++k) w[k] = q[k];
+      out_positions[3 * j + 0] = pose[0];
+      out_positions[3 * j + 1] = pose[1];
+      out_positions[3 * j + 2] = pose[2];
+    } else {
+      uint32_t p = (uint32_t)s->parents[j];
+      double off[3] = {s->offsets[j][0], s->offsets[j][1], s->offsets[j][2]};
+      smgb_qrot(W + 4 * p, off, off);
+      out_positions[3 * j + 0] = (float)(out_positions[3 * p + 0] + off[0]);
+      out_positions[3 * j + 1] = (float)(out_positions[3 * p + 1] + off[1]);
+      out_positions[3 * j + 2] = (float)(out_positions[3 * p + 2] + off[2]);
+      smgb_qmul(W + 4 * p, q, w);
+    }
+    if (out_rotations)
+      for (k = 0; k < 4; ++k) out_rotations[4 * j + k] = (float)w[k];
+  }
+  free(heap);
+}
