@@ -134,4 +134,41 @@ static inline void smgb_qto_euler_zyx(const double q[4], double* z, double* y,
   }
 }
 
+/* Quaternion of the rotation matrix whose columns are the images of the x,
+ * y and z axes (Shepperd's method: stable for every rotation). */
+static inline void smgb_qfrom_axes(const double X[3], const double Y[3],
+                                   const double Z[3], double q[4]) {
+  double m00 = X[0], m11 = Y[1], m22 = Z[2], tr = m00 + m11 + m22;
+  if (tr > 0.0) {
+    double s = sqrt(tr + 1.0) * 2.0;
+    q[3] = 0.25 * s;
+    q[0] = (Y[2] - Z[1]) / s;
+    q[1] = (Z[0] - X[2]) / s;
+    q[2] = (X[1] - Y[0]) / s;
+  } else if (m00 > m11 && m00 > m22) {
+    double s = sqrt(1.0 + m00 - m11 - m22) * 2.0;
+    q[3] = (Y[2] - Z[1]) / s;
+    q[0] = 0.25 * s;
+    q[1] = (Y[0] + X[1]) / s;
+    q[2] = (Z[0] + X[2]) / s;
+  } else if (m11 > m22) {
+    double s = sqrt(1.0 + m11 - m00 - m22) * 2.0;
+    q[3] = (Z[0] - X[2]) / s;
+    q[0] = (Y[0] + X[1]) / s;
+    q[1] = 0.25 * s;
+    q[2] = (Z[1] + Y[2]) / s;
+  } else {
+    double s = sqrt(1.0 + m22 - m00 - m11) * 2.0;
+    q[3] = (X[1] - Y[0]) / s;
+    q[0] = (Z[0] + X[2]) / s;
+    q[1] = (Z[1] + Y[2]) / s;
+    q[2] = 0.25 * s;
+  }
+  smgb_qnormalize(q);
+}
+
+static inline void smgb_qconj(const double q[4], double o[4]) {
+  o[0] = -q[0]; o[1] = -q[1]; o[2] = -q[2]; o[3] = q[3];
+}
+
 #endif /* BAKE_IMPORT_UTIL_H */
