@@ -1,0 +1,80 @@
+/*
+ * eval_ctx.h - what every part of the evaluation driver shares: where the
+ * data is, where results go, and the report/check helpers.
+ *
+ * Two modes:
+ *   report mode (make eval): every section writes Markdown to ctx->md and
+ *     figures to ctx->img_dir; nothing is checked against bounds.
+ *   check mode (make test-eval, --check): no files are written; each
+ *     section measures a cheap subset and eval_check() compares it with
+ *     loose bounds, counting failures (the exit status).
+ */
+#ifndef EVAL_CTX_H
+#define EVAL_CTX_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "smg.h"
+
+typedef struct eval_ctx {
+  char cmu_dir[1024];    /* <shared>/mocap/cmu */
+  int have_cmu;          /* the CMU clips are readable */
+  const char* img_dir;   /* report mode: docs/img */
+  const char* img_rel;   /* the same, relative to results.md ("img") */
+  FILE* md;              /* report mode: results.md being written */
+  int check;             /* check mode */
+  int quick;             /* shrink work (check mode) */
+  int failures;          /* failed checks */
+  const char* default_blob; /* synthetic blob for checks without CMU */
+} eval_ctx;
+
+/* Markdown output (no-op in check mode). */
+void eval_md(eval_ctx* ctx, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* A check with loose bounds: prints PASS/FAIL with the measured text and
+ * counts failures. Returns ok. */
+int eval_check(eval_ctx* ctx, int ok, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Progress / diagnostics on stderr. */
+void eval_log(const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/* Full path of figure `name` (e.g. "eval-path-straight.svg") in img_dir. */
+void eval_img_path(const eval_ctx* ctx, const char* name, char* buf,
+                   size_t size);
+
+/* Monotonic clock, seconds. */
+double eval_now(void);
+
+/* Path of a CMU clip ("09_12" -> <cmu_dir>/09_12.bvh). */
+void eval_cmu_clip(const eval_ctx* ctx, const char* id, char* buf,
+                   size_t size);
+
+/* Number formatting for tables: "n/a" for non-finite values. */
+const char* eval_fmt(char* buf, size_t size, const char* fmt, double v);
+
+/* ---- sections (each writes its own part of results.md) ---------------- */
+
+/* The paper-size CMU bake (Section IV preprocessing table). On success
+ * *out_blob/out_size hold the baked blob (malloc'd, 16-byte aligned, the
+ * caller frees it with free()); NULL when the bake could not run. */
+void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size);
+/* Path following on five paths with transition and splice points. */
+void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
+/* Splicing accuracy (Fig. 5) and the synchronization check. */
+void eval_section_splice(eval_ctx* ctx);
+
+#endif /* EVAL_CTX_H */
