@@ -1,0 +1,412 @@
+/*
+ * character.c - character lifetime (one allocation at create, carved into
+ * every buffer the character will use), path edits, immediate controls,
+ * per-frame entry point and the state/pose getters.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "alloc.h"
+#include "character_internal.h"
+
+#define DEFAULT_PATH_CAPACITY 1024u
+#define DEFAULT_CONSTRAINT_CAPACITY 32u
+#define MAX_PATH_CAPACITY (1u << 26)
+#define MAX_CONSTRAINT_CAPACITY (1u << 16)
+#define DEFAULT_HORIZON 2.0f
+#define MAX_HORIZON 30.0f
+#define DEFAULT_THRESHOLD 0.25f
+#define DEFAULT_WINDOW 0.25f
+
+static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
+
+typedef struct layout {
+  size_t constraints, queue, rot, tmp, snap, wpos, wrot, xz, cum, total;
+} layout;
+
+static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
+                           layout* l) {
+  size_t o = align16(sizeof(smg_character));
+  l->constraints = o;
+  o += align16(sizeof(smgi_constraint) * cons_cap);
+  l->queue = o;
+  o += align16(sizeof(smgi_qentry) * SMGI_QUEUE_CAP);
+  l->rot = o;
+  o += align16(sizeof(float) * 4u * J);
+  l->tmp = o;
+  o += align16(sizeof(float) * 4u * J);
+  l->snap = o;
+  o += align16(sizeof(float) * 4u * J);
+  l->wpos = o;
+  o += align16(sizeof(float) * 3u * J);
+  l->wrot = o;
+  o += align16(sizeof(float) * 4u * J);
+  l->xz = o;
+  o += align16(sizeof(float) * 2u * (size_t)path_cap);
+  l->cum = o;
+  o += align16(sizeof(float) * (size_t)path_cap);
+  l->total = o;
+}
+
+/* Resolve desc (NULL, partial struct_size) into a full one with defaults. */
+static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
+                               smg_character_desc* d) {
+  memset(d, 0, sizeof *d);
+  if (in) {
+    if (in->struct_size == 0 || in->struct_size > sizeof *d)
+      return SMG_ERROR_INVALID_ARGUMENT;
+    memcpy(d, in, in->struct_size);
+  }
+  d->struct_size = sizeof *d;
+  if (d->initial_style >= g->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
+  if (d->initial_action >= g->data.action_count)
+    return SMG_ERROR_UNKNOWN_ACTION;
+  if (!isfinite(d->position[0]) || !isfinite(d->position[1]) ||
+      !isfinite(d->position[2]) || !isfinite(d->heading) ||
+      !isfinite(d->horizon) || !isfinite(d->error_threshold) ||
+      d->horizon < 0.0f || d->horizon > MAX_HORIZON ||
+      d->error_threshold < 0.0f)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (d->path_capacity == 0) d->path_capacity = DEFAULT_PATH_CAPACITY;
+  if (d->constraint_capacity == 0)
+    d->constraint_capacity = DEFAULT_CONSTRAINT_CAPACITY;
+  if (d->path_capacity > MAX_PATH_CAPACITY ||
+      d->constraint_capacity > MAX_CONSTRAINT_CAPACITY)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (d->horizon == 0.0f) d->horizon = DEFAULT_HORIZON;
+  if (d->error_threshold == 0.0f) d->error_threshold = DEFAULT_THRESHOLD;
+  if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_memory_size(const smg_graph* graph,
+                                             const smg_character_desc* desc,
+                                             size_t* out_bytes) {
+  if (!graph || !out_bytes) return SMG_ERROR_INVALID_ARGUMENT;
+  smg_character_desc d;
+  smg_result r = resolve_desc(graph, desc, &d);
+  if (r != SMG_OK) return r;
+  layout l;
+  compute_layout(graph->data.joint_count, d.path_capacity,
+                 d.constraint_capacity, &l);
+  *out_bytes = l.total;
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_create(smg_graph* graph,
+                                        const smg_character_desc* desc,
+                                        smg_character** out_character) {
+  if (!graph || !out_character || !graph->derived)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  smg_character_desc d;
+  smg_result r = resolve_desc(graph, desc, &d);
+  if (r != SMG_OK) return r;
+  smg_allocator a;
+  r = smgi_allocator_resolve(&d.allocator, &a);
+  if (r != SMG_OK) return r;
+  const uint32_t J = graph->data.joint_count;
+  layout l;
+  compute_layout(J, d.path_capacity, d.constraint_capacity, &l);
+  uint8_t* mem = (uint8_t*)smgi_alloc(&a, l.total, 16);
+  if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
+  memset(mem, 0, l.total);
+  smg_character* ch = (smg_character*)mem;
+  ch->graph = graph;
+  ch->allocator = a;
+  ch->joint_count = J;
+  ch->flags = d.flags;
+  ch->ik_enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
+  ch->rng = d.seed ? d.seed : 0x9e3779b9u;
+  ch->horizon = d.horizon;
+  ch->error_threshold = d.error_threshold;
+  ch->fps = graph->data.info->frame_rate;
+  float window = graph->data.info->window_seconds;
+  ch->fade_rate = 1.0f / (window > 1e-3f ? window : DEFAULT_WINDOW);
+  ch->constraints = (smgi_constraint*)(mem + l.constraints);
+  ch->constraint_capacity = d.constraint_capacity;
+  ch->next_id = 1;
+  ch->queue = (smgi_qentry*)(mem + l.queue);
+  ch->rot = (float*)(mem + l.rot);
+  ch->tmp = (float*)(mem + l.tmp);
+  ch->snap = (float*)(mem + l.snap);
+  ch->wpos = (float*)(mem + l.wpos);
+  ch->wrot = (float*)(mem + l.wrot);
+  ch->path.xz = (float*)(mem + l.xz);
+  ch->path.cum = (float*)(mem + l.cum);
+  ch->path.capacity = d.path_capacity;
+  ch->base_style = d.initial_style;
+  ch->base_action = d.initial_action;
+  ch->base_style_arc = -1.0f;
+  ch->base_action_arc = -1.0f;
+  ch->anchor[0] = d.position[0];
+  ch->anchor[1] = d.position[2];
+  ch->sync_rate = 1.0f;
+  ch->last_lower_frame = 0xffffffffu;
+  r = smgi_plan_start(ch, d.position[0], d.position[2], d.heading);
+  if (r != SMG_OK) {
+    smgi_free(&a, mem);
+    return r;
+  }
+  smgi_graph_retain(graph);
+  smgi_upper_start(ch);
+  /* a valid pose before the first step */
+  smgi_step(ch, 0.0f);
+  *out_character = ch;
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_destroy(smg_character* ch) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  smg_graph* g = ch->graph;
+  smg_allocator a = ch->allocator;
+  smgi_free(&a, ch);
+  smgi_graph_release(g);
+  return SMG_OK;
+}
+
+/* ---- path edits ---- */
+
+static int all_finite(const float* xz, uint32_t count) {
+  for (uint32_t i = 0; i < 2u * count; ++i)
+    if (!isfinite(xz[i])) return 0;
+  return 1;
+}
+
+/* Cumulative arc lengths from point `from` on (cum[0] = 0). */
+static void accumulate(smgi_path* p, uint32_t from) {
+  if (from == 0 && p->count > 0) {
+    p->cum[0] = 0.0f;
+    from = 1;
+  }
+  /* double accumulation keeps 10^5-point paths free of drift */
+  double acc = from > 0 ? (double)p->cum[from - 1u] : 0.0;
+  for (uint32_t i = from; i < p->count; ++i) {
+    double dx = (double)p->xz[2u * i] - (double)p->xz[2u * i - 2u];
+    double dz = (double)p->xz[2u * i + 1u] - (double)p->xz[2u * i - 1u];
+    acc += sqrt(dx * dx + dz * dz);
+    p->cum[i] = (float)acc;
+  }
+  p->length = p->count > 0 ? p->cum[p->count - 1u] : 0.0f;
+}
+
+SMG_API smg_result smg_character_set_path(smg_character* ch, const float* xz,
+                                          uint32_t count) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  if (count == 0) return smg_character_clear_path(ch);
+  if (!xz) return SMG_ERROR_INVALID_ARGUMENT;
+  if (count > ch->path.capacity) return SMG_ERROR_CAPACITY;
+  if (!all_finite(xz, count)) return SMG_ERROR_INVALID_ARGUMENT;
+  memcpy(ch->path.xz, xz, sizeof(float) * 2u * count);
+  ch->path.count = count;
+  accumulate(&ch->path, 0);
+  float dist;
+  ch->seg = 0;
+  ch->progress = smgi_path_project_global(&ch->path, ch->ground[0],
+                                          ch->ground[1], &ch->seg, &dist);
+  ch->path_error = dist;
+  ch->base_style_arc = ch->base_style_arc < 0.0f ? -1.0f : 0.0f;
+  ch->base_action_arc = ch->base_action_arc < 0.0f ? -1.0f : 0.0f;
+  ch->end_reached = 0;
+  smgi_replan(ch);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_append_path(smg_character* ch,
+                                             const float* xz, uint32_t count) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  if (count == 0) return SMG_OK;
+  if (!xz) return SMG_ERROR_INVALID_ARGUMENT;
+  if (count > ch->path.capacity - ch->path.count) return SMG_ERROR_CAPACITY;
+  if (!all_finite(xz, count)) return SMG_ERROR_INVALID_ARGUMENT;
+  uint32_t old = ch->path.count;
+  memcpy(ch->path.xz + 2u * old, xz, sizeof(float) * 2u * count);
+  ch->path.count = old + count;
+  accumulate(&ch->path, old);
+  if (old == 0) {
+    float dist;
+    ch->seg = 0;
+    ch->progress = smgi_path_project_global(&ch->path, ch->ground[0],
+                                            ch->ground[1], &ch->seg, &dist);
+    ch->path_error = dist;
+  }
+  ch->end_reached = 0;
+  smgi_replan(ch);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_clear_path(smg_character* ch) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  smgi_path_reset(&ch->path);
+  ch->progress = 0.0f;
+  ch->seg = 0;
+  ch->path_error = 0.0f;
+  ch->end_reached = 0;
+  /* stay around the end of the motion already committed */
+  const smgi_qentry* h = smgi_q_at(ch, 0);
+  const smgi_edge* e = &ch->graph->data.lower_edges[h->edge];
+  smgi_xform2 d = {e->displacement[0], e->displacement[1],
+                   e->displacement[2]};
+  smgi_xform2 end = smgi_xf_mul(h->W, d);
+  ch->anchor[0] = end.x;
+  ch->anchor[1] = end.z;
+  smgi_replan(ch);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_get_path_length(const smg_character* ch,
+                                                 float* out_length) {
+  if (!ch || !out_length) return SMG_ERROR_INVALID_ARGUMENT;
+  *out_length = ch->path.length;
+  return SMG_OK;
+}
+
+/* ---- immediate controls ---- */
+
+SMG_API smg_result smg_character_set_style(smg_character* ch,
+                                           uint32_t style) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  if (style >= ch->graph->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
+  ch->base_style = style;
+  ch->base_style_arc = ch->progress;
+  smgi_replan(ch);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_action(smg_character* ch,
+                                            uint32_t action) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  if (action >= ch->graph->data.action_count)
+    return SMG_ERROR_UNKNOWN_ACTION;
+  ch->base_action = action;
+  /* just behind the character so the look-ahead sees it at once */
+  ch->base_action_arc = ch->progress;
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_error_threshold(smg_character* ch,
+                                                     float metres) {
+  if (!ch || !isfinite(metres) || metres < 0.0f)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  ch->error_threshold = metres > 0.0f ? metres : DEFAULT_THRESHOLD;
+  smgi_replan(ch);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_ik(smg_character* ch, uint32_t enabled) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  ch->ik_enabled = enabled ? 1u : 0u;
+  return SMG_OK;
+}
+
+/* ---- per frame ---- */
+
+SMG_API smg_result smg_character_step(smg_character* ch, float dt) {
+  if (!ch || !isfinite(dt) || dt < 0.0f || dt > 1.0f)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (dt == 0.0f) return SMG_OK;
+  return smgi_step(ch, dt);
+}
+
+SMG_API smg_result smg_character_get_state(const smg_character* ch,
+                                           smg_character_state* out) {
+  if (!ch || !out || out->struct_size == 0 ||
+      out->struct_size > sizeof(smg_character_state))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  smg_character_state s;
+  memset(&s, 0, sizeof s);
+  s.struct_size = out->struct_size;
+  s.flags = ch->contacts;
+  if (ch->path.count > 0) s.flags |= SMG_STATE_HAS_PATH;
+  if (ch->end_reached) s.flags |= SMG_STATE_PATH_END_REACHED;
+  s.style = ch->style;
+  s.action = ch->action;
+  s.position[0] = ch->ground[0];
+  s.position[1] = 0.0f;
+  s.position[2] = ch->ground[1];
+  s.heading = ch->heading;
+  s.path_distance = ch->progress;
+  s.path_error = ch->path_error;
+  s.time = ch->time;
+  s.lower_node = ch->lower_node;
+  s.upper_node = ch->upper_node;
+  s.sync_rate = ch->sync_rate;
+  memcpy(out, &s, out->struct_size);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_get_local_pose(const smg_character* ch,
+                                                float* root_translation,
+                                                float* rotations,
+                                                uint32_t joint_count) {
+  if (!ch || !root_translation || !rotations)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (joint_count < ch->joint_count) return SMG_ERROR_BUFFER_TOO_SMALL;
+  if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
+  memcpy(root_translation, ch->root, sizeof(float) * 3u);
+  memcpy(rotations, ch->rot, sizeof(float) * 4u * ch->joint_count);
+  return SMG_OK;
+}
+
+/* Column-major 4x4 from rotation q and translation t. */
+static void mat_from(const float* q, const float* t, float* m) {
+  float x = q[0], y = q[1], z = q[2], w = q[3];
+  m[0] = 1.0f - 2.0f * (y * y + z * z);
+  m[1] = 2.0f * (x * y + z * w);
+  m[2] = 2.0f * (x * z - y * w);
+  m[3] = 0.0f;
+  m[4] = 2.0f * (x * y - z * w);
+  m[5] = 1.0f - 2.0f * (x * x + z * z);
+  m[6] = 2.0f * (y * z + x * w);
+  m[7] = 0.0f;
+  m[8] = 2.0f * (x * z + y * w);
+  m[9] = 2.0f * (y * z - x * w);
+  m[10] = 1.0f - 2.0f * (x * x + y * y);
+  m[11] = 0.0f;
+  m[12] = t[0];
+  m[13] = t[1];
+  m[14] = t[2];
+  m[15] = 1.0f;
+}
+
+/* o = a * b for rigid column-major matrices (o must not alias a or b). */
+static void mat_mul(const float* a, const float* b, float* o) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      o[4 * c + r] = a[r] * b[4 * c] + a[4 + r] * b[4 * c + 1] +
+                     a[8 + r] * b[4 * c + 2] + a[12 + r] * b[4 * c + 3];
+}
+
+SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
+                                                    uint32_t space,
+                                                    float* matrices,
+                                                    uint32_t joint_count) {
+  if (!ch || !matrices) return SMG_ERROR_INVALID_ARGUMENT;
+  if (space != SMG_SPACE_WORLD && space != SMG_SPACE_CHARACTER)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (joint_count < ch->joint_count) return SMG_ERROR_BUFFER_TOO_SMALL;
+  if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
+  const smgi_joint* joints = ch->graph->data.joints;
+  float root_rot[4], root_pos[3];
+  memcpy(root_rot, ch->rot, sizeof root_rot);
+  memcpy(root_pos, ch->root, sizeof root_pos);
+  if (space == SMG_SPACE_CHARACTER) {
+    /* inverse of (ground position, heading) applied to the root */
+    float yaw[4], q[4], v[3];
+    smgi_q_yaw(-ch->heading, yaw);
+    smgi_q_mul(yaw, root_rot, q);
+    memcpy(root_rot, q, sizeof q);
+    v[0] = root_pos[0] - ch->ground[0];
+    v[1] = root_pos[1];
+    v[2] = root_pos[2] - ch->ground[1];
+    smgi_q_rotate(yaw, v, root_pos);
+  }
+  mat_from(root_rot, root_pos, matrices);
+  for (uint32_t j = 1; j < ch->joint_count; ++j) {
+    float local[16];
+    mat_from(ch->rot + 4u * j, joints[j].offset, local);
+    mat_mul(matrices + 16u * (uint32_t)joints[j].parent, local,
+            matrices + 16u * j);
+  }
+  return SMG_OK;
+}

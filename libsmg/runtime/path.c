@@ -1,0 +1,157 @@
+/*
+ * path.c - the polyline a character follows: evaluation by arc length and
+ * nearest-point projection. Arc lengths are precomputed when the path is
+ * edited (character.c), so every query here is O(1) amortized: queries walk
+ * from a segment hint and fall back to binary search for long jumps.
+ */
+#include <math.h>
+
+#include "character_internal.h"
+
+#define WALK_LIMIT 16u
+#define PROJECT_LIMIT 256u
+
+void smgi_path_reset(smgi_path* p) {
+  p->count = 0;
+  p->length = 0.0f;
+}
+
+/* Segment i spans points i..i+1 (0 <= i <= count - 2). */
+static uint32_t find_segment(const smgi_path* p, float s, uint32_t hint) {
+  uint32_t last = p->count - 2u;
+  uint32_t i = hint > last ? last : hint;
+  for (uint32_t k = 0; k < WALK_LIMIT; ++k) {
+    if (s < p->cum[i] && i > 0) {
+      --i;
+    } else if (s > p->cum[i + 1u] && i < last) {
+      ++i;
+    } else {
+      return i;
+    }
+  }
+  /* far away: binary search for the last i with cum[i] <= s */
+  uint32_t lo = 0, hi = last;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo + 1u) / 2u;
+    if (p->cum[mid] <= s) lo = mid;
+    else hi = mid - 1u;
+  }
+  return lo;
+}
+
+static float segment_heading(const smgi_path* p, uint32_t i) {
+  /* zero-length segments have no direction: look at neighbours */
+  uint32_t last = p->count - 2u;
+  for (uint32_t k = 0; k < 8u; ++k) {
+    uint32_t j = i + k <= last ? i + k : last;
+    float dx = p->xz[2u * j + 2u] - p->xz[2u * j];
+    float dz = p->xz[2u * j + 3u] - p->xz[2u * j + 1u];
+    if (dx * dx + dz * dz > 1e-12f) return atan2f(dx, dz);
+    if (i >= k + 1u) {
+      j = i - k - 1u;
+      dx = p->xz[2u * j + 2u] - p->xz[2u * j];
+      dz = p->xz[2u * j + 3u] - p->xz[2u * j + 1u];
+      if (dx * dx + dz * dz > 1e-12f) return atan2f(dx, dz);
+    }
+  }
+  return 0.0f;
+}
+
+void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
+                    float* z, float* heading) {
+  if (p->count == 0) {
+    *x = *z = 0.0f;
+    if (heading) *heading = 0.0f;
+    return;
+  }
+  if (p->count == 1) {
+    *x = p->xz[0];
+    *z = p->xz[1];
+    if (heading) *heading = 0.0f;
+    *seg = 0;
+    return;
+  }
+  if (s < 0.0f) s = 0.0f;
+  if (s > p->length) s = p->length;
+  uint32_t i = find_segment(p, s, *seg);
+  *seg = i;
+  float len = p->cum[i + 1u] - p->cum[i];
+  float u = len > 1e-9f ? (s - p->cum[i]) / len : 0.0f;
+  u = smgi_clampf(u, 0.0f, 1.0f);
+  const float* a = &p->xz[2u * i];
+  *x = a[0] + u * (a[2] - a[0]);
+  *z = a[1] + u * (a[3] - a[1]);
+  if (heading) *heading = segment_heading(p, i);
+}
+
+/* Squared distance from (x, z) to segment i and the arc length there. */
+static float seg_dist2(const smgi_path* p, uint32_t i, float x, float z,
+                       float* s) {
+  const float* a = &p->xz[2u * i];
+  float dx = a[2] - a[0], dz = a[3] - a[1];
+  float l2 = dx * dx + dz * dz;
+  float u = 0.0f;
+  if (l2 > 1e-18f) u = smgi_clampf(((x - a[0]) * dx + (z - a[1]) * dz) / l2,
+                                   0.0f, 1.0f);
+  float px = a[0] + u * dx - x, pz = a[1] + u * dz - z;
+  *s = p->cum[i] + u * (p->cum[i + 1u] - p->cum[i]);
+  return px * px + pz * pz;
+}
+
+float smgi_path_project_local(const smgi_path* p, float x, float z,
+                              uint32_t* seg, float* out_dist) {
+  if (p->count == 0) {
+    *out_dist = 0.0f;
+    return 0.0f;
+  }
+  if (p->count == 1) {
+    float dx = x - p->xz[0], dz = z - p->xz[1];
+    *out_dist = sqrtf(dx * dx + dz * dz);
+    *seg = 0;
+    return 0.0f;
+  }
+  uint32_t last = p->count - 2u;
+  uint32_t i = *seg > last ? last : *seg;
+  float s_best;
+  float d_best = seg_dist2(p, i, x, z, &s_best);
+  /* descend towards the nearer neighbour until neither improves; ties
+   * move forward so progress never stalls on zero-length segments */
+  for (uint32_t k = 0; k < PROJECT_LIMIT; ++k) {
+    float s_n, s_p;
+    float d_n = i < last ? seg_dist2(p, i + 1u, x, z, &s_n) : INFINITY;
+    float d_p = i > 0 ? seg_dist2(p, i - 1u, x, z, &s_p) : INFINITY;
+    if (d_n <= d_best && d_n <= d_p) {
+      ++i;
+      d_best = d_n;
+      s_best = s_n;
+    } else if (d_p < d_best) {
+      --i;
+      d_best = d_p;
+      s_best = s_p;
+    } else {
+      break;
+    }
+  }
+  *seg = i;
+  *out_dist = sqrtf(d_best);
+  return s_best;
+}
+
+float smgi_path_project_global(const smgi_path* p, float x, float z,
+                               uint32_t* seg, float* out_dist) {
+  if (p->count < 2u) return smgi_path_project_local(p, x, z, seg, out_dist);
+  uint32_t best = 0;
+  float s_best = 0.0f, d_best = INFINITY;
+  for (uint32_t i = 0; i + 1u < p->count; ++i) {
+    float s;
+    float d = seg_dist2(p, i, x, z, &s);
+    if (d < d_best) {
+      d_best = d;
+      s_best = s;
+      best = i;
+    }
+  }
+  *seg = best;
+  *out_dist = sqrtf(d_best);
+  return s_best;
+}

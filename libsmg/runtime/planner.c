@@ -1,0 +1,334 @@
+/*
+ * planner.c - the paper's search (III.C.2), made incremental. From the last
+ * planned node, every out-edge is scored by how well its precomputed motion
+ * follows the path from the planned progress: the edge's ground
+ * displacement (and a mid-edge root sample from FRMI, placed without any
+ * forward kinematics) is compared with the path point the character should
+ * reach after walking the edge's arc length, plus the heading error and a
+ * style term from the derived hop counts. The greedy best is taken; when its
+ * distance error exceeds the threshold, the planner backs up to the
+ * previous planned node and takes its next-best edge, and so on (bounded).
+ * Work per call is bounded by a budget of candidate evaluations; only when
+ * the playhead would otherwise run out is the budget exceeded (by at most
+ * the frames needed for this step).
+ */
+#include <math.h>
+#include <string.h>
+#ifdef SMGI_DEBUG_PLAN
+#include <stdio.h>
+#endif
+
+#include "character_internal.h"
+
+#define END_EPS 0.3f           /* metres from the end that count as there */
+#define HEADING_WEIGHT 0.4f    /* metres of error per radian */
+#define STYLE_WEIGHT 1.0f      /* metres of penalty per hop to the style */
+#define END_SPEED_WEIGHT 0.5f  /* at the end prefer edges that travel less */
+
+typedef struct cand {
+  uint32_t edge;
+  float score, err, s_end, pen;
+  uint32_t seg_end;
+  smgi_xform2 end; /* ground transform after the edge */
+} cand;
+
+static smgi_xform2 ground_of(const smg_graph* g, uint32_t frame) {
+  const float* r = g->data.frames[frame].root2d;
+  smgi_xform2 x = {r[0], r[1], r[2]};
+  return x;
+}
+
+static smgi_xform2 disp_of(const smgi_edge* e) {
+  smgi_xform2 x = {e->displacement[0], e->displacement[1],
+                   e->displacement[2]};
+  return x;
+}
+
+/* Where to stay when there is nothing (more) to follow. */
+static void end_target(const smg_character* ch, float* x, float* z) {
+  const smgi_path* p = &ch->path;
+  if (p->count > 0) {
+    *x = p->xz[2u * (p->count - 1u)];
+    *z = p->xz[2u * (p->count - 1u) + 1u];
+  } else {
+    *x = ch->anchor[0];
+    *z = ch->anchor[1];
+  }
+}
+
+static float style_penalty(const smg_character* ch, const smgi_edge* e,
+                           uint32_t desired) {
+  const smg_graph* g = ch->graph;
+  uint32_t S = g->data.style_count;
+  if (desired >= S || e->label == desired) return 0.0f;
+  const uint8_t* hops = smgi_derived_of(g)->lower_hops;
+  if (hops[(size_t)e->from * S + desired] == SMGI_HOPS_UNREACHABLE)
+    return 0.0f; /* cannot get there from here: ignore */
+  uint8_t h = hops[(size_t)e->to * S + desired];
+  if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * STYLE_WEIGHT;
+  return STYLE_WEIGHT * (1.0f + (float)h);
+}
+
+static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
+                     uint32_t seg, uint32_t edge_index, cand* out) {
+  const smg_graph* g = ch->graph;
+  const smgi_edge* e = &g->data.lower_edges[edge_index];
+  const smgi_path* p = &ch->path;
+  smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
+  out->end = end;
+  out->edge = edge_index;
+  out->seg_end = seg;
+  out->s_end = s;
+
+  int following = p->count >= 2u && s < p->length - END_EPS;
+  float score, err;
+  if (following) {
+    float arc = e->arc_length;
+    float s_t = s + arc;
+    uint32_t sg = seg;
+    float tx, tz, th;
+    smgi_path_eval(p, s_t, &sg, &tx, &tz, &th);
+    float dx = end.x - tx, dz = end.z - tz;
+    float e_end = sqrtf(dx * dx + dz * dz);
+    /* mid-edge root sample, placed from FRMI without FK */
+    const smgi_node* from = &g->data.lower_nodes[e->from];
+    smgi_xform2 M = smgi_xf_mul(W, smgi_xf_inv(ground_of(g, from->frame)));
+    const float* r = g->data.frames[e->first_frame + e->frame_count / 2u]
+                         .root2d;
+    float mx, mz, px, pz;
+    smgi_xf_point(M, r[0], r[1], &mx, &mz);
+    uint32_t sm = seg;
+    smgi_path_eval(p, s + 0.5f * arc, &sm, &px, &pz, NULL);
+    float e_mid = sqrtf((mx - px) * (mx - px) + (mz - pz) * (mz - pz));
+    float dh = fabsf(smgi_wrap_angle(end.h - th));
+    err = e_end > e_mid ? e_end : e_mid;
+    score = e_end + 0.5f * e_mid + HEADING_WEIGHT * dh;
+    float dist;
+    out->s_end = smgi_path_project_local(p, end.x, end.z, &sg, &dist);
+    out->seg_end = sg;
+    out->pen = style_penalty(ch, e, smgi_style_at(ch, s_t));
+    score += out->pen;
+  } else {
+    float tx, tz;
+    end_target(ch, &tx, &tz);
+    float dx = end.x - tx, dz = end.z - tz;
+    err = 0.0f; /* nothing to follow: never backtrack */
+    score = sqrtf(dx * dx + dz * dz) + END_SPEED_WEIGHT * e->arc_length;
+    out->pen = style_penalty(ch, e, smgi_style_at(ch, s));
+    score += out->pen;
+  }
+  out->score = isfinite(score) ? score : INFINITY;
+  out->err = err;
+}
+
+/* Score all out-edges of `node` from (W, s, seg), sorted best first
+ * (ties by edge index, so the order is deterministic). */
+static uint32_t rank_node(const smg_character* ch, uint32_t node,
+                          smgi_xform2 W, float s, uint32_t seg, cand* c) {
+  const smgi_node* n = &ch->graph->data.lower_nodes[node];
+  uint32_t count = n->edge_count < SMGI_MAX_CANDIDATES ? n->edge_count
+                                                       : SMGI_MAX_CANDIDATES;
+  for (uint32_t k = 0; k < count; ++k) {
+    cand x;
+    evaluate(ch, W, s, seg, n->first_edge + k, &x);
+    uint32_t i = k;
+    while (i > 0 && (c[i - 1u].score > x.score ||
+                     (c[i - 1u].score == x.score && c[i - 1u].edge > x.edge))) {
+      c[i] = c[i - 1u];
+      --i;
+    }
+    c[i] = x;
+  }
+#ifdef SMGI_DEBUG_PLAN
+  fprintf(stderr, "rank node %u W(%.2f %.2f %.2f) s %.2f:", node, W.x, W.z,
+          W.h, s);
+  for (uint32_t k = 0; k < count; ++k)
+    fprintf(stderr, " e%u sc %.2f err %.2f |", c[k].edge, c[k].score,
+            c[k].err);
+  fprintf(stderr, "\n");
+#endif
+  return count;
+}
+
+static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
+                 uint32_t rank, uint32_t count) {
+  const smg_graph* g = ch->graph;
+  const smgi_edge* e = &g->data.lower_edges[c->edge];
+  smgi_qentry* q = smgi_q_at(ch, ch->q_count++);
+  q->edge = c->edge;
+  q->seq = ch->next_seq++;
+  q->W = W;
+  q->M = smgi_xf_mul(
+      W, smgi_xf_inv(ground_of(g, g->data.lower_nodes[e->from].frame)));
+  q->s_start = s;
+  q->s_end = c->s_end;
+  q->seg_end = c->seg_end;
+  q->rank = (uint16_t)rank;
+  q->cand_count = (uint16_t)count;
+  q->err = c->err;
+}
+
+/* The state planning continues from: after the last queued edge. */
+static void tail_state(const smg_character* ch, uint32_t* node,
+                       smgi_xform2* W, float* s, uint32_t* seg) {
+  const smgi_qentry* q = smgi_q_at_c(ch, ch->q_count - 1u);
+  const smgi_edge* e = &ch->graph->data.lower_edges[q->edge];
+  *node = e->to;
+  *W = smgi_xf_mul(q->W, disp_of(e));
+  *s = q->s_end;
+  *seg = q->seg_end;
+}
+
+/* Distance of a planned ground position from the path point at s. */
+static float start_error(const smg_character* ch, smgi_xform2 W, float s,
+                         uint32_t seg) {
+  if (ch->path.count < 2u) return 0.0f;
+  float x, z;
+  smgi_path_eval(&ch->path, s, &seg, &x, &z, NULL);
+  return sqrtf((W.x - x) * (W.x - x) + (W.z - z) * (W.z - z));
+}
+
+float smgi_frames_ahead(const smg_character* ch) {
+  float f = -ch->t;
+  const smgi_edge* edges = ch->graph->data.lower_edges;
+  for (uint32_t i = 0; i < ch->q_count; ++i)
+    f += (float)edges[smgi_q_at_c(ch, i)->edge].frame_count;
+  return f;
+}
+
+/* The paper's back-up step, made safe: the last planned choice led to a
+ * node whose best edge misses the path by more than the threshold. Back up
+ * to that choice's node and try its next-best edges (up to SMGI_MAX_RANK,
+ * never ones that move away from the wanted style): each alternative is
+ * judged by the worse of its own error and its best follow-up's error. The
+ * best alternative replaces the old choice only if it does better, so
+ * backtracking can never make the plan worse than plain greedy. The entry
+ * is then final (not backed up into again). Returns 1 if the plan changed. */
+static int backtrack(smg_character* ch, cand* c, uint32_t* budget) {
+  const smg_graph* g = ch->graph;
+  if (ch->q_count < 2u || ch->backtracks >= SMGI_MAX_BACKTRACKS) return 0;
+  smgi_qentry* lastp = smgi_q_at(ch, ch->q_count - 1u);
+  if (lastp->rank >= SMGI_MAX_RANK) return 0;
+  smgi_qentry last = *lastp;
+  ch->backtracks++;
+  uint32_t from = g->data.lower_edges[last.edge].from;
+  uint32_t seg = smgi_q_at(ch, ch->q_count - 2u)->seg_end;
+  uint32_t n = rank_node(ch, from, last.W, last.s_start, seg, c);
+  *budget = *budget > n ? *budget - n : 0;
+  uint32_t cur = last.rank < n ? last.rank : n - 1u;
+  uint32_t limit = n < SMGI_MAX_RANK ? n : SMGI_MAX_RANK;
+  cand child[SMGI_MAX_CANDIDATES];
+  uint32_t best_r = cur;
+  float best_v = INFINITY;
+  for (uint32_t r = 0; r < limit; ++r) {
+    if (r != cur && c[r].pen > c[cur].pen) continue;
+    uint32_t to = g->data.lower_edges[c[r].edge].to;
+    uint32_t m = rank_node(ch, to, c[r].end, c[r].s_end, c[r].seg_end, child);
+    *budget = *budget > m ? *budget - m : 0;
+    float v = c[r].err;
+    if (m > 0 && child[0].err > v) v = child[0].err;
+    if (v < best_v - 1e-4f || (r == cur && v <= best_v + 1e-4f)) {
+      best_v = v;
+      best_r = r;
+    }
+  }
+  ch->q_count--;
+  push(ch, last.W, last.s_start, &c[best_r], best_r, n);
+  smgi_q_at(ch, ch->q_count - 1u)->rank = (uint16_t)SMGI_MAX_RANK; /* final */
+  return best_r != cur;
+}
+
+void smgi_plan(smg_character* ch, uint32_t budget, float min_frames) {
+  cand c[SMGI_MAX_CANDIDATES];
+  const float horizon_frames = ch->horizon * ch->fps;
+  for (;;) {
+    if (ch->q_count == 0 || ch->q_count >= SMGI_QUEUE_CAP) return;
+    float ahead = smgi_frames_ahead(ch);
+    int forced = ahead < min_frames;
+    if (!forced && (ahead >= horizon_frames || budget == 0)) return;
+    uint32_t node, seg;
+    smgi_xform2 W;
+    float s;
+    tail_state(ch, &node, &W, &s, &seg);
+    uint32_t n = rank_node(ch, node, W, s, seg, c);
+    if (n == 0) return; /* dead end: playback holds the last frame */
+    budget = budget > n ? budget - n : 0;
+    /* Backtracking can only help when the planned state is itself on the
+     * path: when the character is already off it (new path far away, or
+     * unavoidable drift), no local choice fixes that and the greedy pick
+     * steers back. */
+    if (c[0].err > ch->error_threshold &&
+        start_error(ch, W, s, seg) <= ch->error_threshold &&
+        backtrack(ch, c, &budget))
+      continue;
+    push(ch, W, s, &c[0], 0, n);
+    if (c[0].err <= ch->error_threshold) ch->backtracks = 0;
+  }
+}
+
+void smgi_replan(smg_character* ch) {
+  if (ch->q_count == 0) return;
+  if (ch->time == 0.0 && ch->t == 0.0f) {
+    /* nothing played yet: the first edge itself may be re-chosen */
+    smgi_qentry h = *smgi_q_at(ch, 0);
+    cand c[SMGI_MAX_CANDIDATES];
+    uint32_t from = ch->graph->data.lower_edges[h.edge].from;
+    uint32_t n = rank_node(ch, from, h.W, ch->progress, ch->seg, c);
+    ch->q_count = 0;
+    ch->backtracks = 0;
+    ch->pending.valid = 0;
+    push(ch, h.W, ch->progress, &c[0], 0, n);
+    return;
+  }
+  ch->q_count = 1; /* keep only the edge that is playing */
+  ch->backtracks = 0;
+  smgi_qentry* h = smgi_q_at(ch, 0);
+  const smgi_edge* e = &ch->graph->data.lower_edges[h->edge];
+  smgi_xform2 end = smgi_xf_mul(h->W, disp_of(e));
+  uint32_t seg = ch->seg;
+  float dist;
+  h->s_start = ch->progress;
+  h->s_end = smgi_path_project_local(&ch->path, end.x, end.z, &seg, &dist);
+  h->seg_end = seg;
+  if (ch->pending.valid && ch->pending.seq != h->seq) ch->pending.valid = 0;
+}
+
+smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
+  const smg_graph* g = ch->graph;
+  const smgi_derived* dv = smgi_derived_of(g);
+  uint32_t LN = g->data.lower_node_count;
+  /* a node of the initial style with out-edges, chosen by the seed */
+  uint32_t matches = 0;
+  for (uint32_t n = 0; n < LN; ++n)
+    if (g->data.lower_nodes[n].label == ch->base_style &&
+        g->data.lower_nodes[n].edge_count > 0)
+      ++matches;
+  uint32_t node = SMGI_NONE;
+  if (matches > 0) {
+    uint32_t pick = smgi_xorshift(&ch->rng) % matches;
+    for (uint32_t n = 0; n < LN; ++n) {
+      if (g->data.lower_nodes[n].label == ch->base_style &&
+          g->data.lower_nodes[n].edge_count > 0) {
+        if (pick == 0) {
+          node = n;
+          break;
+        }
+        --pick;
+      }
+    }
+  } else {
+    for (uint32_t n = 0; n < LN && node == SMGI_NONE; ++n)
+      if (g->data.lower_nodes[n].edge_count > 0) node = n;
+  }
+  (void)dv;
+  if (node == SMGI_NONE) return SMG_ERROR_BLOB_VALUE; /* no edges at all */
+  cand c[SMGI_MAX_CANDIDATES];
+  smgi_xform2 W = {x, z, smgi_wrap_angle(h)};
+  uint32_t n = rank_node(ch, node, W, ch->progress, ch->seg, c);
+  ch->q_head = 0;
+  ch->q_count = 0;
+  ch->t = 0.0f;
+  push(ch, W, ch->progress, &c[0], 0, n);
+  ch->lower_node = node;
+  return SMG_OK;
+}

@@ -1,0 +1,124 @@
+/*
+ * sync.c - synchronization of the upper body with the lower body (paper
+ * III.C.3). The upper body's playback rate is warped so that its cycle
+ * follows the lower body's:
+ *  - A range starts at the splice point (where the baker already matched
+ *    upper and lower) and runs to the next splice or transition point; the
+ *    lower window used for registration never crosses the range's end.
+ *  - Without constraint points ahead, ranges follow the support legs
+ *    (Menardais et al. 2004): each frame is described by its support state
+ *    (left/right contact) and gait phase from FRMI, so aligning these
+ *    features aligns support-leg changes of the upper clip's own recorded
+ *    feet with the locomotion's.
+ *  - Inside the range a small dynamic time warp (Kovar & Gleicher 2003
+ *    registration, open-ended on the upper side) aligns the next
+ *    SMGI_SYNC_LOWER lower frames with the next SMGI_SYNC_UPPER upper
+ *    frames; the slope of the warp is the playback rate, clamped to
+ *    [0.5, 2] and smoothed. When the upper clip carries no gait
+ *    information every alignment costs the same and ties prefer the
+ *    diagonal, so the rate stays 1.
+ * The warp is recomputed only when the lower playhead enters a new frame:
+ * at most 8 x 16 cells, bounded and amortized.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "character_internal.h"
+
+#define RATE_MIN 0.5f
+#define RATE_MAX 2.0f
+#define SMOOTH 0.3f
+
+static void features(const smg_graph* g, uint32_t frame, float* f) {
+  const smgi_frame* fr = &g->data.frames[frame];
+  f[0] = (fr->flags & SMGI_FRAME_LEFT_CONTACT) ? 1.0f : 0.0f;
+  f[1] = (fr->flags & SMGI_FRAME_RIGHT_CONTACT) ? 1.0f : 0.0f;
+  if (fr->phase >= 0.0f) {
+    f[2] = cosf(2.0f * SMGI_PI * fr->phase);
+    f[3] = sinf(2.0f * SMGI_PI * fr->phase);
+  } else {
+    f[2] = f[3] = 0.0f;
+  }
+}
+
+static float dist(const float* a, const float* b) {
+  float d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2],
+        d3 = a[3] - b[3];
+  return d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3;
+}
+
+void smgi_sync_update(smg_character* ch) {
+  if (ch->action == 0) {
+    ch->sync_rate = 1.0f;
+    return;
+  }
+  const smg_graph* g = ch->graph;
+  const smgi_edge* le = g->data.lower_edges;
+  const smgi_edge* ue = g->data.upper_edges;
+  float lf[SMGI_SYNC_LOWER][4], uf[SMGI_SYNC_UPPER][4];
+
+  /* lower window, clipped at the end of the synchronizing range */
+  float range_end = smgi_next_constraint_arc(ch, ch->progress);
+  uint32_t n = 0;
+  for (; n < SMGI_SYNC_LOWER; ++n) {
+    uint32_t entry, offset;
+    if (!smgi_q_locate(ch, n, &entry, &offset)) break;
+    const smgi_qentry* q = smgi_q_at(ch, entry);
+    const smgi_edge* e = &le[q->edge];
+    float s = q->s_start +
+              (q->s_end - q->s_start) * (float)offset / (float)e->frame_count;
+    if (n > 0 && s >= range_end) break;
+    features(g, e->first_frame + offset, lf[n]);
+  }
+  if (n < 3u) return; /* too short to register: keep the current rate */
+
+  /* upper window: the current edge, then the chosen successor */
+  uint32_t m = 0;
+  uint32_t edge = ch->uedge, off = (uint32_t)ch->ut;
+  for (; m < SMGI_SYNC_UPPER; ++m) {
+    if (off >= ue[edge].frame_count) {
+      if (edge != ch->uedge) break;
+      edge = ch->unext;
+      off = 0;
+    }
+    features(g, ue[edge].first_frame + off, uf[m]);
+    ++off;
+  }
+  if (m < 3u) return;
+
+  /* DTW with an open end on the upper side */
+  float C[SMGI_SYNC_LOWER][SMGI_SYNC_UPPER];
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < m; ++j) {
+      float d = dist(lf[i], uf[j]);
+      float best;
+      if (i == 0 && j == 0) {
+        best = 0.0f;
+      } else {
+        /* ties prefer the diagonal (rate 1), then the lower's step */
+        float diag = (i > 0 && j > 0) ? C[i - 1u][j - 1u] : INFINITY;
+        float up = i > 0 ? C[i - 1u][j] : INFINITY;
+        float left = j > 0 ? C[i][j - 1u] : INFINITY;
+        best = diag;
+        if (up < best) best = up;
+        if (left < best) best = left;
+      }
+      C[i][j] = d + best;
+    }
+  }
+  uint32_t jend = 0;
+  float cbest = INFINITY;
+  for (uint32_t j = 0; j < m; ++j) {
+    float c = C[n - 1u][j];
+    /* equal cost: prefer the end nearest the diagonal */
+    int nearer = abs((int)j - (int)(n - 1u)) < abs((int)jend - (int)(n - 1u));
+    if (c < cbest - 1e-6f || (fabsf(c - cbest) <= 1e-6f && nearer)) {
+      cbest = c;
+      jend = j;
+    }
+  }
+  float rate = (float)jend / (float)(n - 1u);
+  rate = smgi_clampf(rate, RATE_MIN, RATE_MAX);
+  ch->sync_rate += SMOOTH * (rate - ch->sync_rate);
+  ch->sync_rate = smgi_clampf(ch->sync_rate, RATE_MIN, RATE_MAX);
+}
