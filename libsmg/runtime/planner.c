@@ -22,7 +22,8 @@
 
 #define END_EPS 0.3f           /* metres from the end that count as there */
 #define HEADING_WEIGHT 0.4f    /* metres of error per radian */
-#define STYLE_WEIGHT 1.0f      /* metres of penalty per hop to the style */
+#define STYLE_WEIGHT 3.0f      /* metres of penalty per hop to the style:
+                                  style constraints dominate path error */
 #define END_SPEED_WEIGHT 0.5f  /* at the end prefer edges that travel less */
 
 typedef struct cand {

@@ -1,0 +1,113 @@
+/*
+ * runtime_testutil.h - helpers shared by the runtime tests: load the
+ * fixture graph, the synthetic default blob and (when ../shared exists) a
+ * CMU graph baked in-process; path builders; a counting allocator.
+ */
+#ifndef SMG_RUNTIME_TESTUTIL_H
+#define SMG_RUNTIME_TESTUTIL_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "blob.h"
+#include "fixture_graph.h"
+#include "smg.h"
+
+static inline int rt_quick(void) {
+  const char* q = getenv("SMG_TEST_QUICK");
+  return q && q[0] && q[0] != '0';
+}
+
+/* The fixture as a loaded graph; *blob must be freed with smgi_blob_free
+ * after smg_graph_destroy. */
+static inline smg_graph* rt_fixture(void** blob) {
+  size_t size = 0;
+  smg_graph* g = NULL;
+  *blob = NULL;
+  if (fixture_graph_blob(blob, &size) != SMG_OK) return NULL;
+  if (smg_graph_load_memory(*blob, size, NULL, &g) != SMG_OK) {
+    smgi_blob_free(*blob, NULL);
+    *blob = NULL;
+    return NULL;
+  }
+  return g;
+}
+
+static inline void rt_fixture_free(smg_graph* g, void* blob) {
+  if (g) smg_graph_destroy(g);
+  if (blob) smgi_blob_free(blob, NULL);
+}
+
+/* build/default.smg: `make` produces it. */
+static inline smg_graph* rt_default_graph(void) {
+  smg_graph* g = NULL;
+  char path[1024];
+  snprintf(path, sizeof path, "%s/default.smg", SMG_BUILD_DIR);
+  smg_result r = smg_graph_load_file(path, NULL, &g);
+  if (r != SMG_OK) {
+    fprintf(stderr,
+            "runtime tests: cannot load %s (%s); run `make` first, it bakes "
+            "the synthetic default blob\n",
+            path, smg_result_string(r));
+    return NULL;
+  }
+  return g;
+}
+
+/* Straight line from (0,0) along +Z, n points over `length` metres. */
+static inline void rt_line(float* xz, uint32_t n, float length) {
+  for (uint32_t i = 0; i < n; ++i) {
+    xz[2 * i] = 0.0f;
+    xz[2 * i + 1] = length * (float)i / (float)(n - 1);
+  }
+}
+
+/* Straight `a` metres along +Z, then a 90-degree turn (left: towards +X,
+ * which is the character's left when facing +Z with Y up) for `b` metres. */
+static inline uint32_t rt_turn(float* xz, float a, float b, int left) {
+  uint32_t n = 0;
+  for (int i = 0; i <= 20; ++i) {
+    xz[2 * n] = 0.0f;
+    xz[2 * n + 1] = a * (float)i / 20.0f;
+    ++n;
+  }
+  for (int i = 1; i <= 20; ++i) {
+    xz[2 * n] = (left ? 1.0f : -1.0f) * b * (float)i / 20.0f;
+    xz[2 * n + 1] = a;
+    ++n;
+  }
+  return n;
+}
+
+/* Counting allocator. */
+typedef struct rt_counter {
+  long allocs, frees;
+} rt_counter;
+
+static inline void* rt_count_alloc(size_t size, size_t align, void* user) {
+  rt_counter* c = (rt_counter*)user;
+  void* p = NULL;
+  c->allocs++;
+  if (align < sizeof(void*)) align = sizeof(void*);
+  if (posix_memalign(&p, align, size ? size : 1) != 0) return NULL;
+  return p;
+}
+
+static inline void rt_count_free(void* p, void* user) {
+  rt_counter* c = (rt_counter*)user;
+  if (p) c->frees++;
+  free(p);
+}
+
+static inline int rt_pose_finite(const float* root, const float* rot,
+                                 uint32_t J) {
+  for (int k = 0; k < 3; ++k)
+    if (!isfinite(root[k])) return 0;
+  for (uint32_t i = 0; i < 4 * J; ++i)
+    if (!isfinite(rot[i])) return 0;
+  return 1;
+}
+
+#endif /* SMG_RUNTIME_TESTUTIL_H */
