@@ -1,0 +1,44 @@
+/* smg_gd_entry.c - the GDExtension entry point of libsmg_godot.so: loads the
+ * interface and registers SmgGraph and SmgCharacter at the SCENE level. */
+#include <stdio.h>
+
+#include "gd_api.h"
+#include "smg_gd_character.h"
+#include "smg_gd_graph.h"
+
+static bool registered;
+
+static void initialize(void *ud, GDExtensionInitializationLevel level) {
+	(void)ud;
+	if (level != GDEXTENSION_INITIALIZATION_SCENE) return;
+	if (!gd_api_init_scene()) {
+		GD_ERR("libsmg_godot: this Godot's API does not match the one the extension was built for "
+		       "(" SMG_GD_GODOT_VERSION "); SmgGraph and SmgCharacter are not available");
+		return;
+	}
+	smg_gd_graph_register();
+	smg_gd_character_register();
+	registered = true;
+}
+
+static void deinitialize(void *ud, GDExtensionInitializationLevel level) {
+	(void)ud;
+	if (level != GDEXTENSION_INITIALIZATION_SCENE || !registered) return;
+	smg_gd_character_unregister(); /* subclasses/users first */
+	smg_gd_graph_unregister();
+	gd_api_deinit_scene();
+	registered = false;
+}
+
+__attribute__((visibility("default"))) GDExtensionBool smg_godot_init(GDExtensionInterfaceGetProcAddress get_proc,
+	GDExtensionClassLibraryPtr lib, GDExtensionInitialization *init) {
+	if (!gd_api_load(get_proc, lib)) {
+		fprintf(stderr, "libsmg_godot: Godot's GDExtension interface lacks functions this extension needs\n");
+		return 0;
+	}
+	init->minimum_initialization_level = GDEXTENSION_INITIALIZATION_SCENE;
+	init->userdata = NULL;
+	init->initialize = initialize;
+	init->deinitialize = deinitialize;
+	return 1;
+}

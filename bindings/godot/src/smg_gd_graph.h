@@ -1,0 +1,38 @@
+/* smg_gd_graph.h - SmgGraph, a Resource holding one loaded libsmg graph. */
+#ifndef SMG_GD_GRAPH_H
+#define SMG_GD_GRAPH_H
+
+#include "gd_api.h"
+#include "smg.h"
+
+/* A loaded graph and the blob bytes it lives in, shared by reference count
+ * between the SmgGraph resource and every character created on it. This is
+ * what makes "free in any order" and "reload while characters run" safe:
+ * libsmg refuses to destroy a graph with live characters (SMG_ERROR_IN_USE),
+ * so the graph is destroyed only when the last holder lets go, and every
+ * holder destroys its characters before letting go. */
+typedef struct smg_gd_blob {
+	smg_graph *graph;
+	void *mem;
+	uint32_t refs;
+	uint32_t joint_count;
+} smg_gd_blob;
+
+smg_gd_blob *smg_gd_blob_retain(smg_gd_blob *b);
+void smg_gd_blob_release(smg_gd_blob *b);
+
+typedef struct smg_gd_graph smg_gd_graph;
+
+void smg_gd_graph_register(void);
+void smg_gd_graph_unregister(void);
+
+/* The SmgGraph behind a Godot object, or NULL if obj is not an SmgGraph. */
+smg_gd_graph *smg_gd_graph_from_object(GDExtensionObjectPtr obj);
+/* The graph currently loaded (borrowed; NULL when nothing is loaded). */
+smg_gd_blob *smg_gd_graph_blob(const smg_gd_graph *g);
+
+/* A new Skeleton3D matching the graph's joints (names, parents, rest
+ * offsets), or NULL with a Godot error. The caller owns the node. */
+GDExtensionObjectPtr smg_gd_graph_build_skeleton(smg_gd_graph *g);
+
+#endif
