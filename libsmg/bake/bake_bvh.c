@@ -75,9 +75,10 @@ static int lex_next(bvh_lexer* lx) {
     lx->p++;
   }
   if (lx->p >= lx->end) {
+    /* Report end of file at the last line that had a token. */
     lx->tok[0] = '\0';
     lx->tok_len = 0;
-    lx->tok_line = lx->line;
+    if (lx->tok_line == 0) lx->tok_line = lx->line;
     return 0;
   }
   start = lx->p;
@@ -581,7 +582,19 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
   if (!lex_expect(&lx, "Frames:", "after MOTION (missing frame count)"))
     goto done;
   frames_line = lx.tok_line;
-  if (!lex_number(&lx, "frame count", &frames_d)) goto done;
+  {
+    /* Not lex_number: a frame count may legitimately exceed 1e6 and then
+     * deserves the "too many frames" capacity error below. */
+    char* endp = NULL;
+    int r = lex_next(&lx);
+    if (r < 0) goto done;
+    frames_d = r ? strtod(lx.tok, &endp) : 0.0;
+    if (r == 0 || endp != lx.tok + lx.tok_len || !isfinite(frames_d)) {
+      smgb_imp_errorf(err, "%s:%u: frame count '%s' is not a number", name,
+                      lx.tok_line, tok_show(&lx));
+      goto done;
+    }
+  }
   if (frames_d != floor(frames_d) || frames_d < 0) {
     smgb_imp_errorf(err, "%s:%u: frame count '%s' is not a whole number",
                     name, lx.tok_line, lx.tok);
