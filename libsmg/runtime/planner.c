@@ -205,8 +205,9 @@ float smgi_frames_ahead(const smg_character* ch) {
  * best alternative replaces the old choice only if it does better, so
  * backtracking can never make the plan worse than plain greedy. The entry
  * is then final (not backed up into again). Returns 1 if the plan changed. */
-static int backtrack(smg_character* ch, cand* c, uint32_t* budget) {
+static int backtrack(smg_character* ch, uint32_t* budget) {
   const smg_graph* g = ch->graph;
+  cand c[SMGI_MAX_CANDIDATES]; /* the caller's ranking must survive */
   if (ch->q_count < 2u || ch->backtracks >= SMGI_MAX_BACKTRACKS) return 0;
   smgi_qentry* lastp = smgi_q_at(ch, ch->q_count - 1u);
   if (lastp->rank >= SMGI_MAX_RANK) return 0;
@@ -260,7 +261,7 @@ void smgi_plan(smg_character* ch, uint32_t budget, float min_frames) {
      * steers back. */
     if (c[0].err > ch->error_threshold &&
         start_error(ch, W, s, seg) <= ch->error_threshold &&
-        backtrack(ch, c, &budget))
+        backtrack(ch, &budget))
       continue;
     push(ch, W, s, &c[0], 0, n);
     if (c[0].err <= ch->error_threshold) ch->backtracks = 0;
