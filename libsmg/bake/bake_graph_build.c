@@ -1,0 +1,359 @@
+/*
+ * bake_graph_build.c - motion-graph construction (Kovar et al. 2002) for
+ * one body half.
+ *
+ *   lower graph: clips with role LOWER; point cloud = world positions of the
+ *     lower-body joints (root + legs); style = clip label.
+ *   upper graph: clips with role UPPER; point cloud = upper-body segment
+ *     COGs in the root's ground frame, weighted by mass (bake_upper.c);
+ *     transitions only between frames of the same action (actions connect
+ *     through splicing, not through edges).
+ *
+ * Every local minimum of the window distance grid is a candidate; those
+ * below transition_percentile of the candidates of the same (label, label)
+ * pair are kept (per pair, so that walk->run and run->walk candidates are
+ * judged against each other rather than against the far closer walk->walk
+ * ones), then optionally cut at the absolute transition_threshold.
+ * A transition from (A, i) to (B, j) blends A_i..A_i+k-1 with the aligned
+ * B_j..B_j+k-1 and arrives at B_j+k. Nodes are the frames where
+ * transitions leave or arrive; original motion between consecutive nodes
+ * of a clip becomes an edge.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bake_graph.h"
+#include "bake_math.h"
+
+smg_result smgb_graph_add_node(smgb_graph* g, uint32_t frame, uint32_t label,
+                               uint32_t* out_index) {
+  if (g->node_count == g->node_cap) {
+    uint32_t cap = g->node_cap ? g->node_cap * 2 : 64;
+    smgb_node* n = realloc(g->nodes, cap * sizeof *n);
+    if (!n) return SMG_ERROR_OUT_OF_MEMORY;
+    g->nodes = n;
+    g->node_cap = cap;
+  }
+  g->nodes[g->node_count].frame = frame;
+  g->nodes[g->node_count].label = label;
+  if (out_index) *out_index = g->node_count;
+  ++g->node_count;
+  return SMG_OK;
+}
+
+smg_result smgb_graph_add_edge(smgb_graph* g, const smgb_edge* e) {
+  if (g->edge_count == g->edge_cap) {
+    uint32_t cap = g->edge_cap ? g->edge_cap * 2 : 64;
+    smgb_edge* n = realloc(g->edges, cap * sizeof *n);
+    if (!n) return SMG_ERROR_OUT_OF_MEMORY;
+    g->edges = n;
+    g->edge_cap = cap;
+  }
+  g->edges[g->edge_count++] = *e;
+  return SMG_OK;
+}
+
+void smgb_graph_free(smgb_graph* g) {
+  free(g->nodes);
+  free(g->edges);
+  memset(g, 0, sizeof *g);
+}
+
+static int edge_cmp(const void* pa, const void* pb) {
+  const smgb_edge* a = pa;
+  const smgb_edge* b = pb;
+  if (a->from != b->from) return a->from < b->from ? -1 : 1;
+  if (a->kind != b->kind) return a->kind < b->kind ? -1 : 1;
+  if (a->to != b->to) return a->to < b->to ? -1 : 1;
+  if (a->a != b->a) return a->a < b->a ? -1 : 1;
+  if (a->b != b->b) return a->b < b->b ? -1 : 1;
+  return 0;
+}
+
+void smgb_graph_sort_edges(smgb_graph* g) {
+  /* keys are unique per edge (from, kind, to, a, b), so qsort's
+   * instability cannot reorder equal elements */
+  if (g->edge_count > 1) qsort(g->edges, g->edge_count, sizeof *g->edges,
+                               edge_cmp);
+}
+
+/* ---- building ------------------------------------------------------------- */
+
+typedef struct build_ctx {
+  smgb_bake* b;
+  uint32_t role;
+  uint32_t* map;      /* cloud frame -> pool frame */
+  uint32_t* clip_of;  /* cloud frame -> pool clip */
+} build_ctx;
+
+static int pair_filter(uint32_t i, uint32_t j, void* user) {
+  const build_ctx* c = user;
+  const smgb_bake* b = c->b;
+  uint32_t ci = c->clip_of[i], cj = c->clip_of[j];
+  uint32_t k = b->opt.window;
+  if (ci == cj) {
+    uint32_t d = i > j ? i - j : j - i;
+    if (d < 2u * k) return 0; /* near the diagonal: same motion */
+  }
+  if (c->role == SMGI_CLIP_UPPER && b->clips[ci].label != b->clips[cj].label)
+    return 0;
+  return 1;
+}
+
+typedef struct cand {
+  smgb_minimum m;
+  uint32_t li, lj;    /* labels */
+  uint32_t region;    /* source region: (clip, local frame / k) */
+} cand;
+
+static int region_cmp(const void* pa, const void* pb) {
+  const cand* a = pa;
+  const cand* b = pb;
+  if (a->region != b->region) return a->region < b->region ? -1 : 1;
+  if (a->lj != b->lj) return a->lj < b->lj ? -1 : 1;
+  if (a->m.dist != b->m.dist) return a->m.dist < b->m.dist ? -1 : 1;
+  if (a->m.i != b->m.i) return a->m.i < b->m.i ? -1 : 1;
+  if (a->m.j != b->m.j) return a->m.j < b->m.j ? -1 : 1;
+  return 0;
+}
+
+static int cand_cmp(const void* pa, const void* pb) {
+  const cand* a = pa;
+  const cand* b = pb;
+  if (a->li != b->li) return a->li < b->li ? -1 : 1;
+  if (a->lj != b->lj) return a->lj < b->lj ? -1 : 1;
+  if (a->m.dist != b->m.dist) return a->m.dist < b->m.dist ? -1 : 1;
+  if (a->m.i != b->m.i) return a->m.i < b->m.i ? -1 : 1;
+  if (a->m.j != b->m.j) return a->m.j < b->m.j ? -1 : 1;
+  return 0;
+}
+
+static int u32_cmp(const void* pa, const void* pb) {
+  uint32_t a = *(const uint32_t*)pa, b = *(const uint32_t*)pb;
+  return a < b ? -1 : a > b ? 1 : 0;
+}
+
+static uint32_t find_node(const smgb_graph* g, uint32_t frame) {
+  uint32_t lo = 0, hi = g->node_count;
+  while (lo < hi) {
+    uint32_t mid = (lo + hi) / 2;
+    if (g->nodes[mid].frame < frame)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < g->node_count && g->nodes[lo].frame == frame ? lo : SMGI_NONE;
+}
+
+smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
+  smgb_graph* g = role == SMGI_CLIP_LOWER ? &b->lower : &b->upper;
+  uint32_t k = b->opt.window, F = 0, c, f, P, n, i;
+  build_ctx ctx;
+  double *xyz = NULL, *w = NULL;
+  uint8_t* valid = NULL;
+  smgb_minimum* mins = NULL;
+  uint32_t min_count = 0, kept = 0;
+  cand* cands = NULL;
+  uint32_t* frames = NULL;
+  smg_result r = SMG_ERROR_OUT_OF_MEMORY;
+  smgb_cloud cloud;
+  smgb_grid_job job;
+
+  memset(&ctx, 0, sizeof ctx);
+  ctx.b = b;
+  ctx.role = role;
+  smgb_graph_free(g);
+  for (c = 0; c < b->clip_count; ++c)
+    if ((b->clips[c].flags & role) && !(b->clips[c].flags & SMGI_CLIP_BLEND))
+      F += b->clips[c].count;
+  if (F == 0) return SMG_OK;
+  P = role == SMGI_CLIP_LOWER ? b->body.lower_point_count
+                              : b->body.upper_segment_count;
+  ctx.map = malloc(F * sizeof *ctx.map);
+  ctx.clip_of = malloc(F * sizeof *ctx.clip_of);
+  xyz = malloc((size_t)F * P * 3u * sizeof *xyz);
+  w = malloc(P * sizeof *w);
+  valid = malloc(F);
+  if (!ctx.map || !ctx.clip_of || !xyz || !w || !valid) goto oom;
+
+  /* point clouds */
+  F = 0;
+  for (c = 0; c < b->clip_count; ++c) {
+    const smgb_pool_clip* pc = &b->clips[c];
+    if (!(pc->flags & role) || (pc->flags & SMGI_CLIP_BLEND)) continue;
+    for (f = 0; f < pc->count; ++f) {
+      uint32_t pf = pc->first + f;
+      double* dst = xyz + (size_t)F * P * 3u;
+      ctx.map[F] = pf;
+      ctx.clip_of[F] = c;
+      /* window + arrival frame inside the clip */
+      valid[F] = f + k < pc->count;
+      if (role == SMGI_CLIP_LOWER) {
+        uint32_t p;
+        for (p = 0; p < P; ++p) {
+          const float* s =
+              b->positions + ((size_t)pf * b->J + b->body.lower_points[p]) * 3u;
+          dst[3 * p] = s[0];
+          dst[3 * p + 1] = s[1];
+          dst[3 * p + 2] = s[2];
+        }
+      } else {
+        smgb_upper_cogs(b, pf, dst);
+      }
+      ++F;
+    }
+  }
+  if (role == SMGI_CLIP_LOWER) {
+    uint32_t p;
+    for (p = 0; p < P; ++p) w[p] = 1.0;
+  } else {
+    smgb_upper_weights(b, w);
+  }
+  cloud.frames = F;
+  cloud.points = P;
+  cloud.xyz = xyz;
+  cloud.weights = w;
+  cloud.valid = valid;
+  memset(&job, 0, sizeof job);
+  job.rows = &cloud;
+  job.cols = &cloud;
+  job.window = k;
+  job.align = 1;
+  job.filter = pair_filter;
+  job.filter_user = &ctx;
+  job.threads = b->opt.threads;
+  job.bake = b;
+  r = smgb_grid_minima(&job, &mins, &min_count);
+  if (r != SMG_OK) {
+    smgb_fail(b, "%s graph: distance grid failed (%s)",
+              role == SMGI_CLIP_LOWER ? "lower" : "upper",
+              smg_result_string(r));
+    goto done;
+  }
+
+  /* percentile per (label, label) pair */
+  cands = malloc((min_count ? min_count : 1) * sizeof *cands);
+  if (!cands) goto oom;
+  for (i = 0; i < min_count; ++i) {
+    cands[i].m = mins[i];
+    cands[i].li = b->clips[ctx.clip_of[mins[i].i]].label;
+    cands[i].lj = b->clips[ctx.clip_of[mins[i].j]].label;
+    {
+      uint32_t c0 = ctx.clip_of[mins[i].i];
+      /* pool frames are contiguous per clip, so the pool frame / k plus
+       * the clip index separates regions of different clips */
+      cands[i].region = (ctx.map[mins[i].i] - b->clips[c0].first) / k +
+                        b->clips[c0].first / k + c0;
+    }
+  }
+  qsort(cands, min_count, sizeof *cands, cand_cmp);
+  for (i = 0; i < min_count;) {
+    uint32_t e = i, keep, t;
+    while (e < min_count && cands[e].li == cands[i].li &&
+           cands[e].lj == cands[i].lj)
+      ++e;
+    keep = (uint32_t)ceil((e - i) * (double)b->opt.transition_percentile /
+                          100.0);
+    if (keep < 1) keep = 1;
+    for (t = i; t < i + keep && t < e; ++t) {
+      if (b->opt.transition_threshold > 0.0f &&
+          cands[t].m.dist > b->opt.transition_threshold && t > i)
+        break;
+      cands[kept++] = cands[t];
+    }
+    i = e;
+  }
+  /* Thin out redundancy: periodic motion has a local minimum against every
+   * cycle of every similar clip. Per source region of k frames and target
+   * label, only the best candidate becomes a transition. */
+  qsort(cands, kept, sizeof *cands, region_cmp);
+  {
+    uint32_t t, nk = 0;
+    for (t = 0; t < kept; ++t) {
+      if (nk > 0 && cands[nk - 1].region == cands[t].region &&
+          cands[nk - 1].lj == cands[t].lj)
+        continue;
+      cands[nk++] = cands[t];
+    }
+    kept = nk;
+  }
+  if (role == SMGI_CLIP_LOWER)
+    b->lower_candidates = kept;
+  else
+    b->upper_candidates = kept;
+
+  /* nodes: sorted unique transition end frames */
+  frames = malloc((2u * kept + 1u) * sizeof *frames);
+  if (!frames) goto oom;
+  n = 0;
+  for (i = 0; i < kept; ++i) {
+    frames[n++] = ctx.map[cands[i].m.i];
+    frames[n++] = ctx.map[cands[i].m.j] + k;
+  }
+  qsort(frames, n, sizeof *frames, u32_cmp);
+  for (i = 0; i < n; ++i) {
+    if (i > 0 && frames[i] == frames[i - 1]) continue;
+    if (smgb_graph_add_node(g, frames[i],
+                            b->clips[b->frames[frames[i]].clip].label,
+                            NULL) != SMG_OK)
+      goto oom;
+  }
+  /* transition edges */
+  for (i = 0; i < kept; ++i) {
+    smgb_edge e;
+    uint32_t pa = ctx.map[cands[i].m.i], pb = ctx.map[cands[i].m.j];
+    memset(&e, 0, sizeof e);
+    e.kind = SMGB_EDGE_TRANSITION;
+    e.a = pa;
+    e.b = pb;
+    e.from = find_node(g, pa);
+    e.to = find_node(g, pb + k);
+    e.cost = cands[i].m.dist;
+    if (role == SMGI_CLIP_LOWER) {
+      memcpy(e.align, cands[i].m.align, sizeof e.align);
+    } else {
+      /* upper clouds live in each frame's ground frame; the root of the
+       * action is irrelevant to splicing, so align ground frames */
+      double ga[3], gb[3], inv[3], zero[3] = {0, 0, 0};
+      const smgi_frame* fa = &b->frames[pa];
+      const smgi_frame* fb = &b->frames[pb];
+      ga[0] = fa->root2d[0]; ga[1] = fa->root2d[1]; ga[2] = fa->root2d[2];
+      gb[0] = fb->root2d[0]; gb[1] = fb->root2d[1]; gb[2] = fb->root2d[2];
+      smgb_g_relative(gb, zero, inv);
+      smgb_g_compose(ga, inv, e.align);
+    }
+    if (smgb_graph_add_edge(g, &e) != SMG_OK) goto oom;
+  }
+  /* original-motion edges between consecutive nodes of a clip */
+  for (i = 0; i + 1 < g->node_count; ++i) {
+    uint32_t fa = g->nodes[i].frame, fb = g->nodes[i + 1].frame;
+    if (b->frames[fa].clip == b->frames[fb].clip) {
+      smgb_edge e;
+      memset(&e, 0, sizeof e);
+      e.kind = SMGB_EDGE_ORIGINAL;
+      e.from = i;
+      e.to = i + 1;
+      e.a = fa;
+      e.b = fb;
+      if (smgb_graph_add_edge(g, &e) != SMG_OK) goto oom;
+    }
+  }
+  smgb_graph_sort_edges(g);
+  r = SMG_OK;
+  goto done;
+oom:
+  smgb_fail(b, "out of memory building the %s graph",
+            role == SMGI_CLIP_LOWER ? "lower" : "upper");
+  r = SMG_ERROR_OUT_OF_MEMORY;
+done:
+  free(ctx.map);
+  free(ctx.clip_of);
+  free(xyz);
+  free(w);
+  free(valid);
+  free(mins);
+  free(cands);
+  free(frames);
+  return r;
+}

@@ -1,0 +1,447 @@
+/*
+ * smg-bake - bake motion-capture clips into a splicing-motion-graph blob.
+ *
+ *   smg-bake -m MANIFEST -o OUT.smg [options]
+ *   smg-bake --lower walk a.bvh --upper punch b.bvh -o OUT.smg [options]
+ *   smg-bake --info FILE.smg
+ *
+ * The manifest format is docs/manifest.md; the stages are docs/baker.md.
+ * Progress goes to stderr (a bar when stderr is a terminal, otherwise one
+ * line per stage); a per-stage timing table is printed at the end.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bake_manifest.h"
+#include "blob.h"
+#include "smg_bake.h"
+#include "smg_format.h"
+
+static void usage(FILE* fp) {
+  fprintf(fp,
+      "usage: smg-bake -m MANIFEST -o OUT.smg [options]\n"
+      "       smg-bake --lower STYLE FILE [--upper ACTION FILE ...] -o OUT.smg\n"
+      "       smg-bake --info FILE.smg\n"
+      "\n"
+      "input:\n"
+      "  -m, --manifest FILE    clip list (docs/manifest.md)\n"
+      "  --lower STYLE FILE     add a locomotion clip (repeatable)\n"
+      "  --upper ACTION FILE    add an upper-body action clip (repeatable)\n"
+      "  --data-dir DIR         folder relative clip paths are read from\n"
+      "  --unit M               file units in metres for --lower/--upper\n"
+      "                         clips (CMU: 0.056444; default: guess)\n"
+      "  --skip-tpose           drop frame 0 of --lower/--upper clips\n"
+      "options:\n"
+      "  -o, --output FILE      blob to write\n"
+      "  --frame-rate HZ        working frame rate (default 30 or the\n"
+      "                         manifest's)\n"
+      "  --no-mirror            do not add mirrored clips\n"
+      "  --window S             transition window, seconds (default 0.333)\n"
+      "  --percentile P         transition candidates kept, percent of local\n"
+      "                         minima per style pair (default 20)\n"
+      "  --threshold M          absolute transition distance cap, metres\n"
+      "  --max-edge S           longest merged edge, seconds (default 1)\n"
+      "  --splice-percentile P  splice candidates kept per action (30)\n"
+      "  --splices-per-region N best splices per 0.5 s region (2)\n"
+      "  --threads N            worker threads (default 2)\n"
+      "  -q, --quiet            no progress output\n"
+      "  -h, --help\n");
+}
+
+/* ---- progress ------------------------------------------------------------- */
+
+typedef struct progress_state {
+  int tty;
+  int quiet;
+  const char* last_stage;
+  int last_pct;
+} progress_state;
+
+static void on_progress(const char* stage, float fraction, void* user) {
+  progress_state* p = user;
+  if (p->quiet) return;
+  if (p->tty) {
+    int pct = (int)(fraction * 100.0f + 0.5f), i, fill;
+    if (stage == p->last_stage && pct == p->last_pct) return;
+    fill = pct * 30 / 100;
+    fprintf(stderr, "\r  %-18s [", stage);
+    for (i = 0; i < 30; ++i) fputc(i < fill ? '#' : ' ', stderr);
+    fprintf(stderr, "] %3d%%", pct);
+    if (fraction >= 1.0f) fputc('\n', stderr);
+    fflush(stderr);
+    p->last_pct = pct;
+    p->last_stage = stage;
+  } else if (stage != p->last_stage) {
+    fprintf(stderr, "smg-bake: %s ...\n", stage);
+    p->last_stage = stage;
+  }
+}
+
+/* ---- --info --------------------------------------------------------------- */
+
+static const char* tag_name(uint32_t tag, char out[5]) {
+  out[0] = (char)(tag & 0xff);
+  out[1] = (char)((tag >> 8) & 0xff);
+  out[2] = (char)((tag >> 16) & 0xff);
+  out[3] = (char)((tag >> 24) & 0xff);
+  out[4] = '\0';
+  return out;
+}
+
+static void graph_summary(const char* title, const smgi_graph_data* g,
+                          const smgi_node* nodes, uint32_t nn,
+                          const smgi_edge* edges, uint32_t ne,
+                          uint32_t nodes_before, uint32_t edges_before,
+                          const smgi_label* labels, uint32_t label_count) {
+  uint32_t e, transitions = 0, changes = 0, frames = 0, l;
+  double arc = 0.0, maxlen = 0.0;
+  for (e = 0; e < ne; ++e) {
+    if (edges[e].flags & SMGI_EDGE_TRANSITION) ++transitions;
+    if (edges[e].flags & SMGI_EDGE_STYLE_CHANGE) ++changes;
+    frames += edges[e].frame_count;
+    arc += edges[e].arc_length;
+    if (edges[e].frame_count > maxlen) maxlen = edges[e].frame_count;
+  }
+  printf("%s graph: %u nodes, %u edges (before simplification: %u nodes, "
+         "%u edges)\n", title, nn, ne, nodes_before, edges_before);
+  printf("  %u transition edges, %u label-changing, %u frames on edges, "
+         "longest edge %.2f s, total arc %.1f m\n", transitions, changes,
+         frames, maxlen / g->info->frame_rate, arc);
+  for (l = 0; l < label_count; ++l) {
+    uint32_t n, cnt = 0;
+    for (n = 0; n < nn; ++n) cnt += nodes[n].label == l;
+    if (cnt) printf("  %-10s %u nodes\n", g->strings + labels[l].name, cnt);
+  }
+}
+
+static int info(const char* path) {
+  FILE* f = fopen(path, "rb");
+  long size;
+  void* data = NULL;
+  smgi_graph_data g;
+  char err[512];
+  smg_result r;
+  const smgi_blob_header* h;
+  const smgi_blob_section* secs;
+  uint32_t i, a;
+  char tn[5];
+  if (!f) {
+    fprintf(stderr, "smg-bake: %s: cannot open\n", path);
+    return 1;
+  }
+  if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 ||
+      fseek(f, 0, SEEK_SET) != 0) {
+    fprintf(stderr, "smg-bake: %s: cannot read\n", path);
+    fclose(f);
+    return 1;
+  }
+  if (posix_memalign(&data, 16, size > 0 ? (size_t)size : 16) != 0) {
+    fclose(f);
+    fprintf(stderr, "smg-bake: out of memory\n");
+    return 1;
+  }
+  if (fread(data, 1, (size_t)size, f) != (size_t)size) {
+    fprintf(stderr, "smg-bake: %s: short read\n", path);
+    fclose(f);
+    free(data);
+    return 1;
+  }
+  fclose(f);
+  r = smgi_blob_read(data, (size_t)size, 0, &g, err, sizeof err);
+  if (r != SMG_OK) {
+    fprintf(stderr, "smg-bake: %s: not a valid graph blob: %s (%s)\n", path,
+            err, smg_result_string(r));
+    free(data);
+    return 1;
+  }
+  h = data;
+  secs = (const smgi_blob_section*)((const char*)data + h->header_size);
+  printf("%s: graph blob version %u, %ld bytes, %.1f Hz, window %.3f s\n",
+         path, h->version, size, g.info->frame_rate,
+         g.info->window_seconds);
+  printf("skeleton: %u joints, pelvis %s, spine base %s, leg length %.3f m\n",
+         g.joint_count, g.strings + g.joints[g.info->pelvis_joint].name,
+         g.strings + g.joints[g.info->spine_base_joint].name,
+         g.info->leg_length);
+  for (i = 0; i < g.joint_count; ++i) {
+    static const char* parts[] = {"root", "lower", "upper"};
+    const smgi_joint* j = &g.joints[i];
+    printf("  %2u %-16s parent %3d  %-5s mirror %-16s mass %.3f\n", i,
+           g.strings + j->name, (int)j->parent,
+           j->body_part < 3 ? parts[j->body_part] : "?",
+           g.strings + g.joints[j->mirror].name, j->mass_ratio);
+  }
+  printf("styles:");
+  for (i = 0; i < g.style_count; ++i)
+    printf(" %s", g.strings + g.styles[i].name);
+  printf("\nactions:");
+  for (i = 0; i < g.action_count; ++i)
+    printf(" %s", g.strings + g.actions[i].name);
+  printf("\nclips: %u (%u frames in the pool)\n", g.clip_count,
+         g.frame_count);
+  for (i = 0; i < g.clip_count; ++i) {
+    const smgi_clip* c = &g.clips[i];
+    uint32_t is_lower = (c->flags & SMGI_CLIP_LOWER) != 0;
+    const smgi_label* lab = is_lower ? g.styles : g.actions;
+    uint32_t lc = is_lower ? g.style_count : g.action_count;
+    printf("  %2u %-28s %5u frames (%6.2f s) %-5s %-8s%s%s\n", i,
+           g.strings + c->name, c->frame_count,
+           c->frame_count / g.info->frame_rate, is_lower ? "lower" : "upper",
+           (c->flags & SMGI_CLIP_BLEND) ? "-"
+           : c->label < lc             ? g.strings + lab[c->label].name
+                                       : "?",
+           (c->flags & SMGI_CLIP_MIRROR) ? " mirrored" : "",
+           (c->flags & SMGI_CLIP_BLEND) ? " blended transitions" : "");
+  }
+  graph_summary("lower", &g, g.lower_nodes, g.lower_node_count, g.lower_edges,
+                g.lower_edge_count, g.info->lower_nodes_before_simplify,
+                g.info->lower_edges_before_simplify, g.styles, g.style_count);
+  graph_summary("upper", &g, g.upper_nodes, g.upper_node_count, g.upper_edges,
+                g.upper_edge_count, g.info->upper_nodes_before_simplify,
+                g.info->upper_edges_before_simplify, g.actions,
+                g.action_count);
+  printf("splice candidates: %u\n", g.splice_count);
+  for (a = 0; a < g.action_count; ++a) {
+    uint32_t cnt = 0;
+    double best = INFINITY, sum = 0.0;
+    for (i = 0; i < g.splice_count; ++i)
+      if (g.splices[i].action == a) {
+        ++cnt;
+        sum += g.splices[i].distance;
+        if (g.splices[i].distance < best) best = g.splices[i].distance;
+      }
+    if (cnt)
+      printf("  %-10s %u candidates, distance best %.3f m, mean %.3f m\n",
+             g.strings + g.actions[a].name, cnt, best, sum / cnt);
+  }
+  printf("sections:\n");
+  for (i = 0; i < h->section_count; ++i)
+    printf("  %s %9llu bytes  %7u records\n", tag_name(secs[i].tag, tn),
+           (unsigned long long)secs[i].size, secs[i].count);
+  free(data);
+  return 0;
+}
+
+/* ---- main ----------------------------------------------------------------- */
+
+static int parse_float(const char* opt, const char* s, float* out) {
+  char* end;
+  double v = strtod(s, &end);
+  if (end == s || *end || !isfinite(v)) {
+    fprintf(stderr, "smg-bake: %s: '%s' is not a number\n", opt, s);
+    return 0;
+  }
+  *out = (float)v;
+  return 1;
+}
+
+static int parse_u32(const char* opt, const char* s, uint32_t* out) {
+  char* end;
+  long v = strtol(s, &end, 10);
+  if (end == s || *end || v < 0 || v > 1000000) {
+    fprintf(stderr, "smg-bake: %s: '%s' is not a count\n", opt, s);
+    return 0;
+  }
+  *out = (uint32_t)v;
+  return 1;
+}
+
+int main(int argc, char** argv) {
+  const char *manifest = NULL, *output = NULL, *data_dir = NULL;
+  smgb_manifest m;
+  smgb_error err;
+  smg_bake_desc desc;
+  smg_bake_result res;
+  smg_bake_clip_desc* descs = NULL;
+  progress_state ps;
+  float unit = 0.0f, frame_rate = 0.0f;
+  uint32_t skip = 0, i;
+  int have_m = 0, code = 1;
+  smg_result r;
+  struct extra {
+    uint32_t role;
+    const char* label;
+    const char* file;
+  } extra[256];
+  uint32_t nextra = 0;
+
+  memset(&desc, 0, sizeof desc);
+  memset(&ps, 0, sizeof ps);
+  desc.struct_size = sizeof desc;
+  desc.options.struct_size = sizeof desc.options;
+  for (i = 1; i < (uint32_t)argc; ++i) {
+    const char* a = argv[i];
+    const char* v = i + 1 < (uint32_t)argc ? argv[i + 1] : NULL;
+#define NEED(n)                                                         \
+  if (i + (n) >= (uint32_t)argc) {                                      \
+    fprintf(stderr, "smg-bake: %s needs %d argument(s)\n", a, (n));     \
+    return 2;                                                           \
+  }
+    if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+      usage(stdout);
+      return 0;
+    } else if (!strcmp(a, "--info")) {
+      NEED(1);
+      return info(v);
+    } else if (!strcmp(a, "-m") || !strcmp(a, "--manifest")) {
+      NEED(1); manifest = v; ++i;
+    } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+      NEED(1); output = v; ++i;
+    } else if (!strcmp(a, "--data-dir")) {
+      NEED(1); data_dir = v; ++i;
+    } else if (!strcmp(a, "--lower") || !strcmp(a, "--upper")) {
+      NEED(2);
+      if (nextra == sizeof extra / sizeof extra[0]) {
+        fprintf(stderr, "smg-bake: too many clips on the command line\n");
+        return 2;
+      }
+      extra[nextra].role = a[2] == 'l' ? SMG_BAKE_ROLE_LOWER
+                                       : SMG_BAKE_ROLE_UPPER;
+      extra[nextra].label = argv[i + 1];
+      extra[nextra].file = argv[i + 2];
+      ++nextra;
+      i += 2;
+    } else if (!strcmp(a, "--unit")) {
+      NEED(1); if (!parse_float(a, v, &unit)) return 2; ++i;
+    } else if (!strcmp(a, "--skip-tpose")) {
+      skip = 1;
+    } else if (!strcmp(a, "--frame-rate")) {
+      NEED(1); if (!parse_float(a, v, &frame_rate)) return 2; ++i;
+    } else if (!strcmp(a, "--no-mirror")) {
+      desc.options.no_mirror = 1;
+    } else if (!strcmp(a, "--window")) {
+      NEED(1);
+      if (!parse_float(a, v, &desc.options.window_seconds)) return 2;
+      ++i;
+    } else if (!strcmp(a, "--percentile")) {
+      NEED(1);
+      if (!parse_float(a, v, &desc.options.transition_percentile)) return 2;
+      ++i;
+    } else if (!strcmp(a, "--threshold")) {
+      NEED(1);
+      if (!parse_float(a, v, &desc.options.transition_threshold)) return 2;
+      ++i;
+    } else if (!strcmp(a, "--max-edge")) {
+      NEED(1);
+      if (!parse_float(a, v, &desc.options.max_edge_seconds)) return 2;
+      ++i;
+    } else if (!strcmp(a, "--splice-percentile")) {
+      NEED(1);
+      if (!parse_float(a, v, &desc.options.splice_percentile)) return 2;
+      ++i;
+    } else if (!strcmp(a, "--splices-per-region")) {
+      NEED(1);
+      if (!parse_u32(a, v, &desc.options.splices_per_region)) return 2;
+      ++i;
+    } else if (!strcmp(a, "--threads")) {
+      NEED(1); if (!parse_u32(a, v, &desc.options.threads)) return 2; ++i;
+    } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+      ps.quiet = 1;
+    } else {
+      fprintf(stderr, "smg-bake: unknown option '%s' (try --help)\n", a);
+      return 2;
+    }
+#undef NEED
+  }
+  if ((!manifest && nextra == 0) || !output) {
+    usage(stderr);
+    return 2;
+  }
+  err.message[0] = '\0';
+  if (manifest) {
+    r = smgb_manifest_load(manifest, data_dir, &m, &err);
+    if (r != SMG_OK) {
+      fprintf(stderr, "smg-bake: %s\n", err.message[0] ? err.message
+                                                       : smg_result_string(r));
+      return 1;
+    }
+  } else {
+    r = smgb_manifest_init(&m, data_dir);
+    if (r != SMG_OK) {
+      fprintf(stderr, "smg-bake: %s\n", smg_result_string(r));
+      return 1;
+    }
+  }
+  have_m = 1;
+  for (i = 0; i < nextra; ++i) {
+    smgb_manifest_clip c;
+    memset(&c, 0, sizeof c);
+    c.role = extra[i].role;
+    snprintf(c.label, sizeof c.label, "%s", extra[i].label);
+    c.unit_scale = unit;
+    c.skip_first_frame = skip;
+    c.mirror = SMG_BAKE_MIRROR_DEFAULT;
+    r = smgb_manifest_add(&m, &c, extra[i].file, 1, &err);
+    if (r != SMG_OK) {
+      fprintf(stderr, "smg-bake: %s\n", err.message[0] ? err.message
+                                                       : smg_result_string(r));
+      goto out;
+    }
+  }
+  descs = calloc(m.clip_count ? m.clip_count : 1, sizeof *descs);
+  if (!descs) {
+    fprintf(stderr, "smg-bake: out of memory\n");
+    goto out;
+  }
+  if ((r = smgb_manifest_descs(&m, descs, m.clip_count)) != SMG_OK) {
+    fprintf(stderr, "smg-bake: %s\n", smg_result_string(r));
+    goto out;
+  }
+  desc.clips = descs;
+  desc.clip_count = m.clip_count;
+  desc.options.frame_rate = frame_rate > 0.0f ? frame_rate : m.frame_rate;
+  ps.tty = isatty(2);
+  ps.last_pct = -1;
+  desc.progress = on_progress;
+  desc.progress_user = &ps;
+  memset(&res, 0, sizeof res);
+  res.struct_size = sizeof res;
+  r = smg_bake_run(&desc, &res);
+  if (r != SMG_OK) {
+    if (ps.tty && !ps.quiet) fputc('\n', stderr);
+    fprintf(stderr, "smg-bake: %s%s%s\n", manifest ? manifest : "",
+            manifest ? ": " : "", res.error);
+    goto out;
+  }
+  {
+    char werr[512];
+    if (smg_bake_write_file(&res, output, werr, sizeof werr) != SMG_OK) {
+      fprintf(stderr, "smg-bake: %s\n", werr);
+      smg_bake_result_free(&res);
+      goto out;
+    }
+  }
+  if (!ps.quiet) {
+    const smg_bake_stats* s = &res.stats;
+    fprintf(stderr, "\n  %-22s %10s\n", "stage", "seconds");
+    for (i = 0; i < res.stage_count; ++i)
+      fprintf(stderr, "  %-22s %10.3f\n", res.stages[i].name,
+              res.stages[i].seconds);
+    fprintf(stderr, "  %-22s %10.3f\n", "total", res.total_seconds);
+    fprintf(stderr,
+            "\n  clips %u, frames %u + %u blended\n"
+            "  lower graph: %u nodes / %u edges before simplification, "
+            "%u / %u after (%u transition candidates)\n"
+            "  upper graph: %u nodes / %u edges before simplification, "
+            "%u / %u after (%u transition candidates)\n"
+            "  splice candidates: %u, coverage %.1f %% of locomotion frames "
+            "within 1 s for every action (longest wait %.2f s)\n"
+            "  wrote %s (%zu bytes)\n",
+            s->clip_count, s->source_frames, s->blend_frames,
+            s->lower_nodes_before, s->lower_edges_before, s->lower_nodes,
+            s->lower_edges, s->lower_candidates, s->upper_nodes_before,
+            s->upper_edges_before, s->upper_nodes, s->upper_edges,
+            s->upper_candidates, s->splice_count,
+            100.0 * s->splice_coverage, s->splice_max_gap, output,
+            res.blob_size);
+  }
+  smg_bake_result_free(&res);
+  code = 0;
+out:
+  free(descs);
+  if (have_m) smgb_manifest_free(&m);
+  return code;
+}
