@@ -36,10 +36,7 @@ GODOT_TEST_PROJ := $(GODOT_BUILD)/test-project
 GODOT_TEST_LOG := $(GODOT_BUILD)/test-godot.log
 GODOT_DEMO := $(GODOT_DIR)/demo
 
-# (enabled once the test script exists)
-ifneq ($(wildcard $(GODOT_DIR)/test/test_smg.gd),)
 TEST_TARGETS += test-godot
-endif
 
 .PHONY: godot-provision godot-ext test-godot godot-demo godot-screenshot
 

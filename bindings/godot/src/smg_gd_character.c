@@ -162,7 +162,7 @@ static bool ensure_character(smg_gd_character *self) {
 		r = c->kind == KIND_TRANSITION ? smg_character_add_transition(self->ch, c->distance, c->value, &c->smg_id)
 		                               : smg_character_add_splice(self->ch, c->distance, c->value, &c->smg_id);
 		if (r != SMG_OK) {
-			GD_ERR("SmgCharacter: constraint %lld dropped after graph change: %s", (long long)c->id,
+			GD_WARN("SmgCharacter: constraint %lld dropped after the graph changed: %s", (long long)c->id,
 				smg_result_string(r));
 			self->cons[i--] = self->cons[--self->con_count];
 		}
