@@ -1,0 +1,34 @@
+# Runtime part (issue 4): the smg-synth CLI (runtime only: libsmg.a, no
+# baker, no assimp) and the runtime benchmark.
+#
+#   build/smg-synth       offline driver: blob + path file -> BVH (+ CSV)
+#   make bench-runtime    step+pose cost per character vs plain clip
+#                         playback, edit-frame p99, blob load, memory,
+#                         characters per 60 Hz frame (part of `make bench`)
+#   make synth-example    smg-synth on the synthetic default blob
+
+SMG_SYNTH := $(BUILD)/smg-synth
+BENCH_RUNTIME := $(BUILD)/bench/bench_runtime
+
+ALL_TARGETS += $(SMG_SYNTH)
+BENCH_TARGETS += bench-runtime
+
+$(SMG_SYNTH): tools/smg_synth.c $(LIBSMG_A) include/smg.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_TOOL) $< -o $@ $(LIBSMG_A) $(LDLIBS_M)
+
+# The benchmark builds the fixture graph in-process (tests/fixture_graph.h)
+# and also measures build/default.smg when it exists.
+$(BENCH_RUNTIME): bench/bench_runtime.c $(LIBSMG_A) $(LIB_HDR) tests/fixture_graph.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_TOOL) -O2 -Itests -DSMG_BUILD_DIR='"$(abspath $(BUILD))"' $< -o $@ $(LIBSMG_A) -lpthread $(LDLIBS_M)
+
+.PHONY: bench-runtime synth-example
+bench-runtime: $(BENCH_RUNTIME)
+	$(BENCH_RUNTIME)
+
+synth-example: $(SMG_SYNTH)
+	@mkdir -p $(BUILD)/synth
+	printf '0 0\n0 4\n3 7\n8 7\n' > $(BUILD)/synth/example-path.txt
+	$(SMG_SYNTH) -g $(BUILD)/default.smg -p $(BUILD)/synth/example-path.txt \
+	  --seconds 10 --fps 30 --csv $(BUILD)/synth/example.csv -o $(BUILD)/synth/example.bvh
