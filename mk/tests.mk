@@ -4,6 +4,13 @@
 # programs under valgrind (any error or leak fails). Tests that need the CMU
 # clips read them from $(SMG_SHARED) and skip with a message when absent.
 # Under valgrind SMG_TEST_QUICK=1 is set: heavy tests shrink their data.
+#
+# ABI and packaging checks (tests/abi/):
+#   test-symbols   libsmg.so exports only smg_* and every smg.h function
+#   test-header    smg.h compiles as strict C99 and C++11 and links from C++
+#   test-install   make install into a temp prefix, consumer via pkg-config
+# Not part of `make test` (slower, rebuilds everything):
+#   make sanitize  unit tests built and run with -fsanitize=address,undefined
 
 SMG_SHARED ?= $(abspath ../shared)
 TEST_SRC := $(sort $(wildcard tests/*/test_*.c))
@@ -12,14 +19,14 @@ TEST_LIBS := $(LIBSMG_A) $(LIBSMG_BAKE_A)
 TEST_LDLIBS := -lcmocka $(BAKE_LDLIBS) -lpthread -lm
 VALGRIND := valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect,possible --show-leak-kinds=definite,indirect,possible -q
 
-TEST_TARGETS += test-unit test-valgrind
+TEST_TARGETS += test-unit test-valgrind test-symbols test-header test-install
 ALL_TARGETS +=
 
 $(BUILD)/tests/%: tests/%.c $(TEST_LIBS) $(LIB_HDR) $(wildcard tests/*.h tests/*/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_TOOL) -Itests -DSMG_SHARED_DIR='"$(SMG_SHARED)"' -DSMG_BUILD_DIR='"$(abspath $(BUILD))"' $< -o $@ $(TEST_LIBS) $(TEST_LDLIBS)
 
-.PHONY: test-unit test-valgrind tests-build
+.PHONY: test-unit test-valgrind tests-build test-symbols test-header test-install sanitize
 tests-build: $(TEST_BIN)
 
 test-unit: $(TEST_BIN)
@@ -27,3 +34,22 @@ test-unit: $(TEST_BIN)
 
 test-valgrind: $(TEST_BIN)
 	@set -e; for t in $(TEST_BIN); do echo "== valgrind $$t"; SMG_SHARED=$(SMG_SHARED) SMG_TEST_QUICK=1 $(VALGRIND) $$t; done
+
+test-symbols: $(LIBSMG_SO)
+	@sh tests/abi/check_symbols.sh $(LIBSMG_SO) include/smg.h
+
+HEADER_WARN := -Wall -Wextra -Wpedantic -Werror
+test-header: $(LIBSMG_A)
+	@mkdir -p $(BUILD)/tests/build
+	$(CC) -std=c99 $(HEADER_WARN) -Iinclude tests/abi/header_check.c -o $(BUILD)/tests/abi/header_c $(LIBSMG_A) -lm
+	$(CXX) -std=c++11 $(HEADER_WARN) -Iinclude -x c++ tests/abi/header_check.c -x none -o $(BUILD)/tests/abi/header_cxx $(LIBSMG_A) -lm
+	@$(BUILD)/tests/abi/header_c
+	@$(BUILD)/tests/abi/header_cxx
+
+test-install: $(LIBSMG_A) $(LIBSMG_SO)
+	@sh tests/abi/check_install.sh "$(MAKE)" "$(BUILD)" "$(CC)"
+
+# Unit tests under AddressSanitizer + UBSan, in their own build tree.
+SANITIZE_FLAGS := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+sanitize:
+	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize OPT="$(SANITIZE_FLAGS)" test-unit
