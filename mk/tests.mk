@@ -40,7 +40,7 @@ test-symbols: $(LIBSMG_SO)
 
 HEADER_WARN := -Wall -Wextra -Wpedantic -Werror
 test-header: $(LIBSMG_A)
-	@mkdir -p $(BUILD)/tests/build
+	@mkdir -p $(BUILD)/tests/abi
 	$(CC) -std=c99 $(HEADER_WARN) -Iinclude tests/abi/header_check.c -o $(BUILD)/tests/abi/header_c $(LIBSMG_A) -lm
 	$(CXX) -std=c++11 $(HEADER_WARN) -Iinclude -x c++ tests/abi/header_check.c -x none -o $(BUILD)/tests/abi/header_cxx $(LIBSMG_A) -lm
 	@$(BUILD)/tests/abi/header_c
