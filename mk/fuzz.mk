@@ -44,3 +44,6 @@ fuzz-%: $(BUILD)/libfuzzer/fuzz_% $(BUILD)/fuzz/fuzz_%
 	@mkdir -p $(BUILD)/libfuzzer/corpus-$*
 	$(BUILD)/fuzz/fuzz_$* --write-seed $(BUILD)/libfuzzer/corpus-$*/seed
 	$(BUILD)/libfuzzer/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 $(FUZZ_ARGS) $(BUILD)/libfuzzer/corpus-$*
+
+# keep the libFuzzer binary between runs (it is an intermediate of fuzz-%)
+.PRECIOUS: $(BUILD)/libfuzzer/fuzz_% $(BUILD)/fuzz/%

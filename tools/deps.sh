@@ -1,0 +1,56 @@
+#!/bin/sh
+# tools/deps.sh - install every Debian package libsmg needs (`make deps`).
+#
+# As root: apt-get update + install whatever is missing (quiet, idempotent:
+# nothing is downloaded when everything is already there). Not root: print
+# the exact command to run and exit 1.
+#
+# THE package list: add a line here when a part of the project needs a new
+# package (and say which part, after the #).
+PACKAGES='
+build-essential   # cc, make, ar: everything
+pkg-config        # smg.pc and make test-install
+ca-certificates   # fetching over https (CI bootstrap)
+libcglm-dev       # C math used by runtime and baker (header-only)
+libassimp-dev     # baker: glTF/FBX import (offline only, never the runtime)
+libcmocka-dev     # unit tests
+valgrind          # make test-valgrind, fuzz smoke under valgrind
+libsdl2-dev       # demo: window, input, GL context
+libglm-dev        # demo (C++ side)
+libimgui-dev      # demo UI
+libstb-dev        # demo/eval: image writing
+libgl-dev         # demo: OpenGL headers
+libgl1-mesa-dri   # software OpenGL (llvmpipe) for headless demo tests
+libglx-mesa0      # GLX for the above
+xvfb              # headless X server for demo/Godot tests
+xauth             # xvfb-run
+mmdebstrap        # building a bare Debian root to test .ci/run
+'
+
+set -eu
+
+list=$(printf '%s\n' "$PACKAGES" | sed 's/#.*//' | tr -s ' \t' '\n' | grep -v '^$')
+missing=""
+for p in $list; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [ "$status" = "install ok installed" ] || missing="$missing $p"
+done
+
+if [ -z "$missing" ]; then
+  echo "deps: all $(printf '%s\n' $list | wc -l) packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" != 0 ]; then
+  echo "deps: missing:$missing" >&2
+  echo "deps: run this as root (or 'sudo make deps'):" >&2
+  echo "  sudo apt-get install -y --no-install-recommends$missing" >&2
+  exit 1
+fi
+
+echo "deps: installing:$missing"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+# shellcheck disable=SC2086
+apt-get install -y -qq --no-install-recommends $missing >/dev/null
+echo "deps: done"
