@@ -15,7 +15,8 @@
 SMG_SHARED ?= $(abspath ../shared)
 TEST_SRC := $(sort $(wildcard tests/*/test_*.c))
 TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
-TEST_LIBS := $(LIBSMG_A) $(LIBSMG_BAKE_A)
+# the baker library uses the blob writer in libsmg.a: list it first
+TEST_LIBS := $(LIBSMG_BAKE_A) $(LIBSMG_A)
 TEST_LDLIBS := -lcmocka $(BAKE_LDLIBS) -lpthread -lm
 VALGRIND := valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect,possible --show-leak-kinds=definite,indirect,possible -q
 

@@ -182,7 +182,9 @@ static void row_minima(worker* w, uint32_t r, const float* prev,
     if (job->filter && !job->filter(r, j, job->filter_user)) continue;
     {
       smgb_minimum m;
-      double D = cell_distance(w, r, j, sdot[j], scrs[j], syy[j], m.align);
+      double D;
+      memset(&m, 0, sizeof m); /* padding too: results are compared */
+      D = cell_distance(w, r, j, sdot[j], scrs[j], syy[j], m.align);
       m.i = r;
       m.j = j;
       m.dist = (float)sqrt(D / w->W);
@@ -191,6 +193,29 @@ static void row_minima(worker* w, uint32_t r, const float* prev,
         return;
       }
     }
+  }
+}
+
+/* Running sums restart from a direct diagonal sum at every multiple of
+ * SMGB_GRID_BLOCK rows. Row i's values therefore depend only on i (not on
+ * which worker computed it or where it started), so the output is the same
+ * bit for bit for any thread count, and float drift is bounded. */
+#define SMGB_GRID_BLOCK 32u
+
+static void direct_sums(const double* cbuf, uint32_t ring, uint32_t FA,
+                        uint32_t FB, uint32_t k, uint32_t i, double* S) {
+  uint32_t j, t;
+  for (j = 0; j < FB; ++j) {
+    double d = 0, cr = 0, y = 0;
+    for (t = 0; t < k && j + t < FB && i + t < FA; ++t) {
+      const double* c = cbuf + (size_t)((i + t) % ring) * 3u * FB;
+      d += c[j + t];
+      cr += c[FB + j + t];
+      y += c[2u * FB + j + t];
+    }
+    S[j] = d;
+    S[FB + j] = cr;
+    S[2u * FB + j] = y;
   }
 }
 
@@ -206,15 +231,15 @@ static void* worker_run(void* arg) {
   double* Sprev = malloc((size_t)3u * FB * sizeof *Sprev);
   float* drow = malloc((size_t)3u * FB * sizeof *drow);
   float *dprev, *dcur, *dnext;
-  double* zero = calloc((size_t)3u * FB, sizeof *zero);
-  if (!cbuf || !S || !Sprev || !drow || !zero) {
+  if (!cbuf || !S || !Sprev || !drow) {
     w->failed = 1;
     goto done;
   }
 #define CROW(a) (cbuf + (size_t)((a) % ring) * 3u * FB)
-  lo = w->r0 > 0 ? w->r0 - 1 : 0;
+  /* start one block early so that the halo row r0-1 is computed exactly
+   * as its own worker computes it */
+  lo = w->r0 >= SMGB_GRID_BLOCK ? w->r0 - SMGB_GRID_BLOCK : 0;
   hi = w->r1 < FA ? w->r1 : FA - 1; /* inclusive */
-  /* C rows lo .. lo+k-1 */
   for (t = 0; t < k; ++t) {
     double* c = CROW(lo + t);
     if (lo + t < FA)
@@ -222,43 +247,38 @@ static void* worker_run(void* arg) {
     else
       memset(c, 0, 3u * FB * sizeof *c);
   }
-  for (j = 0; j < FB; ++j) {
-    double d = 0, cr = 0, y = 0;
-    for (t = 0; t < k && j + t < FB; ++t) {
-      const double* c = CROW(lo + t);
-      d += c[j + t];
-      cr += c[FB + j + t];
-      y += c[2u * FB + j + t];
-    }
-    S[j] = d;
-    S[FB + j] = cr;
-    S[2u * FB + j] = y;
-  }
   dprev = NULL;
   dcur = drow;
   dnext = drow + FB;
   for (i = lo; i <= hi; ++i) {
     float* dst;
     if (i > lo) {
-      /* advance S from row i-1 to row i */
-      const double* cold = CROW(i - 1);
       double* cnew = CROW(i + k - 1);
+      double* tmp;
       if (i + k - 1 < FA)
         cross_row(A, B, i + k - 1, cnew, cnew + FB, cnew + 2u * FB);
       else
         memset(cnew, 0, 3u * FB * sizeof *cnew);
-      memcpy(Sprev, S, 3u * FB * sizeof *S);
+      tmp = Sprev;
+      Sprev = S;
+      S = tmp;
+    }
+    if (i == lo || i % SMGB_GRID_BLOCK == 0) {
+      direct_sums(cbuf, ring, FA, FB, k, i, S);
+    } else {
+      /* S_i(j) = S_{i-1}(j-1) - C(i-1, j-1) + C(i+k-1, j+k-1) */
+      const double* cold = CROW(i - 1);
+      const double* cnew = CROW(i + k - 1);
       for (t = 0; t < 3; ++t) {
         double* s = S + (size_t)t * FB;
         const double* sp = Sprev + (size_t)t * FB;
         const double* co = cold + (size_t)t * FB;
         const double* cn = cnew + (size_t)t * FB;
-        s[0] = 0.0;
-        {
-          uint32_t u;
-          for (u = 0; u < k && u < FB; ++u)
-            if (i + u < FA) s[0] += CROW(i + u)[(size_t)t * FB + u];
-        }
+        double s0 = 0.0;
+        uint32_t u;
+        for (u = 0; u < k && u < FB && i + u < FA; ++u)
+          s0 += CROW(i + u)[(size_t)t * FB + u];
+        s[0] = s0;
         for (j = 1; j < FB; ++j) {
           double v = sp[j - 1] - co[j - 1];
           if (j + k - 1 < FB) v += cn[j + k - 1];
@@ -266,19 +286,16 @@ static void* worker_run(void* arg) {
         }
       }
     }
-    /* distance row i */
     dst = i == lo ? dcur : dnext;
     for (j = 0; j < FB; ++j)
       dst[j] = (float)cell_distance(w, i, j, S[j], S[FB + j], S[2u * FB + j],
                                     NULL);
     if (i > lo) {
-      /* row i-1 is complete: its neighbours are dprev and dnext */
       uint32_t r = i - 1;
       if (r >= w->r0 && r < w->r1)
-        row_minima(w, r, dprev, dcur, dnext, Sprev, Sprev + FB,
-                   Sprev + 2u * FB);
+        row_minima(w, r, r > lo ? dprev : NULL, dcur, dnext, Sprev,
+                   Sprev + FB, Sprev + 2u * FB);
       if (w->failed) goto done;
-      /* rotate the three rows */
       {
         float* old = dprev ? dprev : drow + 2u * FB;
         dprev = dcur;
@@ -289,16 +306,15 @@ static void* worker_run(void* arg) {
     if (w->report_progress && job->bake && (i & 15u) == 0)
       smgb_progress(job->bake, (float)(i - lo + 1) / (float)(hi - lo + 1));
   }
-  /* the last row has no successor */
   if (hi >= w->r0 && hi < w->r1 && hi == FA - 1)
-    row_minima(w, hi, dprev, dcur, NULL, S, S + FB, S + 2u * FB);
+    row_minima(w, hi, hi > lo ? dprev : NULL, dcur, NULL, S, S + FB,
+               S + 2u * FB);
 #undef CROW
 done:
   free(cbuf);
   free(S);
   free(Sprev);
   free(drow);
-  free(zero);
   return NULL;
 }
 
@@ -337,8 +353,11 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
     ws[t].A = &sa;
     ws[t].B = &sb;
     ws[t].W = wsum * job->window;
-    ws[t].r0 = (uint32_t)((uint64_t)A->frames * t / nt);
-    ws[t].r1 = (uint32_t)((uint64_t)A->frames * (t + 1) / nt);
+    /* split at block boundaries (see SMGB_GRID_BLOCK) */
+    uint32_t blocks = (A->frames + SMGB_GRID_BLOCK - 1) / SMGB_GRID_BLOCK;
+    ws[t].r0 = (uint32_t)((uint64_t)blocks * t / nt) * SMGB_GRID_BLOCK;
+    ws[t].r1 = (uint32_t)((uint64_t)blocks * (t + 1) / nt) * SMGB_GRID_BLOCK;
+    if (ws[t].r1 > A->frames) ws[t].r1 = A->frames;
     ws[t].report_progress = t == 0;
   }
   if (!(ws[0].W > 0.0)) {
