@@ -415,8 +415,10 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
     } else {
       ph = frac(t / g.T);
       path_at(&g, g.v * t, base, &heading);
-      /* Weight over the stance foot: left at mid left stance (D/2). */
-      sway = g.sway * cos(2.0 * SMGB_PI * (ph - 0.5 * g.D));
+      /* Weight toward the stance foot (left during the first half of the
+       * cycle); zero at whole cycles so the root is exactly on the path
+       * there, which tests use as ground truth. */
+      sway = g.sway * sin(2.0 * SMGB_PI * ph);
       H = g.h0 + g.bob_sign * g.bob * cos(4.0 * SMGB_PI * (ph - 0.5 * g.D));
       yaw_osc = -g.yaw_osc * cos(2.0 * SMGB_PI * ph);
       roll = -g.roll * cos(2.0 * SMGB_PI * (ph - 0.5 * g.D));

@@ -19,7 +19,8 @@
  * fixed exactly (flat, heading of the path at its footprint), a swinging foot
  * follows a minimum-jerk arc to the next footprint, and each leg is solved
  * analytically (two-bone IK, knee forward), so FK of the clip reproduces the
- * planned feet to float precision. Standing actions keep both feet planted
+ * planned feet to float precision. At whole stride periods the root lies
+ * exactly on the path (the lateral sway is zero there). Standing actions keep both feet planted
  * while the pelvis shifts its weight and the arms act.
  *
  * Generation is deterministic and takes milliseconds.
