@@ -64,6 +64,10 @@ static void test_polyline_distance(void** state) {
   /* Beyond the start: distance to the end point. */
   NEAR(em_polyline_distance(p, 3, 0.0, -3.0, &arc), 3.0, 1e-12);
   NEAR(arc, 0.0, 1e-12);
+  /* Windowed: only arc lengths 11..15 (the horizontal leg) count. */
+  NEAR(em_polyline_distance_window(p, 3, 1.0, 4.0, 11.0, 15.0, &arc),
+       hypot(0.0, 6.0), 1e-12);
+  NEAR(arc, 11.0, 1e-12);
   em_polyline_point_at(p, 3, 12.5, &x, &z);
   NEAR(x, 2.5, 1e-12);
   NEAR(z, 10.0, 1e-12);

@@ -9,32 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_manifest.h"
 #include "eval_ctx.h"
 #include "smg_bake.h"
-
-#define CMU_UNIT 0.056444f
-
-typedef struct cmu_clip {
-  const char* id;
-  uint32_t role;
-  const char* label;
-} cmu_clip;
-
-/* The paper's set: a walk going forward and backward, a run, boxing. */
-static const cmu_clip k_paper_set[] = {
-    {"09_12", SMG_BAKE_ROLE_LOWER, "walk"},
-    {"09_01", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_02", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_03", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_04", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_05", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_06", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_07", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_08", SMG_BAKE_ROLE_LOWER, "run"},
-    {"09_09", SMG_BAKE_ROLE_LOWER, "run"},
-    {"02_05", SMG_BAKE_ROLE_UPPER, "punch"},
-};
-#define PAPER_SET_COUNT (sizeof(k_paper_set) / sizeof(k_paper_set[0]))
 
 /* Frames of a BVH file (the "Frames:" line), minus the CMU T-pose frame;
  * 0 when unreadable. */
@@ -55,35 +32,31 @@ static void progress_quiet(const char* stage, float fraction, void* user) {
   (void)user;
 }
 
-/* Bakes the paper set with the given thread count. */
-static smg_result bake_paper_set(eval_ctx* ctx, uint32_t threads,
-                                 smg_bake_result* res) {
-  smg_bake_clip_desc clips[PAPER_SET_COUNT];
-  char paths[PAPER_SET_COUNT][1200];
+/* Bakes the manifest's clips with the given thread count. */
+static smg_result bake_manifest(const smgb_manifest* m, uint32_t threads,
+                                smg_bake_result* res) {
+  smg_bake_clip_desc* clips;
   smg_bake_desc desc;
-  size_t i;
-  memset(clips, 0, sizeof(clips));
-  for (i = 0; i < PAPER_SET_COUNT; ++i) {
-    eval_cmu_clip(ctx, k_paper_set[i].id, paths[i], sizeof(paths[i]));
-    clips[i].struct_size = sizeof(clips[i]);
-    clips[i].role = k_paper_set[i].role;
-    clips[i].path = paths[i];
-    clips[i].label = k_paper_set[i].label;
-    clips[i].name = k_paper_set[i].id;
-    clips[i].mirror = SMG_BAKE_MIRROR_YES;
-    clips[i].skip_first_frame = 1;
-    clips[i].unit_scale = CMU_UNIT;
-  }
-  memset(&desc, 0, sizeof(desc));
-  desc.struct_size = sizeof(desc);
-  desc.clip_count = (uint32_t)PAPER_SET_COUNT;
-  desc.clips = clips;
-  desc.options.struct_size = sizeof(desc.options);
-  desc.options.threads = threads;
-  desc.progress = progress_quiet;
+  smg_result r;
   memset(res, 0, sizeof(*res));
   res->struct_size = sizeof(*res);
-  return smg_bake_run(&desc, res);
+  clips = (smg_bake_clip_desc*)calloc(m->clip_count ? m->clip_count : 1,
+                                      sizeof(*clips));
+  if (!clips) return SMG_ERROR_OUT_OF_MEMORY;
+  r = smgb_manifest_descs(m, clips, m->clip_count);
+  if (r == SMG_OK) {
+    memset(&desc, 0, sizeof(desc));
+    desc.struct_size = sizeof(desc);
+    desc.clip_count = m->clip_count;
+    desc.clips = clips;
+    desc.options.struct_size = sizeof(desc.options);
+    desc.options.frame_rate = m->frame_rate;
+    desc.options.threads = threads;
+    desc.progress = progress_quiet;
+    r = smg_bake_run(&desc, res);
+  }
+  free(clips);
+  return r;
 }
 
 /* Seconds of the stages whose name contains `key` (NAN when none). */
@@ -108,7 +81,8 @@ static const char* fmt_seconds(char* buf, size_t size, double s) {
   return buf;
 }
 
-static void write_report(eval_ctx* ctx, const smg_bake_result* r1,
+static void write_report(eval_ctx* ctx, const smgb_manifest* man,
+                         const smg_bake_result* r1,
                          const smg_bake_result* r2, uint32_t threads2) {
   static const struct {
     const char* row;
@@ -125,22 +99,32 @@ static void write_report(eval_ctx* ctx, const smg_bake_result* r1,
   char a[64], b[64];
   uint32_t walk = 0, run = 0, punch = 0, i;
   size_t k;
-  char path[1200];
 
-  for (k = 0; k < PAPER_SET_COUNT; ++k) {
-    uint32_t n;
-    eval_cmu_clip(ctx, k_paper_set[k].id, path, sizeof(path));
-    n = bvh_motion_frames(path);
-    if (!strcmp(k_paper_set[k].label, "walk")) walk += n;
-    else if (!strcmp(k_paper_set[k].label, "run")) run += n;
-    else punch += n;
-  }
   eval_md(ctx,
           "## 1. Preprocessing (paper Section IV, first table)\n\n"
-          "Input: CMU 09_12 (walk forward/backward, label `walk`), 09_01-"
-          "09_09 (runs, `run`), 02_05 (punch/strike standing in for boxing, "
-          "upper body, `punch`), every clip mirrored, baked in-process with "
-          "`smg_bake_run()` at the default options (30 Hz working rate).\n\n"
+          "Input: the clips of `%s` (the same set `smg-bake` benchmarks), "
+          "baked in-process with `smg_bake_run()` at the manifest's "
+          "options (working rate %.0f Hz; mirroring as listed):\n\n"
+          "| Clip | graph | label | frames used (120 Hz) | mirrored |\n"
+          "|---|---|---|---:|---|\n",
+          ctx->manifest, man->frame_rate > 0 ? man->frame_rate : 30.0);
+  for (i = 0; i < man->clip_count; ++i) {
+    const smgb_manifest_clip* c = &man->clips[i];
+    const char* base = strrchr(c->path, '/');
+    uint32_t n = c->frame_count;
+    if (!n) {
+      n = bvh_motion_frames(c->path);
+      n = n > c->first_frame ? n - c->first_frame : 0;
+    }
+    if (c->role == SMG_BAKE_ROLE_UPPER) punch += n;
+    else if (!strcmp(c->label, "walk")) walk += n;
+    else run += n;
+    eval_md(ctx, "| %s | %s | `%s` | %u | %s |\n", base ? base + 1 : c->path,
+            c->role == SMG_BAKE_ROLE_UPPER ? "upper" : "lower", c->label, n,
+            c->mirror == SMG_BAKE_MIRROR_NO ? "no" : "yes");
+  }
+  eval_md(ctx,
+          "\n"
           "| Data (frames at 120 Hz, T-pose excluded) | paper | libsmg |\n"
           "|---|---:|---:|\n"
           "| Walk | 1506 | %u |\n| Run | 761 | %u |\n"
@@ -150,8 +134,10 @@ static void write_report(eval_ctx* ctx, const smg_bake_result* r1,
           walk, run, punch, st->source_frames, st->blend_frames);
 
   eval_md(ctx,
-          "Stage times, one worker thread (`options.threads = 1`, the "
-          "paper's single core):\n\n"
+          "Stage times, one worker thread (`options.threads = 1`, like the "
+          "paper's single core). The paper names four stages; the baker's "
+          "own stage list (import and chain simplification are separate "
+          "there) follows below:\n\n"
           "| Stage | paper (Core 2 Duo 2.4 GHz, 1 core) | libsmg, 1 thread "
           "| speed-up |\n|---|---:|---:|---:|\n");
   for (k = 0; k < sizeof(rows) / sizeof(rows[0]); ++k) {
@@ -209,6 +195,8 @@ static void write_report(eval_ctx* ctx, const smg_bake_result* r1,
 void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size) {
   smg_bake_result r1, r2;
   smg_result rc;
+  smgb_manifest man;
+  smgb_error merr;
   int have_r2 = 0;
 
   *out_blob = NULL;
@@ -219,8 +207,17 @@ void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size) {
     if (ctx->check) printf("SKIP CMU bake: clips not at %s\n", ctx->cmu_dir);
     return;
   }
+  memset(&man, 0, sizeof(man));
+  memset(&merr, 0, sizeof(merr));
+  rc = smgb_manifest_load(ctx->manifest, ctx->cmu_dir, &man, &merr);
+  if (rc != SMG_OK) {
+    eval_md(ctx, "## 1. Preprocessing\n\nNot produced: the manifest `%s` "
+                 "could not be read: %s\n\n", ctx->manifest, merr.message);
+    eval_check(ctx, 0, "manifest %s: %s", ctx->manifest, merr.message);
+    return;
+  }
   eval_log("baking the paper-size CMU set (1 thread)...");
-  rc = bake_paper_set(ctx, 1, &r1);
+  rc = bake_manifest(&man, 1, &r1);
   if (rc != SMG_OK) {
     eval_log("bake failed: %s: %s", smg_result_string(rc), r1.error);
     eval_md(ctx, "## 1. Preprocessing\n\nThe bake FAILED in this run: "
@@ -228,6 +225,7 @@ void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size) {
     eval_check(ctx, 0, "CMU paper-set bake: %s: %s", smg_result_string(rc),
                r1.error);
     smg_bake_result_free(&r1);
+    smgb_manifest_free(&man);
     return;
   }
   eval_log("bake done in %.2f s (%u lower / %u upper nodes)",
@@ -242,11 +240,18 @@ void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size) {
                r1.stats.splice_count, r1.stats.style_count);
   } else {
     eval_log("baking again with the default thread count...");
-    rc = bake_paper_set(ctx, 0, &r2);
+    rc = bake_manifest(&man, 0, &r2);
     have_r2 = rc == SMG_OK;
     if (!have_r2) smg_bake_result_free(&r2);
-    write_report(ctx, &r1, have_r2 ? &r2 : NULL, 2);
+    write_report(ctx, &man, &r1, have_r2 ? &r2 : NULL, 2);
   }
+  if (ctx->keep_dir) {
+    char path[1200], why[256];
+    snprintf(path, sizeof(path), "%s/cmu-paper.smg", ctx->keep_dir);
+    if (smg_bake_write_file(&r1, path, why, sizeof(why)) != SMG_OK)
+      eval_log("cannot keep %s: %s", path, why);
+  }
+  smgb_manifest_free(&man);
   {
     void* copy = NULL;
     if (posix_memalign(&copy, 16, r1.blob_size) == 0) {

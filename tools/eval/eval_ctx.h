@@ -28,6 +28,8 @@ typedef struct eval_ctx {
   int quick;             /* shrink work (check mode) */
   int failures;          /* failed checks */
   const char* default_blob; /* synthetic blob for checks without CMU */
+  const char* keep_dir;  /* --keep: also write blobs and CSV traces here */
+  const char* manifest;  /* the paper-size set (data/cmu.manifest) */
 } eval_ctx;
 
 /* Markdown output (no-op in check mode). */

@@ -133,6 +133,13 @@ void em_polyline_point_at(const double* xz, size_t n, double s,
 
 double em_polyline_distance(const double* xz, size_t n, double px,
                             double pz, double* out_arc) {
+  return em_polyline_distance_window(xz, n, px, pz, -INFINITY, INFINITY,
+                                     out_arc);
+}
+
+double em_polyline_distance_window(const double* xz, size_t n, double px,
+                                   double pz, double lo, double hi,
+                                   double* out_arc) {
   double best = INFINITY, best_arc = 0.0, acc = 0.0;
   size_t i;
   if (!xz || !n) return NAN;
@@ -143,18 +150,27 @@ double em_polyline_distance(const double* xz, size_t n, double px,
   for (i = 1; i < n; ++i) {
     double ax = xz[2 * i - 2], az = xz[2 * i - 1];
     double dx = xz[2 * i] - ax, dz = xz[2 * i + 1] - az;
-    double len2 = dx * dx + dz * dz, t = 0.0, d;
+    double len2 = dx * dx + dz * dz, t = 0.0, d, len = sqrt(len2);
+    double tlo = 0.0, thi = 1.0;
+    if (acc > hi || acc + len < lo) {
+      acc += len;
+      continue;
+    }
+    if (len > 0.0) {
+      if (lo > acc) tlo = (lo - acc) / len;
+      if (hi < acc + len) thi = (hi - acc) / len;
+    }
     if (len2 > 0.0) {
       t = ((px - ax) * dx + (pz - az) * dz) / len2;
-      if (t < 0.0) t = 0.0;
-      if (t > 1.0) t = 1.0;
     }
+    if (t < tlo) t = tlo;
+    if (t > thi) t = thi;
     d = hypot(px - (ax + t * dx), pz - (az + t * dz));
     if (d < best) {
       best = d;
-      best_arc = acc + t * sqrt(len2);
+      best_arc = acc + t * len;
     }
-    acc += sqrt(len2);
+    acc += len;
   }
   if (out_arc) *out_arc = best_arc;
   return best;

@@ -44,6 +44,12 @@ void em_polyline_point_at(const double* xz, size_t n, double s,
  * nearest point on it. n >= 1. */
 double em_polyline_distance(const double* xz, size_t n, double px,
                             double pz, double* out_arc);
+/* Like em_polyline_distance but only the part of the polyline between
+ * arc lengths lo and hi is considered (tracking a point along a path that
+ * passes the same place twice, e.g. a circle). */
+double em_polyline_distance_window(const double* xz, size_t n, double px,
+                                   double pz, double lo, double hi,
+                                   double* out_arc);
 /* Mean and max distance of m trajectory points from the polyline. */
 void em_path_deviation(const double* path_xz, size_t n, const double* traj_xz,
                        size_t m, double* out_mean, double* out_max);

@@ -34,7 +34,10 @@
 static void usage(void) {
   fprintf(stderr,
           "usage: smg-eval [--shared DIR] [--out results.md] [--img DIR]\n"
-          "       smg-eval --check [--shared DIR] [--default-blob FILE]\n");
+          "                [--manifest data/cmu.manifest] [--keep DIR]\n"
+          "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
+          "--keep DIR also writes the baked blobs and per-path CSV traces "
+          "to DIR\n");
 }
 
 /* First line of a command's output (trailing newline removed). */
@@ -160,6 +163,10 @@ int main(int argc, char** argv) {
       img_dir = argv[++i];
     else if (!strcmp(argv[i], "--default-blob") && i + 1 < argc)
       ctx.default_blob = argv[++i];
+    else if (!strcmp(argv[i], "--keep") && i + 1 < argc)
+      ctx.keep_dir = argv[++i];
+    else if (!strcmp(argv[i], "--manifest") && i + 1 < argc)
+      ctx.manifest = argv[++i];
     else if (!strcmp(argv[i], "--check"))
       ctx.check = 1;
     else if (!strcmp(argv[i], "--quick"))
@@ -169,6 +176,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (!ctx.manifest) ctx.manifest = "data/cmu.manifest";
+  if (ctx.keep_dir) mkdir(ctx.keep_dir, 0777);
   if (!shared) shared = getenv("SMG_SHARED");
   if (!shared) shared = "../shared";
   snprintf(ctx.cmu_dir, sizeof(ctx.cmu_dir), "%s/mocap/cmu", shared);
