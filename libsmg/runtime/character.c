@@ -167,43 +167,17 @@ SMG_API smg_result smg_character_destroy(smg_character* ch) {
 
 /* ---- path edits ---- */
 
-static int all_finite(const float* xz, uint32_t count) {
-  for (uint32_t i = 0; i < 2u * count; ++i)
-    if (!isfinite(xz[i])) return 0;
-  return 1;
-}
-
-/* Cumulative arc lengths from point `from` on (cum[0] = 0). */
-static void accumulate(smgi_path* p, uint32_t from) {
-  if (from == 0 && p->count > 0) {
-    p->cum[0] = 0.0f;
-    from = 1;
-  }
-  /* double accumulation keeps 10^5-point paths free of drift */
-  double acc = from > 0 ? (double)p->cum[from - 1u] : 0.0;
-  for (uint32_t i = from; i < p->count; ++i) {
-    double dx = (double)p->xz[2u * i] - (double)p->xz[2u * i - 2u];
-    double dz = (double)p->xz[2u * i + 1u] - (double)p->xz[2u * i - 1u];
-    acc += sqrt(dx * dx + dz * dz);
-    p->cum[i] = (float)acc;
-  }
-  p->length = p->count > 0 ? p->cum[p->count - 1u] : 0.0f;
-}
-
 SMG_API smg_result smg_character_set_path(smg_character* ch, const float* xz,
                                           uint32_t count) {
   if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
   if (count == 0) return smg_character_clear_path(ch);
   if (!xz) return SMG_ERROR_INVALID_ARGUMENT;
   if (count > ch->path.capacity) return SMG_ERROR_CAPACITY;
-  if (!all_finite(xz, count)) return SMG_ERROR_INVALID_ARGUMENT;
-  memcpy(ch->path.xz, xz, sizeof(float) * 2u * count);
-  ch->path.count = count;
-  accumulate(&ch->path, 0);
-  float dist;
+  if (!smgi_all_finite(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
+  float dist = 0.0f;
   ch->seg = 0;
-  ch->progress = smgi_path_project_global(&ch->path, ch->ground[0],
-                                          ch->ground[1], &ch->seg, &dist);
+  ch->progress = smgi_path_load(&ch->path, xz, 0, count, 1, ch->ground[0],
+                                ch->ground[1], &ch->seg, &dist);
   ch->path_error = dist;
   ch->base_style_arc = ch->base_style_arc < 0.0f ? -1.0f : 0.0f;
   ch->base_action_arc = ch->base_action_arc < 0.0f ? -1.0f : 0.0f;
@@ -218,16 +192,14 @@ SMG_API smg_result smg_character_append_path(smg_character* ch,
   if (count == 0) return SMG_OK;
   if (!xz) return SMG_ERROR_INVALID_ARGUMENT;
   if (count > ch->path.capacity - ch->path.count) return SMG_ERROR_CAPACITY;
-  if (!all_finite(xz, count)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!smgi_all_finite(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
   uint32_t old = ch->path.count;
-  memcpy(ch->path.xz + 2u * old, xz, sizeof(float) * 2u * count);
-  ch->path.count = old + count;
-  accumulate(&ch->path, old);
+  float dist = 0.0f;
+  /* O(appended): only a path that was empty needs the projection */
+  float s = smgi_path_load(&ch->path, xz, old, count, old == 0,
+                           ch->ground[0], ch->ground[1], &ch->seg, &dist);
   if (old == 0) {
-    float dist;
-    ch->seg = 0;
-    ch->progress = smgi_path_project_global(&ch->path, ch->ground[0],
-                                            ch->ground[1], &ch->seg, &dist);
+    ch->progress = s;
     ch->path_error = dist;
   }
   ch->end_reached = 0;

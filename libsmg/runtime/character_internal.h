@@ -143,7 +143,14 @@ void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
  * distance. */
 float smgi_path_project_local(const smgi_path* p, float x, float z,
                               uint32_t* seg, float* out_dist);
-/* Global nearest point (O(n)), for set_path. */
+/* Copy `count` points to index `from`, extend the arc lengths and, if
+ * `project`, return the exact nearest point to (px, pz) on the whole path
+ * (arc length; *seg, *out_dist set) in the same pass. */
+float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
+                     uint32_t count, int project, float px, float pz,
+                     uint32_t* seg, float* out_dist);
+int smgi_all_finite(const float* v, uint32_t n);
+/* Global nearest point (O(n)). */
 float smgi_path_project_global(const smgi_path* p, float x, float z,
                                uint32_t* seg, float* out_dist);
 

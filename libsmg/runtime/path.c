@@ -5,6 +5,7 @@
  * from a segment hint and fall back to binary search for long jumps.
  */
 #include <math.h>
+#include <string.h>
 
 #include "character_internal.h"
 
@@ -134,6 +135,89 @@ float smgi_path_project_local(const smgi_path* p, float x, float z,
   }
   *seg = i;
   *out_dist = sqrtf(d_best);
+  return s_best;
+}
+
+/* Any inf or NaN among n floats. Branch-free so it runs at memory speed:
+ * adding one to an all-ones exponent carries into the lane's top bit, and
+ * two floats are checked per 64-bit word. */
+int smgi_all_finite(const float* v, uint32_t n) {
+  uint64_t bad = 0;
+  uint32_t i = 0;
+  for (; i + 2u <= n; i += 2u) {
+    uint64_t bits;
+    memcpy(&bits, &v[i], sizeof bits);
+    bad |= (bits & 0x7f8000007f800000ull) + 0x0080000000800000ull;
+  }
+  if (i < n) {
+    uint32_t bits;
+    memcpy(&bits, &v[i], sizeof bits);
+    bad |= (uint64_t)((bits & 0x7f800000u) + 0x00800000u);
+  }
+  return (bad & 0x8000000080000000ull) == 0;
+}
+
+float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
+                     uint32_t count, int project, float px, float pz,
+                     uint32_t* seg, float* out_dist) {
+  /* One pass copies the points, accumulates arc lengths (double, so 10^5
+   * points do not drift) and, when asked, finds the exact nearest point
+   * to (px, pz): a segment can only be nearer than the best so far if its
+   * start is within best + its length, so almost every segment is
+   * rejected by one squared-distance compare. */
+  if (count == 0) return 0.0f;
+  float* dst = p->xz + 2u * from;
+  float* cum = p->cum + from;
+  double acc;
+  float ax, az;
+  uint32_t k = 0;
+  if (from == 0) {
+    dst[0] = xz[0];
+    dst[1] = xz[1];
+    cum[0] = 0.0f;
+    acc = 0.0;
+    k = 1;
+  } else {
+    acc = (double)p->cum[from - 1u];
+  }
+  /* the point before the first new segment (from + k >= 1 here) */
+  ax = p->xz[2u * (from + k) - 2u];
+  az = p->xz[2u * (from + k) - 1u];
+  float best2 = INFINITY, best = INFINITY, s_best = 0.0f;
+  uint32_t best_seg = 0;
+  for (; k < count; ++k) {
+    float bx = xz[2u * k], bz = xz[2u * k + 1u];
+    dst[2u * k] = bx;
+    dst[2u * k + 1u] = bz;
+    float dx = bx - ax, dz = bz - az;
+    float len = sqrtf(dx * dx + dz * dz);
+    acc += (double)len;
+    cum[k] = (float)acc;
+    if (project) {
+      float qx = px - ax, qz = pz - az;
+      float h = best + len;
+      if (qx * qx + qz * qz < h * h) {
+        float sd;
+        uint32_t sgi = from + k - 1u;
+        float d2 = seg_dist2(p, sgi, px, pz, &sd);
+        if (d2 < best2) {
+          best2 = d2;
+          best = sqrtf(d2);
+          s_best = sd;
+          best_seg = sgi;
+        }
+      }
+    }
+    ax = bx;
+    az = bz;
+  }
+  uint32_t end = from + count;
+  p->count = end;
+  p->length = p->cum[end - 1u];
+  if (!project) return 0.0f;
+  if (end < 2u) return smgi_path_project_local(p, px, pz, seg, out_dist);
+  *seg = best_seg;
+  *out_dist = best;
   return s_best;
 }
 

@@ -1,0 +1,385 @@
+/*
+ * bench_runtime.c - `make bench-runtime`: what a libsmg character costs.
+ *
+ * Baseline (same run, same skeleton, same machine): plain playback of one
+ * clip - sample two pool frames, lerp the root, nlerp every rotation and
+ * run forward kinematics to model matrices - the least any animation
+ * system does per character per frame. Measured against it:
+ *   - steady-state smg_character_step + smg_character_get_model_matrices
+ *     per character (median, one core), target <= 5 us;
+ *   - the frame in which the path is replaced (10^3 and 10^5 points), p99,
+ *     target <= 1 ms;
+ *   - blob load (smg_graph_load_memory, full checksum), median, target
+ *     <= 1 ms;
+ *   - per-character memory (target <= 16 KiB without the path buffer);
+ *   - characters per 60 Hz frame for 1, 100, 1000 and 5000 characters.
+ * Graphs: build/default.smg (synthetic, baked by `make`) when present, and
+ * the small test fixture graph. Figures only; nothing here passes or fails.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "blob.h"
+#include "fixture_graph.h"
+#include "graph_internal.h"
+#include "smg.h"
+
+#define DT (1.0f / 60.0f)
+
+static double now_us(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec * 1e6 + (double)ts.tv_nsec * 1e-3;
+}
+
+static int cmp_double(const void* a, const void* b) {
+  double x = *(const double*)a, y = *(const double*)b;
+  return x < y ? -1 : x > y;
+}
+
+static double percentile(double* v, size_t n, double p) {
+  qsort(v, n, sizeof *v, cmp_double);
+  size_t i = (size_t)(p * (double)(n - 1) + 0.5);
+  return v[i < n ? i : n - 1];
+}
+
+/* ---- baseline: plain clip playback ---------------------------------- */
+
+static void nlerp(const float* a, const float* b, float t, float* o) {
+  float d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  float s = d < 0 ? -t : t, u = 1 - t;
+  for (int k = 0; k < 4; ++k) o[k] = u * a[k] + s * b[k];
+  float n = 1.0f / sqrtf(o[0] * o[0] + o[1] * o[1] + o[2] * o[2] + o[3] * o[3]);
+  for (int k = 0; k < 4; ++k) o[k] *= n;
+}
+
+static void mat_from(const float* q, const float* t, float* m) {
+  float x = q[0], y = q[1], z = q[2], w = q[3];
+  m[0] = 1 - 2 * (y * y + z * z); m[1] = 2 * (x * y + z * w);
+  m[2] = 2 * (x * z - y * w);     m[3] = 0;
+  m[4] = 2 * (x * y - z * w);     m[5] = 1 - 2 * (x * x + z * z);
+  m[6] = 2 * (y * z + x * w);     m[7] = 0;
+  m[8] = 2 * (x * z + y * w);     m[9] = 2 * (y * z - x * w);
+  m[10] = 1 - 2 * (x * x + y * y); m[11] = 0;
+  m[12] = t[0]; m[13] = t[1]; m[14] = t[2]; m[15] = 1;
+}
+
+static void mat_mul(const float* a, const float* b, float* o) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      o[4 * c + r] = a[r] * b[4 * c] + a[4 + r] * b[4 * c + 1] +
+                     a[8 + r] * b[4 * c + 2] + a[12 + r] * b[4 * c + 3];
+}
+
+typedef struct player {
+  double t; /* frames */
+  float root[3], rot[4 * 64], mats[16 * 64];
+} player;
+
+/* One frame of plain playback of clip 0 (looping). */
+static void baseline_step(const smg_graph* g, player* p, float dt) {
+  const smgi_clip* clip = &g->data.clips[0];
+  const uint32_t J = g->data.joint_count;
+  p->t += (double)dt * g->data.info->frame_rate;
+  double len = clip->frame_count > 1 ? clip->frame_count - 1 : 1;
+  while (p->t >= len) p->t -= len;
+  uint32_t i0 = (uint32_t)p->t;
+  float a = (float)(p->t - i0);
+  uint32_t i1 = i0 + 1 < clip->frame_count ? i0 + 1 : i0;
+  const float* fa = smgi_graph_pose(g, clip->first_frame + i0);
+  const float* fb = smgi_graph_pose(g, clip->first_frame + i1);
+  for (int k = 0; k < 3; ++k) p->root[k] = fa[k] + a * (fb[k] - fa[k]);
+  for (uint32_t j = 0; j < J; ++j)
+    nlerp(fa + 3 + 4 * j, fb + 3 + 4 * j, a, p->rot + 4 * j);
+  mat_from(p->rot, p->root, p->mats);
+  for (uint32_t j = 1; j < J; ++j) {
+    float local[16];
+    mat_from(p->rot + 4 * j, g->data.joints[j].offset, local);
+    mat_mul(p->mats + 16 * g->data.joints[j].parent, local, p->mats + 16 * j);
+  }
+}
+
+static volatile float sink;
+
+/* Median per-call time of the baseline, microseconds. */
+static double bench_baseline(const smg_graph* g, int frames) {
+  player* p = (player*)calloc(1, sizeof *p);
+  double* v = (double*)malloc(sizeof(double) * (size_t)frames);
+  const int batch = 64;
+  for (int i = 0; i < frames; ++i) {
+    double t0 = now_us();
+    for (int b = 0; b < batch; ++b) baseline_step(g, p, DT);
+    v[i] = (now_us() - t0) / batch;
+    sink += p->mats[16 * 5 + 12];
+  }
+  double m = percentile(v, (size_t)frames, 0.5);
+  free(v);
+  free(p);
+  return m;
+}
+
+/* ---- characters ----------------------------------------------------- */
+
+/* A long gently curving path starting at (x0, 0), npoints over length. */
+static void make_path(float* xz, uint32_t n, float length, float x0,
+                      float wiggle) {
+  for (uint32_t i = 0; i < n; ++i) {
+    float z = length * (float)i / (float)(n - 1);
+    xz[2 * i] = x0 + wiggle * sinf(z * 0.15f);
+    xz[2 * i + 1] = z;
+  }
+}
+
+typedef struct crowd {
+  smg_character** ch;
+  int n;
+  float* mats;
+  uint32_t J;
+} crowd;
+
+static int crowd_make(smg_graph* g, int n, crowd* c) {
+  smg_graph_info info;
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  smg_graph_get_info(g, &info);
+  c->J = info.joint_count;
+  c->n = n;
+  c->ch = (smg_character**)calloc((size_t)n, sizeof *c->ch);
+  c->mats = (float*)malloc(sizeof(float) * 16 * c->J);
+  float xz[2 * 256];
+  for (int i = 0; i < n; ++i) {
+    smg_character_desc d;
+    memset(&d, 0, sizeof d);
+    d.struct_size = sizeof d;
+    d.seed = (uint32_t)i + 1;
+    d.position[0] = 2.0f * (float)(i % 100);
+    if (smg_character_create(g, &d, &c->ch[i]) != SMG_OK) return 0;
+    make_path(xz, 256, 2000.0f, d.position[0], 1.0f + (float)(i % 5));
+    smg_character_set_path(c->ch[i], xz, 256);
+  }
+  return 1;
+}
+
+static void crowd_free(crowd* c) {
+  for (int i = 0; i < c->n; ++i)
+    if (c->ch[i]) smg_character_destroy(c->ch[i]);
+  free(c->ch);
+  free(c->mats);
+}
+
+/* One frame for every character: step + model matrices. */
+static void crowd_frame(crowd* c) {
+  for (int i = 0; i < c->n; ++i) {
+    smg_character_step(c->ch[i], DT);
+    smg_character_get_model_matrices(c->ch[i], SMG_SPACE_WORLD, c->mats, c->J);
+  }
+  sink += c->mats[12];
+}
+
+/* Median of per-character step+pose, timed one call at a time in batches
+ * of the whole crowd (so cache effects of many characters show). */
+static double bench_crowd(smg_graph* g, int n, int frames, double* p99) {
+  crowd c;
+  if (!crowd_make(g, n, &c)) {
+    crowd_free(&c);
+    return -1;
+  }
+  for (int f = 0; f < 120; ++f) crowd_frame(&c); /* warm up, plans full */
+  double* v = (double*)malloc(sizeof(double) * (size_t)frames);
+  for (int f = 0; f < frames; ++f) {
+    double t0 = now_us();
+    crowd_frame(&c);
+    v[f] = (now_us() - t0) / n;
+  }
+  double m = percentile(v, (size_t)frames, 0.5);
+  if (p99) *p99 = percentile(v, (size_t)frames, 0.99);
+  free(v);
+  crowd_free(&c);
+  return m;
+}
+
+/* Single character, each frame timed on its own. */
+static double bench_single(smg_graph* g, int frames, double* p99) {
+  *p99 = -1;
+  crowd c;
+  if (!crowd_make(g, 1, &c)) {
+    crowd_free(&c);
+    return -1;
+  }
+  for (int f = 0; f < 120; ++f) crowd_frame(&c);
+  double* v = (double*)malloc(sizeof(double) * (size_t)frames);
+  for (int f = 0; f < frames; ++f) {
+    double t0 = now_us();
+    crowd_frame(&c);
+    v[f] = now_us() - t0;
+  }
+  double m = percentile(v, (size_t)frames, 0.5);
+  *p99 = percentile(v, (size_t)frames, 0.99);
+  free(v);
+  crowd_free(&c);
+  return m;
+}
+
+/* Frame in which the whole path is replaced (set_path + step + pose). */
+static void bench_edit(smg_graph* g, uint32_t points, int frames,
+                       double* median, double* p99) {
+  smg_character_desc d;
+  smg_character* ch = NULL;
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.path_capacity = points;
+  float* a = (float*)malloc(sizeof(float) * 2 * points);
+  float* b = (float*)malloc(sizeof(float) * 2 * points);
+  make_path(a, points, 1000.0f, 0.0f, 1.0f);
+  make_path(b, points, 1000.0f, 0.3f, 2.0f);
+  float* mats = (float*)malloc(sizeof(float) * 16 * 64);
+  smg_graph_info info;
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  smg_graph_get_info(g, &info);
+  double* v = (double*)malloc(sizeof(double) * (size_t)frames);
+  *median = *p99 = -1;
+  if (smg_character_create(g, &d, &ch) == SMG_OK) {
+    smg_character_set_path(ch, a, points);
+    for (int f = 0; f < 60; ++f) smg_character_step(ch, DT);
+    for (int f = 0; f < frames; ++f) {
+      double t0 = now_us();
+      smg_character_set_path(ch, (f & 1) ? a : b, points);
+      smg_character_step(ch, DT);
+      smg_character_get_model_matrices(ch, SMG_SPACE_WORLD, mats,
+                                       info.joint_count);
+      v[f] = now_us() - t0;
+      /* a few ordinary frames between edits */
+      for (int k = 0; k < 3; ++k) smg_character_step(ch, DT);
+    }
+    *median = percentile(v, (size_t)frames, 0.5);
+    *p99 = percentile(v, (size_t)frames, 0.99);
+    smg_character_destroy(ch);
+  }
+  free(v);
+  free(mats);
+  free(a);
+  free(b);
+}
+
+static double bench_load(const void* blob, size_t size, int reps,
+                         uint32_t flags) {
+  double* v = (double*)malloc(sizeof(double) * (size_t)reps);
+  smg_graph_desc d;
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.flags = flags;
+  for (int i = 0; i < reps; ++i) {
+    smg_graph* g = NULL;
+    double t0 = now_us();
+    smg_result r = smg_graph_load_memory(blob, size, &d, &g);
+    v[i] = now_us() - t0;
+    if (r == SMG_OK) smg_graph_destroy(g);
+  }
+  double m = percentile(v, (size_t)reps, 0.5);
+  free(v);
+  return m;
+}
+
+static void* read_file(const char* path, size_t* size) {
+  FILE* f = fopen(path, "rb");
+  if (!f) return NULL;
+  fseek(f, 0, SEEK_END);
+  long n = ftell(f);
+  fseek(f, 0, SEEK_SET);
+  void* p = NULL;
+  if (n > 0 && posix_memalign(&p, 64, (size_t)n) == 0 &&
+      fread(p, 1, (size_t)n, f) != (size_t)n) {
+    free(p);
+    p = NULL;
+  }
+  fclose(f);
+  *size = (size_t)n;
+  return p;
+}
+
+static void run_graph(const char* name, const void* blob, size_t size) {
+  smg_graph* g = NULL;
+  smg_result r = smg_graph_load_memory(blob, size, NULL, &g);
+  if (r != SMG_OK) {
+    printf("%s: cannot load (%s)\n", name, smg_result_string(r));
+    return;
+  }
+  smg_graph_info info;
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  smg_graph_get_info(g, &info);
+  printf("\n== %s: %u joints, %u frames, lower %u nodes/%u edges, upper "
+         "%u/%u, %u splices, %.0f KiB ==\n",
+         name, info.joint_count, info.frame_count, info.lower_node_count,
+         info.lower_edge_count, info.upper_node_count, info.upper_edge_count,
+         info.splice_count, (double)info.blob_size / 1024.0);
+
+  double base = bench_baseline(g, 2000);
+  printf("baseline plain clip playback (2 frames + lerp/nlerp + FK): "
+         "median %.3f us\n",
+         base);
+  double p99_single = 0;
+  double single = bench_single(g, 6000, &p99_single);
+  printf("step+pose, 1 character:   median %.3f us  p99 %.3f us  (%.1fx "
+         "baseline; target <= 5 us)\n",
+         single, p99_single, single / base);
+  const int counts[4] = {1, 100, 1000, 5000};
+  for (int i = 0; i < 4; ++i) {
+    int frames = counts[i] >= 1000 ? 60 : 600;
+    double p99;
+    double per = bench_crowd(g, counts[i], frames, &p99);
+    if (per < 0) {
+      printf("crowd of %d: create failed\n", counts[i]);
+      continue;
+    }
+    printf("step+pose, %4d characters: median %.3f us/character (%.1fx "
+           "baseline) -> %.0f characters per 60 Hz frame on one core\n",
+           counts[i], per, per / base, (1e6 / 60.0) / per);
+  }
+  double med = 0, p99 = 0;
+  bench_edit(g, 1000, 400, &med, &p99);
+  printf("edit frame (set_path 10^3 points + step + pose): median %.1f us, "
+         "p99 %.1f us (target p99 <= 1000 us)\n",
+         med, p99);
+  bench_edit(g, 100000, 200, &med, &p99);
+  printf("edit frame (set_path 10^5 points + step + pose): median %.1f us, "
+         "p99 %.1f us (target p99 <= 1000 us)\n",
+         med, p99);
+  printf("blob load from memory (full checksum): median %.1f us; "
+         "without checksum %.1f us (target <= 1000 us)\n",
+         bench_load(blob, size, 100, 0),
+         bench_load(blob, size, 100, SMG_GRAPH_SKIP_CHECKSUM));
+  size_t bytes = 0;
+  smg_character_memory_size(g, NULL, &bytes);
+  printf("per-character memory: %zu bytes with the default 1024-point path "
+         "buffer, %zu bytes without it (target <= 16384)\n",
+         bytes, bytes - 1024u * 12u);
+  smg_graph_destroy(g);
+}
+
+int main(void) {
+  printf("libsmg runtime benchmark (one core, dt = 1/60 s, medians)\n");
+  char path[1024];
+  snprintf(path, sizeof path, "%s/default.smg", SMG_BUILD_DIR);
+  size_t size = 0;
+  void* blob = read_file(path, &size);
+  if (blob) {
+    run_graph("build/default.smg (synthetic)", blob, size);
+    free(blob);
+  } else {
+    printf("(%s not found: run `make` to bake it; measuring the fixture "
+           "only)\n",
+           path);
+  }
+  void* fb = NULL;
+  size_t fsize = 0;
+  if (fixture_graph_blob(&fb, &fsize) == SMG_OK) {
+    run_graph("test fixture graph", fb, fsize);
+    smgi_blob_free(fb, NULL);
+  }
+  return 0;
+}

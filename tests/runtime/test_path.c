@@ -1,0 +1,138 @@
+/*
+ * test_path.c - the path internals: arc lengths, evaluation by arc length,
+ * the pruned one-pass nearest-point search used by set_path against brute
+ * force, local projection, and the finite check.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "character_internal.h"
+#include "runtime/runtime_testutil.h"
+
+#define CAP 4096
+
+typedef struct buf {
+  float xz[2 * CAP], cum[CAP];
+} buf;
+
+static smgi_path make(buf* b) {
+  smgi_path p;
+  p.xz = b->xz;
+  p.cum = b->cum;
+  p.capacity = CAP;
+  smgi_path_reset(&p);
+  return p;
+}
+
+static uint32_t rng = 12345;
+static float frand(void) { return (float)(smgi_xorshift(&rng) % 100000) / 100000.0f; }
+
+static void test_lengths_and_eval(void** state) {
+  (void)state;
+  static buf b;
+  smgi_path p = make(&b);
+  float pts[8] = {0, 0, 3, 4, 3, 10, 3, 10}; /* last segment zero length */
+  uint32_t seg = 0;
+  float d;
+  smgi_path_load(&p, pts, 0, 2, 0, 0, 0, &seg, &d);
+  smgi_path_load(&p, pts + 4, 2, 2, 0, 0, 0, &seg, &d); /* append */
+  assert_int_equal(p.count, 4);
+  assert_float_equal(p.length, 11.0f, 1e-5f);
+  float x, z, h;
+  seg = 0;
+  smgi_path_eval(&p, 2.5f, &seg, &x, &z, &h);
+  assert_float_equal(x, 1.5f, 1e-5f);
+  assert_float_equal(z, 2.0f, 1e-5f);
+  assert_float_equal(h, atan2f(3, 4), 1e-5f);
+  smgi_path_eval(&p, 8.0f, &seg, &x, &z, &h);
+  assert_float_equal(x, 3.0f, 1e-5f);
+  assert_float_equal(z, 7.0f, 1e-5f);
+  assert_float_equal(h, 0.0f, 1e-5f);
+  /* beyond the end clamps; a zero-length segment still has a heading */
+  smgi_path_eval(&p, 50.0f, &seg, &x, &z, &h);
+  assert_float_equal(z, 10.0f, 1e-5f);
+  assert_true(isfinite(h));
+  smgi_path_eval(&p, -5.0f, &seg, &x, &z, &h);
+  assert_float_equal(x, 0.0f, 1e-6f);
+}
+
+static void test_projection_matches_brute_force(void** state) {
+  (void)state;
+  static buf b;
+  static float pts[2 * CAP];
+  for (int trial = 0; trial < 200; ++trial) {
+    uint32_t n = 1 + smgi_xorshift(&rng) % (trial < 100 ? 12u : CAP);
+    float x = 0, z = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+      /* random walks with both tiny and long segments */
+      float step = (i % 7 == 0) ? 20.0f * frand() : 0.3f * frand();
+      float a = 6.2831853f * frand();
+      x += step * sinf(a);
+      z += step * cosf(a);
+      pts[2 * i] = x;
+      pts[2 * i + 1] = z;
+    }
+    smgi_path p = make(&b);
+    float qx = 40.0f * frand() - 20.0f, qz = 40.0f * frand() - 20.0f;
+    uint32_t seg1 = 0, seg2 = 0;
+    float d1, d2;
+    float s1 = smgi_path_load(&p, pts, 0, n, 1, qx, qz, &seg1, &d1);
+    float s2 = smgi_path_project_global(&p, qx, qz, &seg2, &d2);
+    assert_float_equal(d1, d2, 1e-4f);
+    if (fabsf(s1 - s2) > 1e-3f) {
+      /* equally near points elsewhere are fine; the distance decides */
+      float ex, ez;
+      uint32_t sg = 0;
+      smgi_path_eval(&p, s1, &sg, &ex, &ez, NULL);
+      float dd = sqrtf((ex - qx) * (ex - qx) + (ez - qz) * (ez - qz));
+      assert_float_equal(dd, d2, 1e-3f);
+    }
+  }
+}
+
+static void test_local_projection(void** state) {
+  (void)state;
+  static buf b;
+  static float pts[2 * 1001];
+  smgi_path p = make(&b);
+  rt_line(pts, 1001, 100.0f);
+  uint32_t seg = 0;
+  float d;
+  smgi_path_load(&p, pts, 0, 1001, 0, 0, 0, &seg, &d);
+  /* walking along: the local search follows a moving point */
+  seg = 0;
+  for (int i = 0; i <= 100; ++i) {
+    float s = smgi_path_project_local(&p, 0.3f, (float)i * 0.9f, &seg, &d);
+    assert_float_equal(s, (float)i * 0.9f, 1e-3f);
+    assert_float_equal(d, 0.3f, 1e-4f);
+  }
+}
+
+static void test_finite(void** state) {
+  (void)state;
+  float v[7] = {0, 1, -2, 3e38f, -1e-40f, 5, 6};
+  assert_true(smgi_all_finite(v, 7));
+  for (int i = 0; i < 7; ++i) {
+    float keep = v[i];
+    v[i] = NAN;
+    assert_false(smgi_all_finite(v, 7));
+    v[i] = -INFINITY;
+    assert_false(smgi_all_finite(v, 7));
+    v[i] = keep;
+  }
+  assert_true(smgi_all_finite(v, 0));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_lengths_and_eval),
+      cmocka_unit_test(test_projection_matches_brute_force),
+      cmocka_unit_test(test_local_projection),
+      cmocka_unit_test(test_finite),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
