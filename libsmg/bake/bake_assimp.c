@@ -1,0 +1,633 @@
+/*
+ * bake_assimp.c - skeletal animation from glTF/GLB/FBX (and anything else
+ * assimp reads) through assimp's C API.
+ *
+ * The skeleton is the part of the node hierarchy that the chosen animation
+ * drives: the topmost animated node (or, when several subtrees are
+ * animated, their lowest common ancestor) is the root joint, and every node
+ * below it that is animated or has animated descendants is a joint (mesh
+ * nodes, end sites and other static leaves are dropped). The transforms of
+ * the nodes above the root (e.g. an FBX "Armature" with its axis conversion
+ * and centimetre scale) are folded into the root's rotation, the root
+ * translation and, as a uniform scale, every offset.
+ *
+ * Channels are sampled at the animation's own key spacing (the rate of its
+ * densest rotation channel, e.g. 30 or 60 Hz; snapped to an integer rate),
+ * with linear translation and slerp rotation between keys. As in the BVH
+ * reader, only the root may translate over time: a joint whose translation
+ * keys move is rejected with SMG_ERROR_UNSUPPORTED; constant ones become the
+ * joint's offset. Scale keys are ignored.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <assimp/cimport.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "bake_clip.h"
+#include "bake_import_util.h"
+
+#define SMGB_ASSIMP_MAX_JOINTS 512u
+#define SMGB_ASSIMP_MAX_FRAMES 10000000u
+#define SMGB_ASSIMP_MAX_POSE_BYTES ((size_t)1 << 30)
+
+/* Affine transform: 3x3 linear part (row-major) + translation. */
+typedef struct affine {
+  double m[9];
+  double t[3];
+} affine;
+
+static void affine_from_ai(const struct aiMatrix4x4* a, affine* o) {
+  o->m[0] = a->a1; o->m[1] = a->a2; o->m[2] = a->a3; o->t[0] = a->a4;
+  o->m[3] = a->b1; o->m[4] = a->b2; o->m[5] = a->b3; o->t[1] = a->b4;
+  o->m[6] = a->c1; o->m[7] = a->c2; o->m[8] = a->c3; o->t[2] = a->c4;
+}
+
+static void affine_mul(const affine* a, const affine* b, affine* o) {
+  affine r;
+  int i, j;
+  for (i = 0; i < 3; ++i) {
+    for (j = 0; j < 3; ++j)
+      r.m[3 * i + j] = a->m[3 * i] * b->m[j] + a->m[3 * i + 1] * b->m[3 + j] +
+                       a->m[3 * i + 2] * b->m[6 + j];
+    r.t[i] = a->m[3 * i] * b->t[0] + a->m[3 * i + 1] * b->t[1] +
+             a->m[3 * i + 2] * b->t[2] + a->t[i];
+  }
+  *o = r;
+}
+
+static void affine_point(const affine* a, const double p[3], double o[3]) {
+  int i;
+  double r[3];
+  for (i = 0; i < 3; ++i)
+    r[i] = a->m[3 * i] * p[0] + a->m[3 * i + 1] * p[1] + a->m[3 * i + 2] * p[2] +
+           a->t[i];
+  o[0] = r[0]; o[1] = r[1]; o[2] = r[2];
+}
+
+/* Split the linear part into uniform scale * rotation. Returns 0 for a
+ * reflection or a degenerate/non-uniform scale. */
+static int affine_rotation(const affine* a, double* scale, double q[4]) {
+  double X[3], Y[3], Z[3], sx, sy, sz, s, det;
+  int i;
+  for (i = 0; i < 3; ++i) {
+    X[i] = a->m[3 * i];
+    Y[i] = a->m[3 * i + 1];
+    Z[i] = a->m[3 * i + 2];
+  }
+  sx = sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+  sy = sqrt(Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2]);
+  sz = sqrt(Z[0] * Z[0] + Z[1] * Z[1] + Z[2] * Z[2]);
+  det = X[0] * (Y[1] * Z[2] - Y[2] * Z[1]) - Y[0] * (X[1] * Z[2] - X[2] * Z[1]) +
+        Z[0] * (X[1] * Y[2] - X[2] * Y[1]);
+  if (!(sx > 1e-12) || !(sy > 1e-12) || !(sz > 1e-12) || !(det > 0.0))
+    return 0;
+  s = (sx + sy + sz) / 3.0;
+  if (fabs(sx - s) > 1e-3 * s || fabs(sy - s) > 1e-3 * s ||
+      fabs(sz - s) > 1e-3 * s)
+    return 0;
+  for (i = 0; i < 3; ++i) {
+    X[i] /= sx;
+    Y[i] /= sy;
+    Z[i] /= sz;
+  }
+  smgb_qfrom_axes(X, Y, Z, q);
+  *scale = s;
+  return 1;
+}
+
+/* ---- node bookkeeping ----------------------------------------------------- */
+
+typedef struct node_info {
+  const struct aiNode* node;
+  int32_t parent;   /* index in the flat node list */
+  int32_t channel;  /* channel in the animation, -1 if none */
+  int keep;         /* a joint */
+  int32_t joint;    /* joint index when kept */
+} node_info;
+
+typedef struct flat_nodes {
+  node_info* v;
+  uint32_t count, cap;
+} flat_nodes;
+
+/* Flatten the hierarchy in depth-first order (iteratively: hostile files
+ * may nest deeply). Returns 0 on allocation failure or too many nodes. */
+static int flatten(const struct aiNode* root, flat_nodes* out) {
+  const struct aiNode** stack;
+  int32_t* parent_stack;
+  uint32_t sp = 0, cap = 1024;
+  const uint32_t limit = 1u << 20;
+  stack = (const struct aiNode**)malloc(sizeof *stack * cap);
+  parent_stack = (int32_t*)malloc(sizeof *parent_stack * cap);
+  if (!stack || !parent_stack) goto fail;
+  stack[sp] = root;
+  parent_stack[sp++] = -1;
+  while (sp > 0) {
+    const struct aiNode* n = stack[--sp];
+    int32_t parent = parent_stack[sp], self;
+    unsigned c;
+    if (out->count == out->cap) {
+      uint32_t ncap = out->cap ? out->cap * 2 : 256;
+      node_info* nv;
+      if (ncap > limit) goto fail;
+      nv = (node_info*)realloc(out->v, sizeof *nv * ncap);
+      if (!nv) goto fail;
+      out->v = nv;
+      out->cap = ncap;
+    }
+    self = (int32_t)out->count++;
+    memset(&out->v[self], 0, sizeof out->v[self]);
+    out->v[self].node = n;
+    out->v[self].parent = parent;
+    out->v[self].channel = -1;
+    out->v[self].joint = -1;
+    /* Push children in reverse so they come out in file order. */
+    if (sp + n->mNumChildren > cap) {
+      uint32_t ncap = cap;
+      const struct aiNode** ns;
+      int32_t* np;
+      while (sp + n->mNumChildren > ncap) ncap *= 2;
+      if (ncap > limit) goto fail;
+      ns = (const struct aiNode**)realloc((void*)stack, sizeof *ns * ncap);
+      if (!ns) goto fail;
+      stack = ns;
+      np = (int32_t*)realloc(parent_stack, sizeof *np * ncap);
+      if (!np) goto fail;
+      parent_stack = np;
+      cap = ncap;
+    }
+    for (c = n->mNumChildren; c-- > 0;) {
+      if (!n->mChildren[c]) continue;
+      stack[sp] = n->mChildren[c];
+      parent_stack[sp++] = self;
+    }
+  }
+  free((void*)stack);
+  free(parent_stack);
+  return 1;
+fail:
+  free((void*)stack);
+  free(parent_stack);
+  return 0;
+}
+
+/* ---- sampling ------------------------------------------------------------- */
+
+static uint32_t key_index_vec(const struct aiVectorKey* k, uint32_t n,
+                              double t) {
+  uint32_t lo = 0, hi = n - 1;
+  while (hi - lo > 1) {
+    uint32_t mid = (lo + hi) / 2;
+    if (k[mid].mTime <= t) lo = mid;
+    else hi = mid;
+  }
+  return lo;
+}
+
+static uint32_t key_index_quat(const struct aiQuatKey* k, uint32_t n,
+                               double t) {
+  uint32_t lo = 0, hi = n - 1;
+  while (hi - lo > 1) {
+    uint32_t mid = (lo + hi) / 2;
+    if (k[mid].mTime <= t) lo = mid;
+    else hi = mid;
+  }
+  return lo;
+}
+
+static int sample_position(const struct aiNodeAnim* ch, double t, double o[3]) {
+  uint32_t n, i;
+  double u;
+  const struct aiVectorKey* k;
+  if (!ch || ch->mNumPositionKeys == 0 || !ch->mPositionKeys) return 0;
+  k = ch->mPositionKeys;
+  n = ch->mNumPositionKeys;
+  if (n == 1 || t <= k[0].mTime) {
+    o[0] = k[0].mValue.x; o[1] = k[0].mValue.y; o[2] = k[0].mValue.z;
+    return 1;
+  }
+  if (t >= k[n - 1].mTime) {
+    o[0] = k[n - 1].mValue.x; o[1] = k[n - 1].mValue.y; o[2] = k[n - 1].mValue.z;
+    return 1;
+  }
+  i = key_index_vec(k, n, t);
+  u = (k[i + 1].mTime > k[i].mTime)
+          ? (t - k[i].mTime) / (k[i + 1].mTime - k[i].mTime) : 0.0;
+  o[0] = k[i].mValue.x + (k[i + 1].mValue.x - k[i].mValue.x) * u;
+  o[1] = k[i].mValue.y + (k[i + 1].mValue.y - k[i].mValue.y) * u;
+  o[2] = k[i].mValue.z + (k[i + 1].mValue.z - k[i].mValue.z) * u;
+  return 1;
+}
+
+static int sample_rotation(const struct aiNodeAnim* ch, double t, double q[4]) {
+  uint32_t n, i;
+  double a[4], b[4], u;
+  const struct aiQuatKey* k;
+  if (!ch || ch->mNumRotationKeys == 0 || !ch->mRotationKeys) return 0;
+  k = ch->mRotationKeys;
+  n = ch->mNumRotationKeys;
+  if (n == 1 || t <= k[0].mTime) i = 0, u = 0.0;
+  else if (t >= k[n - 1].mTime) i = n - 1, u = 0.0;
+  else {
+    i = key_index_quat(k, n, t);
+    u = (k[i + 1].mTime > k[i].mTime)
+            ? (t - k[i].mTime) / (k[i + 1].mTime - k[i].mTime) : 0.0;
+  }
+  a[0] = k[i].mValue.x; a[1] = k[i].mValue.y;
+  a[2] = k[i].mValue.z; a[3] = k[i].mValue.w;
+  smgb_qnormalize(a);
+  if (u <= 0.0) {
+    memcpy(q, a, sizeof a);
+    return 1;
+  }
+  b[0] = k[i + 1].mValue.x; b[1] = k[i + 1].mValue.y;
+  b[2] = k[i + 1].mValue.z; b[3] = k[i + 1].mValue.w;
+  smgb_qnormalize(b);
+  smgb_qslerp(a, b, u, q);
+  return 1;
+}
+
+static int finite_channel(const struct aiNodeAnim* ch) {
+  uint32_t i;
+  for (i = 0; i < ch->mNumPositionKeys; ++i) {
+    const struct aiVectorKey* k = &ch->mPositionKeys[i];
+    if (!isfinite(k->mTime) || !isfinite(k->mValue.x) ||
+        !isfinite(k->mValue.y) || !isfinite(k->mValue.z) ||
+        fabs(k->mValue.x) > 1e9 || fabs(k->mValue.y) > 1e9 ||
+        fabs(k->mValue.z) > 1e9)
+      return 0;
+  }
+  for (i = 0; i < ch->mNumRotationKeys; ++i) {
+    const struct aiQuatKey* k = &ch->mRotationKeys[i];
+    if (!isfinite(k->mTime) || !isfinite(k->mValue.x) ||
+        !isfinite(k->mValue.y) || !isfinite(k->mValue.z) ||
+        !isfinite(k->mValue.w))
+      return 0;
+  }
+  return 1;
+}
+
+static double guess_unit(const smgb_skeleton* s, double hips_height) {
+  static const double units[5] = {1.0, 0.01, 0.001, 0.0254, 0.056444};
+  double size = smgb_skeleton_leg_length(s), best = 1.0, err = 1e300;
+  int i;
+  if (!(size > 0.0)) size = fabs(hips_height) * 0.9;
+  if (!(size > 0.0)) return 1.0;
+  for (i = 0; i < 5; ++i) {
+    double e = fabs(log(size * units[i] / 0.85));
+    if (e < err) {
+      err = e;
+      best = units[i];
+    }
+  }
+  return best;
+}
+
+smg_result smgb_assimp_load(const char* path, float unit_scale,
+                            uint32_t animation_index, smgb_clip* out,
+                            smgb_error* err) {
+  const struct aiScene* scene = NULL;
+  struct aiPropertyStore* props = NULL;
+  const struct aiAnimation* anim;
+  flat_nodes nodes = {NULL, 0, 0};
+  smgb_clip clip;
+  smg_result res = SMG_ERROR_PARSE;
+  uint32_t i, c, J = 0, frames, f, stride, densest = 0;
+  int32_t root = -1;
+  double tps, t_min = 1e300, t_max = -1e300, rate, parent_scale, parent_q[4];
+  double scale, hips_y;
+  affine parent_global;
+  int32_t* joint_node = NULL;
+  double* rest_q = NULL;
+  double* rest_t = NULL;
+  const struct aiNodeAnim** chans = NULL;
+  const char* base;
+
+  if (err) err->message[0] = '\0';
+  memset(&clip, 0, sizeof clip);
+  if (!path || !out || !isfinite(unit_scale) || unit_scale < 0.0f ||
+      unit_scale > 1e3f) {
+    smgb_imp_errorf(err, "%s: invalid argument to smgb_assimp_load",
+                    path ? path : "(null)");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  {
+    FILE* fp = fopen(path, "rb");
+    if (!fp) {
+      smgb_imp_errorf(err, "%s: cannot open file", path);
+      return SMG_ERROR_IO;
+    }
+    fclose(fp);
+  }
+  props = aiCreatePropertyStore();
+  if (props)
+    aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, 0);
+  scene = aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure,
+                                       NULL, props);
+  if (props) aiReleasePropertyStore(props);
+  if (!scene) {
+    smgb_imp_errorf(err, "%s: assimp could not read the file: %s", path,
+                    aiGetErrorString());
+    return SMG_ERROR_PARSE;
+  }
+  if (!scene->mRootNode || scene->mNumAnimations == 0 || !scene->mAnimations) {
+    smgb_imp_errorf(err, "%s: the file has no skeletal animation", path);
+    goto done;
+  }
+  if (animation_index >= scene->mNumAnimations) {
+    smgb_imp_errorf(err, "%s: animation %u requested, the file has %u", path,
+                    animation_index, scene->mNumAnimations);
+    res = SMG_ERROR_OUT_OF_RANGE;
+    goto done;
+  }
+  anim = scene->mAnimations[animation_index];
+  if (!anim || anim->mNumChannels == 0 || !anim->mChannels) {
+    smgb_imp_errorf(err, "%s: animation %u has no node channels", path,
+                    animation_index);
+    goto done;
+  }
+  tps = anim->mTicksPerSecond > 0.0 && isfinite(anim->mTicksPerSecond)
+            ? anim->mTicksPerSecond : 25.0; /* assimp's documented default */
+
+  if (!flatten(scene->mRootNode, &nodes)) {
+    smgb_imp_errorf(err, "%s: node hierarchy too large or out of memory", path);
+    res = SMG_ERROR_CAPACITY;
+    goto done;
+  }
+  /* Attach channels to nodes by name. */
+  for (c = 0; c < anim->mNumChannels; ++c) {
+    const struct aiNodeAnim* ch = anim->mChannels[c];
+    if (!ch) continue;
+    if (!finite_channel(ch)) {
+      smgb_imp_errorf(err, "%s: channel '%.60s' has non-finite or huge keys",
+                      path, ch->mNodeName.data);
+      goto done;
+    }
+    for (i = 0; i < nodes.count; ++i) {
+      if (nodes.v[i].channel < 0 &&
+          strcmp(nodes.v[i].node->mName.data, ch->mNodeName.data) == 0) {
+        nodes.v[i].channel = (int32_t)c;
+        break;
+      }
+    }
+  }
+  /* Skeleton root: the lowest common ancestor of all animated nodes. */
+  for (i = 0; i < nodes.count; ++i) {
+    int32_t a, b;
+    if (nodes.v[i].channel < 0) continue;
+    if (root < 0) {
+      root = (int32_t)i;
+      continue;
+    }
+    /* LCA by walking up (depth-first order: ancestors have lower index). */
+    a = root;
+    b = (int32_t)i;
+    while (a != b) {
+      if (a > b) a = nodes.v[a].parent;
+      else b = nodes.v[b].parent;
+      if (a < 0 || b < 0) break;
+    }
+    root = a >= 0 && b >= 0 ? a : 0;
+  }
+  if (root < 0) {
+    smgb_imp_errorf(err, "%s: no animation channel matches a node", path);
+    goto done;
+  }
+  /* Keep animated nodes under the root and their ancestors up to it. */
+  for (i = nodes.count; i-- > (uint32_t)root;) {
+    int32_t p;
+    if (nodes.v[i].channel < 0 && !nodes.v[i].keep) continue;
+    nodes.v[i].keep = 1;
+    p = nodes.v[i].parent;
+    if ((int32_t)i != root && p >= root) nodes.v[p].keep = 1;
+  }
+  for (i = (uint32_t)root; i < nodes.count; ++i) {
+    int32_t a = (int32_t)i;
+    if (!nodes.v[i].keep) continue;
+    while (a > root) a = nodes.v[a].parent; /* is it below the root? */
+    if (a != root) {
+      nodes.v[i].keep = 0;
+      continue;
+    }
+    if (J >= SMGB_ASSIMP_MAX_JOINTS) {
+      smgb_imp_errorf(err, "%s: skeleton has more than %u joints", path,
+                      SMGB_ASSIMP_MAX_JOINTS);
+      res = SMG_ERROR_CAPACITY;
+      goto done;
+    }
+    nodes.v[i].joint = (int32_t)J++;
+  }
+  /* Global transform of the root's parent. */
+  memset(&parent_global, 0, sizeof parent_global);
+  parent_global.m[0] = parent_global.m[4] = parent_global.m[8] = 1.0;
+  {
+    int32_t a = nodes.v[root].parent;
+    while (a >= 0) {
+      affine local;
+      affine_from_ai(&nodes.v[a].node->mTransformation, &local);
+      affine_mul(&local, &parent_global, &parent_global);
+      a = nodes.v[a].parent;
+    }
+  }
+  if (!affine_rotation(&parent_global, &parent_scale, parent_q)) {
+    smgb_imp_errorf(err,
+                    "%s: the nodes above the skeleton root mirror or scale "
+                    "non-uniformly (unsupported)",
+                    path);
+    res = SMG_ERROR_UNSUPPORTED;
+    goto done;
+  }
+
+  /* Per-joint data. */
+  joint_node = (int32_t*)malloc(sizeof *joint_node * J);
+  rest_q = (double*)malloc(sizeof *rest_q * 4 * J);
+  rest_t = (double*)malloc(sizeof *rest_t * 3 * J);
+  chans = (const struct aiNodeAnim**)calloc(J, sizeof *chans);
+  clip.skeleton.joint_count = J;
+  clip.skeleton.names = (char(*)[SMGB_NAME_MAX])calloc(J, SMGB_NAME_MAX);
+  clip.skeleton.parents = (int32_t*)malloc(sizeof(int32_t) * J);
+  clip.skeleton.offsets = (float(*)[3])malloc(sizeof(float) * 3 * J);
+  if (!joint_node || !rest_q || !rest_t || !chans || !clip.skeleton.names ||
+      !clip.skeleton.parents || !clip.skeleton.offsets) {
+    smgb_imp_errorf(err, "%s: out of memory", path);
+    res = SMG_ERROR_OUT_OF_MEMORY;
+    goto done;
+  }
+  for (i = (uint32_t)root; i < nodes.count; ++i) {
+    int32_t j = nodes.v[i].joint, k;
+    affine local;
+    double s;
+    const char* nm;
+    if (j < 0) continue;
+    joint_node[j] = (int32_t)i;
+    nm = nodes.v[i].node->mName.data;
+    if (strlen(nm) >= SMGB_NAME_MAX || nm[0] == '\0') {
+      smgb_imp_errorf(err, "%s: joint name '%.60s' is empty or longer than %d "
+                      "characters", path, nm, SMGB_NAME_MAX - 1);
+      goto done;
+    }
+    for (k = 0; k < j; ++k) {
+      if (strcmp(clip.skeleton.names[k], nm) == 0) {
+        smgb_imp_errorf(err, "%s: duplicate joint name '%s'", path, nm);
+        goto done;
+      }
+    }
+    memcpy(clip.skeleton.names[j], nm, strlen(nm) + 1);
+    clip.skeleton.parents[j] =
+        (int32_t)i == root ? -1 : nodes.v[nodes.v[i].parent].joint;
+    affine_from_ai(&nodes.v[i].node->mTransformation, &local);
+    if (!affine_rotation(&local, &s, rest_q + 4 * j)) {
+      /* A scaled joint: keep its rotation only (scale ignored). */
+      double X[3] = {local.m[0], local.m[3], local.m[6]};
+      double Y[3] = {local.m[1], local.m[4], local.m[7]};
+      double Z[3] = {local.m[2], local.m[5], local.m[8]};
+      smgb_qfrom_axes(X, Y, Z, rest_q + 4 * j);
+    }
+    rest_t[3 * j + 0] = local.t[0];
+    rest_t[3 * j + 1] = local.t[1];
+    rest_t[3 * j + 2] = local.t[2];
+    if (nodes.v[i].channel >= 0) {
+      const struct aiNodeAnim* ch = anim->mChannels[nodes.v[i].channel];
+      chans[j] = ch;
+      if (ch->mNumRotationKeys > 0) {
+        if (ch->mRotationKeys[0].mTime < t_min) t_min = ch->mRotationKeys[0].mTime;
+        if (ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime > t_max)
+          t_max = ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime;
+        if (!chans[densest] || ch->mNumRotationKeys > chans[densest]->mNumRotationKeys)
+          densest = (uint32_t)j;
+      }
+      if (ch->mNumPositionKeys > 0) {
+        if (ch->mPositionKeys[0].mTime < t_min) t_min = ch->mPositionKeys[0].mTime;
+        if (ch->mPositionKeys[ch->mNumPositionKeys - 1].mTime > t_max)
+          t_max = ch->mPositionKeys[ch->mNumPositionKeys - 1].mTime;
+      }
+    }
+  }
+  if (!(t_max >= t_min)) t_min = t_max = 0.0;
+  /* Frame rate from the densest rotation channel's key spacing. */
+  rate = 30.0;
+  if (chans[densest] && chans[densest]->mNumRotationKeys >= 2) {
+    const struct aiNodeAnim* ch = chans[densest];
+    double span = ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime -
+                  ch->mRotationKeys[0].mTime;
+    if (span > 0.0) {
+      double r = (ch->mNumRotationKeys - 1) * tps / span, ri = floor(r + 0.5);
+      rate = (ri >= 1.0 && fabs(r - ri) <= 1e-3 * ri) ? ri : r;
+    }
+  }
+  if (!(rate >= 1.0) || rate > 1000.0) {
+    smgb_imp_errorf(err, "%s: implausible key rate %.3g per second", path, rate);
+    goto done;
+  }
+  {
+    double nf = floor((t_max - t_min) / tps * rate + 1e-6) + 1.0;
+    if (nf > SMGB_ASSIMP_MAX_FRAMES ||
+        nf * SMGB_STRIDE(J) * sizeof(float) > (double)SMGB_ASSIMP_MAX_POSE_BYTES) {
+      smgb_imp_errorf(err, "%s: animation too long (%.0f frames)", path, nf);
+      res = SMG_ERROR_CAPACITY;
+      goto done;
+    }
+    frames = (uint32_t)nf;
+  }
+  stride = SMGB_STRIDE(J);
+  clip.poses = (float*)malloc(sizeof(float) * (size_t)frames * stride);
+  if (!clip.poses) {
+    smgb_imp_errorf(err, "%s: out of memory for %u frames", path, frames);
+    res = SMG_ERROR_OUT_OF_MEMORY;
+    goto done;
+  }
+  clip.frame_count = frames;
+  clip.frame_rate = (float)rate;
+
+  /* Offsets (file units, times the parents' uniform scale) from the first
+   * frame; non-root translation must stay constant. */
+  for (i = 0; i < J; ++i) {
+    double t0[3] = {rest_t[3 * i], rest_t[3 * i + 1], rest_t[3 * i + 2]};
+    /* The root's offset is informational (its position is per frame): keep
+     * the rest transform, as the BVH reader keeps the root OFFSET. */
+    if (i > 0) sample_position(chans[i], t_min, t0);
+    clip.skeleton.offsets[i][0] = (float)(t0[0] * parent_scale);
+    clip.skeleton.offsets[i][1] = (float)(t0[1] * parent_scale);
+    clip.skeleton.offsets[i][2] = (float)(t0[2] * parent_scale);
+    if (i > 0 && chans[i] && chans[i]->mNumPositionKeys > 1) {
+      uint32_t k;
+      double tol = 1e-4 + 1e-2 * sqrt(t0[0] * t0[0] + t0[1] * t0[1] + t0[2] * t0[2]);
+      for (k = 0; k < chans[i]->mNumPositionKeys; ++k) {
+        const struct aiVector3D* v = &chans[i]->mPositionKeys[k].mValue;
+        if (fabs(v->x - t0[0]) > tol || fabs(v->y - t0[1]) > tol ||
+            fabs(v->z - t0[2]) > tol) {
+          smgb_imp_errorf(err,
+                          "%s: joint '%s' has animated translation (key %u); "
+                          "only the root may translate",
+                          path, clip.skeleton.names[i], k);
+          res = SMG_ERROR_UNSUPPORTED;
+          goto done;
+        }
+      }
+    }
+  }
+  for (f = 0; f < frames; ++f) {
+    double t = t_min + f * tps / rate;
+    float* pose = clip.poses + (size_t)f * stride;
+    if (t > t_max) t = t_max;
+    for (i = 0; i < J; ++i) {
+      double q[4] = {rest_q[4 * i], rest_q[4 * i + 1], rest_q[4 * i + 2],
+                     rest_q[4 * i + 3]};
+      sample_rotation(chans[i], t, q);
+      if (i == 0) {
+        double p[3] = {rest_t[0], rest_t[1], rest_t[2]};
+        sample_position(chans[0], t, p);
+        affine_point(&parent_global, p, p);
+        pose[0] = (float)p[0];
+        pose[1] = (float)p[1];
+        pose[2] = (float)p[2];
+        smgb_qmul(parent_q, q, q);
+      }
+      smgb_qnormalize(q);
+      pose[3 + 4 * i + 0] = (float)q[0];
+      pose[3 + 4 * i + 1] = (float)q[1];
+      pose[3 + 4 * i + 2] = (float)q[2];
+      pose[3 + 4 * i + 3] = (float)q[3];
+      if (f > 0) {
+        const float* pq = pose - stride + 3 + 4 * i;
+        float* cq = pose + 3 + 4 * i;
+        if (pq[0] * cq[0] + pq[1] * cq[1] + pq[2] * cq[2] + pq[3] * cq[3] < 0) {
+          cq[0] = -cq[0]; cq[1] = -cq[1]; cq[2] = -cq[2]; cq[3] = -cq[3];
+        }
+      }
+    }
+  }
+  /* Units. */
+  hips_y = clip.poses[1];
+  scale = unit_scale > 0.0f ? unit_scale : guess_unit(&clip.skeleton, hips_y);
+  for (i = 0; i < J; ++i) {
+    clip.skeleton.offsets[i][0] = (float)(clip.skeleton.offsets[i][0] * scale);
+    clip.skeleton.offsets[i][1] = (float)(clip.skeleton.offsets[i][1] * scale);
+    clip.skeleton.offsets[i][2] = (float)(clip.skeleton.offsets[i][2] * scale);
+  }
+  for (f = 0; f < frames; ++f) {
+    float* pose = clip.poses + (size_t)f * stride;
+    pose[0] = (float)(pose[0] * scale);
+    pose[1] = (float)(pose[1] * scale);
+    pose[2] = (float)(pose[2] * scale);
+  }
+  base = strrchr(path, '/');
+  snprintf(clip.name, sizeof clip.name, "%s", base ? base + 1 : path);
+  *out = clip;
+  memset(&clip, 0, sizeof clip);
+  res = SMG_OK;
+
+done:
+  smgb_clip_free(&clip);
+  free(nodes.v);
+  free(joint_node);
+  free(rest_q);
+  free(rest_t);
+  free((void*)chans);
+  if (scene) aiReleaseImport(scene);
+  return res;
+}
