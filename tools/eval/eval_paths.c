@@ -182,8 +182,10 @@ static void skate_both(const series* s, size_t F, const uint8_t* lc,
   if (r.contact_frames && !(r.max_cm <= out->max_cm)) out->max_cm = r.max_cm;
 }
 
-/* Where each constraint took effect: the first frame at or after the
- * previous switch of the same kind whose style/action equals the target. */
+/* Where each constraint took effect: the first frame after the previous
+ * switch of the same kind at which the style/action changes INTO the
+ * target (a change event, not merely "equals", so a constraint whose
+ * predecessor never happened is not credited with the initial state). */
 static void find_switches(const eval_trace* t, const series* s,
                           path_result* pr) {
   size_t from[2] = {0, 0};
@@ -191,7 +193,9 @@ static void find_switches(const eval_trace* t, const series* s,
   for (c = 0; c < pr->constraint_count; ++c) {
     const eval_constraint* k = &pr->constraints[c];
     const uint32_t* lab = k->kind == EVAL_KIND_SPLICE ? t->action : t->style;
-    size_t f = em_first_label(lab, t->frames, from[k->kind], k->value);
+    size_t f;
+    for (f = from[k->kind] + 1; f < t->frames; ++f)
+      if (lab[f] == k->value && lab[f - 1] != k->value) break;
     pr->switch_frame[c] = f;
     pr->switch_arc[c] = f < t->frames ? s->arc[f] : NAN;
     if (f < t->frames) from[k->kind] = f;
@@ -414,7 +418,7 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
   }
   find_switches(&t, &s, pr);
   if (draw) draw_figure(ctx, g, p, path, n, &t, &s, pr);
-  if (draw && ctx->keep_dir) keep_trace(ctx, p, &t, &s);
+  if (ctx->keep_dir && (draw || ctx->check)) keep_trace(ctx, p, &t, &s);
   series_free(&s);
   eval_trace_free(&t);
 }

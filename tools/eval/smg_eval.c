@@ -24,13 +24,6 @@
 #include "eval_ctx.h"
 #include "smg.h"
 
-#ifndef EVAL_HAVE_BAKE
-#define EVAL_HAVE_BAKE 1
-#endif
-#ifndef EVAL_HAVE_RUNTIME
-#define EVAL_HAVE_RUNTIME 1
-#endif
-
 static void usage(void) {
   fprintf(stderr,
           "usage: smg-eval [--shared DIR] [--out results.md] [--img DIR]\n"
@@ -205,37 +198,10 @@ int main(int argc, char** argv) {
     eval_log("CMU clips not found at %s: skipping the CMU parts%s",
              ctx.cmu_dir, ctx.check ? "" : " (the report says so)");
 
-#if EVAL_HAVE_BAKE
   eval_section_bake(&ctx, &blob, &blob_size);
-#else
-  eval_md(&ctx,
-          "## 1. Preprocessing\n\nNot available yet: the baker "
-          "(`smg_bake_run`, libsmg/bake) is not in this build.\n\n");
-  eval_log("baker not in this build: preprocessing skipped");
-#endif
-
-#if EVAL_HAVE_RUNTIME
   eval_section_paths(&ctx, blob, blob_size);
-#if EVAL_HAVE_BAKE
   eval_section_splice(&ctx);
-#else
-  eval_md(&ctx,
-          "## 3. Splicing accuracy\n\nNot available yet: needs the baker "
-          "(`smg_bake_run`) to bake the 06_01 + dribble blob.\n\n"
-          "## 4. Synchronization\n\nNot available yet: needs the baker.\n\n");
-#endif
-#else
-  eval_md(&ctx,
-          "## 2. Path following\n\nNot available yet: the runtime "
-          "(`smg_character_step`, libsmg/runtime) is not in this build.\n\n"
-          "## 3. Splicing accuracy\n\nNot available yet: needs the "
-          "runtime.\n\n"
-          "## 4. Synchronization\n\nNot available yet: needs the "
-          "runtime.\n\n");
-  eval_log("runtime not in this build: paths, splicing and sync skipped");
-#endif
   free(blob);
-  (void)blob_size;
 
   if (ctx.md) {
     eval_md(&ctx,
