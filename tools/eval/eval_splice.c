@@ -509,7 +509,7 @@ static void figure_worst(eval_ctx* ctx, const splice_blob* sb,
   double go[3], gq[4];
   svp_figure* fig = NULL;
   char full[1400], title[160];
-  const double shift = 1.2; /* front view drawn beside the side view */
+  const double shift = 1.0; /* front view drawn beside the side view */
   size_t f = e->worst;
   double src = e->src[f];
   a = (double*)malloc(3 * (size_t)J * sizeof(double));
@@ -534,7 +534,7 @@ static void figure_worst(eval_ctx* ctx, const splice_blob* sb,
   svp_set_labels(fig, "side view: forward (m)  |  front view: sideways (m)",
                  "height (m)");
   svp_set_equal_aspect(fig, 1);
-  svp_set_range(fig, -0.9, 3.0, -0.1, 2.2);
+  svp_set_range(fig, -0.7, 2.0, -0.1, 2.2);
   for (view = 0; view < 2; ++view) {
     for (j = 1; j < J; ++j) {
       int32_t p = sb->gd.joints[j].parent;
@@ -583,6 +583,8 @@ static void phase_diffs(const splice_eval* e, const double* up, double* out) {
 typedef struct sync_numbers {
   double mean, sd, drift, corr;
   size_t count;
+  double foot_mean, foot_sd; /* phase difference at lower footfalls */
+  size_t foot_count;
 } sync_numbers;
 
 static void sync_stats(const splice_eval* e, const double* up,
@@ -597,6 +599,14 @@ static void sync_stats(const splice_eval* e, const double* up,
   em_unwrap(diff, e->frames, unwrapped);
   s->drift = em_linear_slope(e->time, unwrapped, e->frames, NULL);
   s->corr = NAN;
+  s->foot_count = 0;
+  s->foot_mean = s->foot_sd = NAN;
+  if (cu) {
+    size_t q = 0;
+    for (f = 1; f < e->frames; ++f)
+      if (e->phase_low[f] == 0.0 && isfinite(diff[f])) cu[q++] = diff[f];
+    s->foot_count = em_circular_stats(cu, q, &s->foot_mean, &s->foot_sd);
+  }
   if (cu && cl) {
     for (f = 0; f < e->frames; ++f) {
       cu[f] = isfinite(up[f]) ? cos(2.0 * 3.14159265358979323846 * up[f])
@@ -667,11 +677,18 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
           eval_fmt(d, sizeof(d), "%+.3f", after.mean));
   eval_md(ctx,
           "| circular std of the phase difference (cycles) | %s | %s |\n"
-          "| correlation of cos(2 pi phase), upper vs lower | %s | %s |\n\n",
+          "| correlation of cos(2 pi phase), upper vs lower | %s | %s |\n",
           eval_fmt(a, sizeof(a), "%.3f", before.sd),
           eval_fmt(b, sizeof(b), "%.3f", after.sd),
           eval_fmt(c, sizeof(c), "%.2f", before.corr),
           eval_fmt(d, sizeof(d), "%.2f", after.corr));
+  eval_md(ctx,
+          "| upper-body phase at the lower body's left footfalls: count, "
+          "circular mean / std (cycles) | %zu, %s / %s | %zu, %s / %s |\n\n",
+          before.foot_count, eval_fmt(a, sizeof(a), "%+.3f", before.foot_mean),
+          eval_fmt(b, sizeof(b), "%.3f", before.foot_sd), after.foot_count,
+          eval_fmt(c, sizeof(c), "%+.3f", after.foot_mean),
+          eval_fmt(d, sizeof(d), "%.3f", after.foot_sd));
   eval_md(ctx,
           "Gait period of the output's lower body (06_01 walk, runtime "
           "contact flags): %s s; gait period of the dribble clip 06_10: "
@@ -695,6 +712,25 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
            "before: upper body at its own gait rate");
   svp_line(fig, e->time, u_after, e->frames, "#d62728", 2.0, 0,
            "after: libsmg runtime (synchronized)");
+  /* The lower body's left footfalls: where the phase difference is read
+   * as "upper-body phase at each footfall". */
+  {
+    double* fx = (double*)malloc(e->frames * sizeof(double));
+    double* fy = (double*)malloc(e->frames * sizeof(double));
+    size_t q = 0;
+    if (fx && fy) {
+      for (f = 1; f < e->frames; ++f)
+        if (e->phase_low[f] == 0.0 && isfinite(u_after[f])) {
+          fx[q] = e->time[f];
+          fy[q] = u_after[f];
+          q++;
+        }
+      svp_scatter(fig, fx, fy, q, SVP_SQUARE, "#6a3d9a", 3.0,
+                  "lower-body left footfall");
+    }
+    free(fx);
+    free(fy);
+  }
   eval_img_path(ctx, "eval-sync-phase.svg", full, sizeof(full));
   if (svp_write(fig, full) == 0)
     eval_md(ctx, "![phase difference over time](%s/eval-sync-phase.svg)\n\n",
