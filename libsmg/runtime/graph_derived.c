@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "alloc.h"
+#include "rmath.h"
 
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
@@ -63,6 +64,56 @@ static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
   in_first[0] = 0;
 }
 
+/* Natural continuation of every lower node and where following it for
+ * SMGI_LOOK_SECONDS leads (ground transform composed edge by edge). */
+static void build_look(const smgi_graph_data* d, uint32_t* natural,
+                       float* look) {
+  const uint32_t LN = d->lower_node_count;
+  const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
+  const float look_frames = SMGI_LOOK_SECONDS * fps;
+  for (uint32_t n = 0; n < LN; ++n) {
+    const smgi_node* node = &d->lower_nodes[n];
+    natural[n] = SMGI_NONE;
+    for (uint32_t k = 0; k < node->edge_count; ++k) {
+      const smgi_edge* e = &d->lower_edges[node->first_edge + k];
+      if (e->first_frame == node->frame &&
+          !(e->flags & SMGI_EDGE_TRANSITION)) {
+        natural[n] = node->first_edge + k;
+        break;
+      }
+    }
+    if (natural[n] == SMGI_NONE && node->edge_count > 0) {
+      /* no original motion continues here: the cheapest edge stands in */
+      uint32_t best = node->first_edge;
+      for (uint32_t k = 1; k < node->edge_count; ++k)
+        if (d->lower_edges[node->first_edge + k].cost <
+            d->lower_edges[best].cost)
+          best = node->first_edge + k;
+      natural[n] = best;
+    }
+  }
+  for (uint32_t n = 0; n < LN; ++n) {
+    smgi_xform2 acc = {0.0f, 0.0f, 0.0f};
+    float arc = 0.0f, frames = 0.0f;
+    uint32_t cur = n;
+    for (uint32_t hop = 0; hop < 256u && frames < look_frames; ++hop) {
+      uint32_t e = natural[cur];
+      if (e == SMGI_NONE) break;
+      const smgi_edge* E = &d->lower_edges[e];
+      smgi_xform2 step = {E->displacement[0], E->displacement[1],
+                          E->displacement[2]};
+      acc = smgi_xf_mul(acc, step);
+      arc += E->arc_length;
+      frames += (float)E->frame_count;
+      cur = E->to;
+    }
+    look[4u * n + 0u] = acc.x;
+    look[4u * n + 1u] = acc.z;
+    look[4u * n + 2u] = acc.h;
+    look[4u * n + 3u] = arc;
+  }
+}
+
 smg_result smgi_graph_derived_build(smg_graph* g) {
   if (!g) return SMG_ERROR_INVALID_ARGUMENT;
   const smgi_graph_data* d = &g->data;
@@ -76,7 +127,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_fu = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
   size_t off_af = off_fu + align16(sizeof(uint32_t) * (size_t)F);
   size_t off_sn = off_af + align16(sizeof(uint32_t) * (size_t)A);
-  size_t total = off_sn + align16(sizeof(uint32_t) * (size_t)S);
+  size_t off_nl = off_sn + align16(sizeof(uint32_t) * (size_t)S);
+  size_t off_nn = off_nl + align16(sizeof(float) * 4u * (size_t)LN);
+  size_t total = off_nn + align16(sizeof(uint32_t) * (size_t)LN);
   size_t block = align16(sizeof(smgi_derived));
 
   uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 16);
@@ -90,6 +143,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* frame_upper = (uint32_t*)(base + off_fu);
   uint32_t* action_first = (uint32_t*)(base + off_af);
   uint32_t* style_first = (uint32_t*)(base + off_sn);
+  float* node_look = (float*)(base + off_nl);
+  uint32_t* natural = (uint32_t*)(base + off_nn);
 
   /* Scratch for the BFS: reverse adjacency of the larger graph. */
   uint32_t maxn = LN > UN ? LN : UN;
@@ -145,6 +200,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
     if (d->lower_nodes[n].edge_count > maxdeg)
       maxdeg = d->lower_nodes[n].edge_count;
 
+  build_look(d, natural, node_look);
+
   dv->lower_hops = lower_hops;
   dv->upper_hops = upper_hops;
   dv->splice_first = splice_first;
@@ -152,6 +209,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   dv->action_first_edge = action_first;
   dv->style_first_node = style_first;
   dv->max_lower_degree = maxdeg;
+  dv->node_look = node_look;
+  dv->natural_next = natural;
   g->derived = dv;
   return SMG_OK;
 }

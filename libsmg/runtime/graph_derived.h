@@ -14,6 +14,7 @@
 #include "graph_internal.h"
 
 #define SMGI_HOPS_UNREACHABLE 255u
+#define SMGI_LOOK_SECONDS 0.7f
 
 typedef struct smgi_derived {
   /* lower_hops[node * style_count + style]: number of edges to traverse
@@ -35,6 +36,16 @@ typedef struct smgi_derived {
   const uint32_t* action_first_edge;
   /* First lower node labelled with each style (SMGI_NONE if none). */
   const uint32_t* style_first_node;
+  /* node_look[4 * node]: where the node's natural continuation (the
+   * original motion that follows its pose, edge after edge) leads within
+   * SMGI_LOOK_SECONDS: dx, dz, dheading in the node's ground frame, and
+   * the arc length. Lets the greedy planner judge an edge by where it
+   * leads, not only by its own few frames (baked edges may be 2 frames). */
+  const float* node_look;
+  /* natural_next[node]: the out-edge continuing the node's original
+   * motion (first_frame == the node's frame, not a transition), or
+   * SMGI_NONE. */
+  const uint32_t* natural_next;
   /* Largest out-degree of any lower node (bounds planner work). */
   uint32_t max_lower_degree;
 } smgi_derived;

@@ -70,6 +70,68 @@ static float style_penalty(const smg_character* ch, const smgi_edge* e,
   return STYLE_WEIGHT * (1.0f + (float)h);
 }
 
+/* Value of standing at `node` with ground transform W and progress s:
+ * where the node's natural continuation leads (derived node_look) against
+ * the path further on, position plus heading error. */
+static float leaf_value(const smg_character* ch, uint32_t node,
+                        smgi_xform2 W, float s, uint32_t seg) {
+  const float* look = smgi_derived_of(ch->graph)->node_look + 4u * node;
+  smgi_xform2 lk = {look[0], look[1], look[2]};
+  smgi_xform2 end = smgi_xf_mul(W, lk);
+  float x, z, h;
+  smgi_path_eval(&ch->path, s + look[3], &seg, &x, &z, &h);
+  float d = sqrtf((end.x - x) * (end.x - x) + (end.z - z) * (end.z - z));
+  return d + HEADING_WEIGHT * fabsf(smgi_wrap_angle(end.h - h));
+}
+
+/* Bounded look-ahead below a candidate edge: a depth-first search over the
+ * next `frames_left` frames of graph (at most *budget edge evaluations,
+ * shared by the whole subtree), returning the best achievable worst
+ * distance error plus the leaf's heading error and style penalties. Baked
+ * graphs can have edges of two frames and nodes with one or two exits; a
+ * one-edge greedy choice cannot see that a turn becomes possible three
+ * edges later, this can - at a fixed, small cost. */
+static float look_value(const smg_character* ch, uint32_t node,
+                        smgi_xform2 W, float s, uint32_t seg,
+                        float frames_left, uint32_t* budget, uint32_t depth) {
+  const smg_graph* g = ch->graph;
+  const smgi_node* n = &g->data.lower_nodes[node];
+  if (frames_left <= 0.0f || *budget == 0 || depth >= 24u ||
+      n->edge_count == 0)
+    return leaf_value(ch, node, W, s, seg);
+  float best = INFINITY;
+  for (uint32_t k = 0; k < n->edge_count && *budget > 0; ++k) {
+    /* natural continuation first, so a small budget follows it; then
+     * the other exits in order */
+    uint32_t nat = smgi_derived_of(g)->natural_next[node];
+    uint32_t ei = n->first_edge + k;
+    if (nat != SMGI_NONE) {
+      if (k == 0) {
+        ei = nat;
+      } else {
+        ei = n->first_edge + k - 1u;
+        if (ei >= nat) ++ei;
+      }
+    }
+    (*budget)--;
+    const smgi_edge* e = &g->data.lower_edges[ei];
+    smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
+    float s_t = s + e->arc_length;
+    uint32_t sg = seg;
+    float x, z;
+    smgi_path_eval(&ch->path, s_t, &sg, &x, &z, NULL);
+    float d = sqrtf((end.x - x) * (end.x - x) + (end.z - z) * (end.z - z));
+    float pen = 0.5f * style_penalty(ch, e, smgi_style_at(ch, s_t));
+    if (d + pen >= best) continue; /* cannot beat what we have */
+    float sub = look_value(ch, e->to, end, s_t, sg,
+                           frames_left - (float)e->frame_count, budget,
+                           depth + 1u);
+    float v = (d > sub ? d : sub) + pen;
+    if (v < best) best = v;
+  }
+  return isfinite(best) ? best : leaf_value(ch, node, W, s, seg);
+}
+
 static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
                      uint32_t seg, uint32_t edge_index, cand* out) {
   const smg_graph* g = ch->graph;
@@ -81,14 +143,19 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
   out->seg_end = seg;
   out->s_end = s;
 
+  /* where the edge's natural continuation leads: judges an edge by the
+   * next SMGI_LOOK_SECONDS of motion, not only its own frames */
+  const float* look = smgi_derived_of(g)->node_look + 4u * e->to;
+  smgi_xform2 lk = {look[0], look[1], look[2]};
+  smgi_xform2 end2 = smgi_xf_mul(end, lk);
   int following = p->count >= 2u && s < p->length - END_EPS;
   float score, err;
   if (following) {
     float arc = e->arc_length;
     float s_t = s + arc;
     uint32_t sg = seg;
-    float tx, tz, th;
-    smgi_path_eval(p, s_t, &sg, &tx, &tz, &th);
+    float tx, tz;
+    smgi_path_eval(p, s_t, &sg, &tx, &tz, NULL);
     float dx = end.x - tx, dz = end.z - tz;
     float e_end = sqrtf(dx * dx + dz * dz);
     /* mid-edge root sample, placed from FRMI without FK */
@@ -101,9 +168,13 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
     uint32_t sm = seg;
     smgi_path_eval(p, s + 0.5f * arc, &sm, &px, &pz, NULL);
     float e_mid = sqrtf((mx - px) * (mx - px) + (mz - pz) * (mz - pz));
-    float dh = fabsf(smgi_wrap_angle(end.h - th));
+    /* where this edge can lead within the look-ahead window */
+    uint32_t budget = SMGI_LOOK_BUDGET;
+    float la = look_value(ch, e->to, end, s_t, sg,
+                          SMGI_LOOK_SECONDS * ch->fps - (float)e->frame_count,
+                          &budget, 0);
     err = e_end > e_mid ? e_end : e_mid;
-    score = e_end + 0.5f * e_mid + HEADING_WEIGHT * dh;
+    score = e_end + 0.5f * e_mid + la;
     float dist;
     out->s_end = smgi_path_project_local(p, end.x, end.z, &sg, &dist);
     out->seg_end = sg;
@@ -113,9 +184,12 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
     float tx, tz;
     end_target(ch, &tx, &tz);
     float dx = end.x - tx, dz = end.z - tz;
+    float lx = end2.x - tx, lz = end2.z - tz;
     err = 0.0f; /* nothing to follow: never backtrack */
-    score = sqrtf(dx * dx + dz * dz) + END_SPEED_WEIGHT * e->arc_length;
-    out->pen = style_penalty(ch, e, smgi_style_at(ch, s));
+    score = sqrtf(dx * dx + dz * dz) + sqrtf(lx * lx + lz * lz) +
+            END_SPEED_WEIGHT * (e->arc_length + look[3]);
+    /* nothing to follow: the asked-for style matters most */
+    out->pen = 10.0f * style_penalty(ch, e, smgi_style_at(ch, s));
     score += out->pen;
   }
   out->score = isfinite(score) ? score : INFINITY;
