@@ -91,7 +91,7 @@ typedef struct smg_bake_options {
   float window_seconds;      /* transition/splice window; 0 = 1/3 s */
   float transition_percentile; /* keep local minima of the frame distance
                                 below this percentile of all local minima,
-                                per (style, style) pair; 0 = 20 */
+                                per (label, label) pair; 0 = 30 */
   float transition_threshold;  /* absolute RMS distance cap (metres) on
                                 top of the percentile; 0 = none */
   float max_edge_seconds;    /* simplification cap on merged edges; 0 = 1 */

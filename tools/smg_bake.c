@@ -41,7 +41,7 @@ static void usage(FILE* fp) {
       "  --no-mirror            do not add mirrored clips\n"
       "  --window S             transition window, seconds (default 0.333)\n"
       "  --percentile P         transition candidates kept, percent of local\n"
-      "                         minima per style pair (default 20)\n"
+      "                         minima per style pair (default 30)\n"
       "  --threshold M          absolute transition distance cap, metres\n"
       "  --max-edge S           longest merged edge, seconds (default 1)\n"
       "  --splice-percentile P  splice candidates kept per action (30)\n"
@@ -96,10 +96,18 @@ static void graph_summary(const char* title, const smgi_graph_data* g,
                           const smgi_edge* edges, uint32_t ne,
                           uint32_t nodes_before, uint32_t edges_before,
                           const smgi_label* labels, uint32_t label_count) {
-  uint32_t e, transitions = 0, changes = 0, frames = 0, l;
-  double arc = 0.0, maxlen = 0.0;
+  uint32_t e, transitions = 0, changes = 0, frames = 0, l, c;
+  uint32_t source = 0, used = 0, role = 0;
+  double arc = 0.0, maxlen = 0.0, cost = 0.0;
   for (e = 0; e < ne; ++e) {
-    if (edges[e].flags & SMGI_EDGE_TRANSITION) ++transitions;
+    if (edges[e].flags & SMGI_EDGE_TRANSITION) {
+      ++transitions;
+      cost += edges[e].cost;
+    } else {
+      used += edges[e].frame_count;
+      role = g->clips[g->frames[edges[e].first_frame].clip].flags &
+             (SMGI_CLIP_LOWER | SMGI_CLIP_UPPER);
+    }
     if (edges[e].flags & SMGI_EDGE_STYLE_CHANGE) ++changes;
     frames += edges[e].frame_count;
     arc += edges[e].arc_length;
@@ -107,9 +115,15 @@ static void graph_summary(const char* title, const smgi_graph_data* g,
   }
   printf("%s graph: %u nodes, %u edges (before simplification: %u nodes, "
          "%u edges)\n", title, nn, ne, nodes_before, edges_before);
-  printf("  %u transition edges, %u label-changing, %u frames on edges, "
-         "longest edge %.2f s, total arc %.1f m\n", transitions, changes,
-         frames, maxlen / g->info->frame_rate, arc);
+  for (c = 0; c < g->clip_count; ++c)
+    if ((g->clips[c].flags & role) && !(g->clips[c].flags & SMGI_CLIP_BLEND))
+      source += g->clips[c].frame_count;
+  printf("  %u transition edges (mean cost %.3f m), %u label-changing, "
+         "%u frames on edges, longest edge %.2f s, total arc %.1f m\n",
+         transitions, transitions ? cost / transitions : 0.0, changes, frames,
+         maxlen / g->info->frame_rate, arc);
+  printf("  original motion on edges: %u of %u clip frames (%.0f %%)\n", used,
+         source, source ? 100.0 * used / source : 0.0);
   for (l = 0; l < label_count; ++l) {
     uint32_t n, cnt = 0;
     for (n = 0; n < nn; ++n) cnt += nodes[n].label == l;

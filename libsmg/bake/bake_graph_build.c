@@ -92,6 +92,14 @@ static int pair_filter(uint32_t i, uint32_t j, void* user) {
   const smgb_bake* b = c->b;
   uint32_t ci = c->clip_of[i], cj = c->clip_of[j];
   uint32_t k = b->opt.window;
+  /* A transition can only lie on a cycle if something arrives at or before
+   * its start (arrivals are >= k frames into a clip) and something departs
+   * at or after its arrival (departures need k + 1 frames of clip left):
+   * others would be pruned anyway, and keeping them would crowd out useful
+   * ones in the thinning below. */
+  if (c->map[i] - b->clips[ci].first < k) return 0;
+  if (c->map[j] - b->clips[cj].first + 2u * k + 1u > b->clips[cj].count)
+    return 0;
   if (ci == cj) {
     uint32_t d = i > j ? i - j : j - i;
     if (d < 2u * k) return 0; /* near the diagonal: same motion */
@@ -104,14 +112,16 @@ static int pair_filter(uint32_t i, uint32_t j, void* user) {
 typedef struct cand {
   smgb_minimum m;
   uint32_t li, lj;    /* labels */
-  uint32_t region;    /* source region: (clip, local frame / k) */
+  uint32_t region;    /* source region: (clip, local frame / span) */
+  uint32_t target;    /* thinning group: target clip (same label) or
+                         0x80000000 | target label (label change) */
 } cand;
 
 static int region_cmp(const void* pa, const void* pb) {
   const cand* a = pa;
   const cand* b = pb;
   if (a->region != b->region) return a->region < b->region ? -1 : 1;
-  if (a->lj != b->lj) return a->lj < b->lj ? -1 : 1;
+  if (a->target != b->target) return a->target < b->target ? -1 : 1;
   if (a->m.dist != b->m.dist) return a->m.dist < b->m.dist ? -1 : 1;
   if (a->m.i != b->m.i) return a->m.i < b->m.i ? -1 : 1;
   if (a->m.j != b->m.j) return a->m.j < b->m.j ? -1 : 1;
@@ -146,16 +156,157 @@ static uint32_t find_node(const smgb_graph* g, uint32_t frame) {
   return lo < g->node_count && g->nodes[lo].frame == frame ? lo : SMGI_NONE;
 }
 
+/* Percentile per (label, label) pair (plus the optional absolute cap), then
+ * thinning: periodic motion has a local minimum against every cycle of
+ * every similar clip, so per source region (see cand.region) and target
+ * clip (label, for label changes) only the best candidate is kept.
+ * Returns the new count. */
+static uint32_t select_candidates(const smgb_bake* b, cand* cands,
+                                  uint32_t n) {
+  uint32_t i, kept = 0, t, nk = 0;
+  qsort(cands, n, sizeof *cands, cand_cmp);
+  for (i = 0; i < n;) {
+    uint32_t e = i, keep;
+    while (e < n && cands[e].li == cands[i].li && cands[e].lj == cands[i].lj)
+      ++e;
+    keep = (uint32_t)ceil((e - i) * (double)b->opt.transition_percentile /
+                          100.0);
+    if (keep < 1) keep = 1;
+    for (t = i; t < i + keep && t < e; ++t) {
+      if (b->opt.transition_threshold > 0.0f &&
+          cands[t].m.dist > b->opt.transition_threshold && t > i)
+        break;
+      cands[kept++] = cands[t];
+    }
+    i = e;
+  }
+  qsort(cands, kept, sizeof *cands, region_cmp);
+  for (t = 0; t < kept; ++t) {
+    if (nk > 0 && cands[nk - 1].region == cands[t].region &&
+        cands[nk - 1].target == cands[t].target)
+      continue;
+    cands[nk++] = cands[t];
+  }
+  return nk;
+}
+
+/* mark[f] = label + 1 for every pool frame lying on an original edge
+ * inside the largest strongly connected component of its label. */
+static smg_result mark_cores(const smgb_bake* b, const smgb_graph* g,
+                             uint8_t* mark) {
+  uint32_t N = g->node_count, n, e, l;
+  uint32_t* comp = malloc((N ? N : 1) * sizeof *comp);
+  uint32_t* size;
+  uint32_t best[SMGB_MAX_LABELS];
+  int32_t nc;
+  if (!comp) return SMG_ERROR_OUT_OF_MEMORY;
+  nc = smgb_scc(g, comp);
+  if (nc < 0) {
+    free(comp);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  size = calloc((size_t)nc + 1, sizeof *size);
+  if (!size) {
+    free(comp);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  for (n = 0; n < N; ++n) size[comp[n]]++;
+  for (l = 0; l < SMGB_MAX_LABELS; ++l) best[l] = SMGI_NONE;
+  for (n = 0; n < N; ++n) {
+    uint32_t lab = g->nodes[n].label;
+    if (lab >= SMGB_MAX_LABELS || size[comp[n]] < 2) continue;
+    if (best[lab] == SMGI_NONE || size[comp[n]] > size[best[lab]])
+      best[lab] = comp[n];
+  }
+  for (e = 0; e < g->edge_count; ++e) {
+    const smgb_edge* ed = &g->edges[e];
+    uint32_t lab = g->nodes[ed->from].label, f;
+    if (ed->kind != SMGB_EDGE_ORIGINAL || lab >= SMGB_MAX_LABELS) continue;
+    if (comp[ed->from] != best[lab] || comp[ed->to] != best[lab]) continue;
+    for (f = g->nodes[ed->from].frame; f <= g->nodes[ed->to].frame; ++f)
+      mark[f] = (uint8_t)(lab + 1);
+  }
+  (void)b;
+  free(size);
+  free(comp);
+  return SMG_OK;
+}
+
+/* Nodes at every transition end, transition edges, and original-motion
+ * edges between consecutive nodes of a clip. */
+static smg_result assemble(smgb_bake* b, smgb_graph* g, uint32_t role,
+                           const build_ctx* ctx, const cand* cands,
+                           uint32_t kept) {
+  uint32_t k = b->opt.window, i, n = 0;
+  uint32_t* frames = malloc((2u * kept + 1u) * sizeof *frames);
+  if (!frames) return SMG_ERROR_OUT_OF_MEMORY;
+  for (i = 0; i < kept; ++i) {
+    frames[n++] = ctx->map[cands[i].m.i];
+    frames[n++] = ctx->map[cands[i].m.j] + k;
+  }
+  qsort(frames, n, sizeof *frames, u32_cmp);
+  for (i = 0; i < n; ++i) {
+    if (i > 0 && frames[i] == frames[i - 1]) continue;
+    if (smgb_graph_add_node(g, frames[i],
+                            b->clips[b->frames[frames[i]].clip].label,
+                            NULL) != SMG_OK) {
+      free(frames);
+      return SMG_ERROR_OUT_OF_MEMORY;
+    }
+  }
+  free(frames);
+  for (i = 0; i < kept; ++i) {
+    smgb_edge e;
+    uint32_t pa = ctx->map[cands[i].m.i], pb = ctx->map[cands[i].m.j];
+    memset(&e, 0, sizeof e);
+    e.kind = SMGB_EDGE_TRANSITION;
+    e.a = pa;
+    e.b = pb;
+    e.from = find_node(g, pa);
+    e.to = find_node(g, pb + k);
+    e.cost = cands[i].m.dist;
+    if (role == SMGI_CLIP_LOWER) {
+      memcpy(e.align, cands[i].m.align, sizeof e.align);
+    } else {
+      /* upper clouds live in each frame's ground frame; the root of the
+       * action is irrelevant to splicing, so align ground frames */
+      double ga[3], gb[3], inv[3], zero[3] = {0, 0, 0};
+      const smgi_frame* fa = &b->frames[pa];
+      const smgi_frame* fb = &b->frames[pb];
+      ga[0] = fa->root2d[0]; ga[1] = fa->root2d[1]; ga[2] = fa->root2d[2];
+      gb[0] = fb->root2d[0]; gb[1] = fb->root2d[1]; gb[2] = fb->root2d[2];
+      smgb_g_relative(gb, zero, inv);
+      smgb_g_compose(ga, inv, e.align);
+    }
+    if (smgb_graph_add_edge(g, &e) != SMG_OK) return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  for (i = 0; i + 1 < g->node_count; ++i) {
+    uint32_t fa = g->nodes[i].frame, fb = g->nodes[i + 1].frame;
+    if (b->frames[fa].clip == b->frames[fb].clip) {
+      smgb_edge e;
+      memset(&e, 0, sizeof e);
+      e.kind = SMGB_EDGE_ORIGINAL;
+      e.from = i;
+      e.to = i + 1;
+      e.a = fa;
+      e.b = fb;
+      if (smgb_graph_add_edge(g, &e) != SMG_OK)
+        return SMG_ERROR_OUT_OF_MEMORY;
+    }
+  }
+  smgb_graph_sort_edges(g);
+  return SMG_OK;
+}
+
 smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   smgb_graph* g = role == SMGI_CLIP_LOWER ? &b->lower : &b->upper;
-  uint32_t k = b->opt.window, F = 0, c, f, P, n, i;
+  uint32_t k = b->opt.window, F = 0, c, f, P, i;
   build_ctx ctx;
   double *xyz = NULL, *w = NULL;
   uint8_t* valid = NULL;
   smgb_minimum* mins = NULL;
   uint32_t min_count = 0, kept = 0;
   cand* cands = NULL;
-  uint32_t* frames = NULL;
   smg_result r = SMG_ERROR_OUT_OF_MEMORY;
   smgb_cloud cloud;
   smgb_grid_job job;
@@ -240,107 +391,64 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
     cands[i].li = b->clips[ctx.clip_of[mins[i].i]].label;
     cands[i].lj = b->clips[ctx.clip_of[mins[i].j]].label;
     {
+      /* same-label candidates: one per k source frames; label changes are
+       * far costlier (walk vs run poses) and only need to be available,
+       * so one per max_edge_frames */
       uint32_t c0 = ctx.clip_of[mins[i].i];
-      /* pool frames are contiguous per clip, so the pool frame / k plus
-       * the clip index separates regions of different clips */
-      cands[i].region = (ctx.map[mins[i].i] - b->clips[c0].first) / k +
-                        b->clips[c0].first / k + c0;
+      uint32_t span = cands[i].li == cands[i].lj ? k : b->opt.max_edge_frames;
+      if (span < 1) span = 1;
+      /* pool frames are contiguous per clip: (clip, local frame / span) */
+      cands[i].region = c0 * 65536u +
+                        (ctx.map[mins[i].i] - b->clips[c0].first) / span;
+      cands[i].target = cands[i].li == cands[i].lj
+                            ? ctx.clip_of[mins[i].j]
+                            : 0x80000000u | cands[i].lj;
     }
   }
-  qsort(cands, min_count, sizeof *cands, cand_cmp);
-  for (i = 0; i < min_count;) {
-    uint32_t e = i, keep, t;
-    while (e < min_count && cands[e].li == cands[i].li &&
-           cands[e].lj == cands[i].lj)
-      ++e;
-    keep = (uint32_t)ceil((e - i) * (double)b->opt.transition_percentile /
-                          100.0);
-    if (keep < 1) keep = 1;
-    for (t = i; t < i + keep && t < e; ++t) {
-      if (b->opt.transition_threshold > 0.0f &&
-          cands[t].m.dist > b->opt.transition_threshold && t > i)
-        break;
-      cands[kept++] = cands[t];
-    }
-    i = e;
-  }
-  /* Thin out redundancy: periodic motion has a local minimum against every
-   * cycle of every similar clip. Per source region of k frames and target
-   * label, only the best candidate becomes a transition. */
-  qsort(cands, kept, sizeof *cands, region_cmp);
+  /* Same-label transitions first; label changes (walk <-> run) are chosen
+   * afterwards, only between the styles' own strongly connected cores, so
+   * that the few costly ones that are kept actually connect the styles. */
   {
-    uint32_t t, nk = 0;
-    for (t = 0; t < kept; ++t) {
-      if (nk > 0 && cands[nk - 1].region == cands[t].region &&
-          cands[nk - 1].lj == cands[t].lj)
-        continue;
-      cands[nk++] = cands[t];
+    uint32_t nsame = 0, ncross, t;
+    for (t = 0; t < min_count; ++t)
+      if (cands[t].li == cands[t].lj) {
+        cand tmp = cands[nsame];
+        cands[nsame++] = cands[t];
+        cands[t] = tmp;
+      }
+    ncross = min_count - nsame;
+    nsame = select_candidates(b, cands, nsame);
+    if (ncross > 0) {
+      uint8_t* mark = NULL;
+      memmove(cands + nsame, cands + (min_count - ncross),
+              ncross * sizeof *cands);
+      if ((r = assemble(b, g, role, &ctx, cands, nsame)) != SMG_OK) goto done;
+      mark = calloc(b->frame_count, 1);
+      if (!mark || mark_cores(b, g, mark) != SMG_OK) {
+        free(mark);
+        goto oom;
+      }
+      for (t = nsame; t < nsame + ncross;) {
+        uint32_t fi = ctx.map[cands[t].m.i], fj = ctx.map[cands[t].m.j] + k;
+        if (mark[fi] == cands[t].li + 1 && mark[fj] == cands[t].lj + 1) {
+          ++t;
+        } else {
+          cands[t] = cands[nsame + ncross - 1];
+          --ncross;
+        }
+      }
+      free(mark);
+      ncross = select_candidates(b, cands + nsame, ncross);
+      smgb_graph_free(g);
     }
-    kept = nk;
+    kept = nsame + ncross;
   }
   if (role == SMGI_CLIP_LOWER)
     b->lower_candidates = kept;
   else
     b->upper_candidates = kept;
-
-  /* nodes: sorted unique transition end frames */
-  frames = malloc((2u * kept + 1u) * sizeof *frames);
-  if (!frames) goto oom;
-  n = 0;
-  for (i = 0; i < kept; ++i) {
-    frames[n++] = ctx.map[cands[i].m.i];
-    frames[n++] = ctx.map[cands[i].m.j] + k;
-  }
-  qsort(frames, n, sizeof *frames, u32_cmp);
-  for (i = 0; i < n; ++i) {
-    if (i > 0 && frames[i] == frames[i - 1]) continue;
-    if (smgb_graph_add_node(g, frames[i],
-                            b->clips[b->frames[frames[i]].clip].label,
-                            NULL) != SMG_OK)
-      goto oom;
-  }
-  /* transition edges */
-  for (i = 0; i < kept; ++i) {
-    smgb_edge e;
-    uint32_t pa = ctx.map[cands[i].m.i], pb = ctx.map[cands[i].m.j];
-    memset(&e, 0, sizeof e);
-    e.kind = SMGB_EDGE_TRANSITION;
-    e.a = pa;
-    e.b = pb;
-    e.from = find_node(g, pa);
-    e.to = find_node(g, pb + k);
-    e.cost = cands[i].m.dist;
-    if (role == SMGI_CLIP_LOWER) {
-      memcpy(e.align, cands[i].m.align, sizeof e.align);
-    } else {
-      /* upper clouds live in each frame's ground frame; the root of the
-       * action is irrelevant to splicing, so align ground frames */
-      double ga[3], gb[3], inv[3], zero[3] = {0, 0, 0};
-      const smgi_frame* fa = &b->frames[pa];
-      const smgi_frame* fb = &b->frames[pb];
-      ga[0] = fa->root2d[0]; ga[1] = fa->root2d[1]; ga[2] = fa->root2d[2];
-      gb[0] = fb->root2d[0]; gb[1] = fb->root2d[1]; gb[2] = fb->root2d[2];
-      smgb_g_relative(gb, zero, inv);
-      smgb_g_compose(ga, inv, e.align);
-    }
-    if (smgb_graph_add_edge(g, &e) != SMG_OK) goto oom;
-  }
-  /* original-motion edges between consecutive nodes of a clip */
-  for (i = 0; i + 1 < g->node_count; ++i) {
-    uint32_t fa = g->nodes[i].frame, fb = g->nodes[i + 1].frame;
-    if (b->frames[fa].clip == b->frames[fb].clip) {
-      smgb_edge e;
-      memset(&e, 0, sizeof e);
-      e.kind = SMGB_EDGE_ORIGINAL;
-      e.from = i;
-      e.to = i + 1;
-      e.a = fa;
-      e.b = fb;
-      if (smgb_graph_add_edge(g, &e) != SMG_OK) goto oom;
-    }
-  }
-  smgb_graph_sort_edges(g);
-  r = SMG_OK;
+  r = assemble(b, g, role, &ctx, cands, kept);
+  if (r != SMG_OK) goto oom;
   goto done;
 oom:
   smgb_fail(b, "out of memory building the %s graph",
@@ -354,6 +462,5 @@ done:
   free(valid);
   free(mins);
   free(cands);
-  free(frames);
   return r;
 }

@@ -73,7 +73,7 @@ static void resolve_options(const smg_bake_options* in, smgb_options* o) {
   o->window = (uint32_t)lround(o->window_seconds * o->frame_rate);
   if (o->window < 2) o->window = 2;
   o->transition_percentile =
-      in->transition_percentile > 0.0f ? in->transition_percentile : 20.0f;
+      in->transition_percentile > 0.0f ? in->transition_percentile : 30.0f;
   if (o->transition_percentile > 100.0f) o->transition_percentile = 100.0f;
   o->transition_threshold = in->transition_threshold;
   o->max_edge_seconds = in->max_edge_seconds > 0.0f ? in->max_edge_seconds
