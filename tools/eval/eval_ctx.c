@@ -16,6 +16,16 @@ void eval_md(eval_ctx* ctx, const char* fmt, ...) {
   va_end(ap);
 }
 
+void eval_summary(eval_ctx* ctx, const char* fmt, ...) {
+  va_list ap;
+  if (!ctx || !ctx->summary) return;
+  fputs("- ", ctx->summary);
+  va_start(ap, fmt);
+  vfprintf(ctx->summary, fmt, ap);
+  va_end(ap);
+  fputc('\n', ctx->summary);
+}
+
 int eval_check(eval_ctx* ctx, int ok, const char* fmt, ...) {
   va_list ap;
   fprintf(stdout, "%s ", ok ? "PASS" : "FAIL");

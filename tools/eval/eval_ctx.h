@@ -23,7 +23,8 @@ typedef struct eval_ctx {
   int have_cmu;          /* the CMU clips are readable */
   const char* img_dir;   /* report mode: docs/img */
   const char* img_rel;   /* the same, relative to results.md ("img") */
-  FILE* md;              /* report mode: results.md being written */
+  FILE* md;              /* report mode: the report body (sections) */
+  FILE* summary;         /* report mode: summary bullets, printed first */
   int check;             /* check mode */
   int quick;             /* shrink work (check mode) */
   int failures;          /* failed checks */
@@ -34,6 +35,14 @@ typedef struct eval_ctx {
 
 /* Markdown output (no-op in check mode). */
 void eval_md(eval_ctx* ctx, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* One summary bullet (Markdown, no leading "- ", no newline); shown at the
+ * top of results.md. No-op in check mode. */
+void eval_summary(eval_ctx* ctx, const char* fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif

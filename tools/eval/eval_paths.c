@@ -77,6 +77,7 @@ typedef struct path_result {
   uint32_t constraint_count;
   eval_constraint constraints[8];
   double switch_arc[8]; /* where it switched (NAN: never) */
+  double style_agree, action_agree; /* share of frames as requested */
   size_t switch_frame[8];
 } path_result;
 
@@ -163,6 +164,35 @@ static int series_make(const eval_trace* t, const joints* j,
   em_detect_contacts(low, F, t->dt, 0.03, 1.0, s->rc_own);
   free(low);
   return 1;
+}
+
+/* Share of frames whose style (action) is the one requested at the hips'
+ * arc length: the initial one, replaced by each constraint from its arc
+ * on. Frames within 1.5 m of any constraint point are not counted, so a
+ * switch a little early or late does not weigh on it. */
+static void agreement(const eval_trace* t, const series* s,
+                      const path_result* pr, uint32_t walk, double* style,
+                      double* action) {
+  size_t i, n = 0, ok_s = 0, ok_a = 0;
+  uint32_t c;
+  for (i = 0; i < t->frames; ++i) {
+    uint32_t want_s = walk, want_a = 0;
+    int near = 0;
+    for (c = 0; c < pr->constraint_count; ++c) {
+      const eval_constraint* k = &pr->constraints[c];
+      if (fabs(s->arc[i] - k->arc) < 1.5) near = 1;
+      if (s->arc[i] >= k->arc) {
+        if (k->kind == EVAL_KIND_SPLICE) want_a = k->value;
+        else want_s = k->value;
+      }
+    }
+    if (near) continue;
+    n++;
+    ok_s += t->style[i] == want_s;
+    ok_a += t->action[i] == want_a;
+  }
+  *style = n ? (double)ok_s / (double)n : NAN;
+  *action = n ? (double)ok_a / (double)n : NAN;
 }
 
 /* Both feet together. */
@@ -417,10 +447,50 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
     pr->contact_fraction_rt = (double)con / (2.0 * (double)F);
   }
   find_switches(&t, &s, pr);
+  agreement(&t, &s, pr, walk, &pr->style_agree, &pr->action_agree);
   if (draw) draw_figure(ctx, g, p, path, n, &t, &s, pr);
   if (ctx->keep_dir && (draw || ctx->check)) keep_trace(ctx, p, &t, &s);
   series_free(&s);
   eval_trace_free(&t);
+}
+
+static void summarize_paths(eval_ctx* ctx, const path_result* res) {
+  size_t k, ran = 0, ended = 0, sw_total = 0, sw_near = 0;
+  double first_max = 0, med_max = 0, p99_max = 0, dev_lo = INFINITY,
+         dev_hi = 0, sk_lo = INFINITY, sk_hi = 0;
+  uint32_t c;
+  for (k = 0; k < PATH_COUNT; ++k) {
+    const path_result* r = &res[k];
+    if (!r->ok) continue;
+    ran++;
+    ended += r->reached_end != 0;
+    if (r->first_pose_ms > first_max) first_max = r->first_pose_ms;
+    if (r->step_us.median > med_max) med_max = r->step_us.median;
+    if (r->step_us.p99 > p99_max) p99_max = r->step_us.p99;
+    if (r->dev_mean < dev_lo) dev_lo = r->dev_mean;
+    if (r->dev_mean > dev_hi) dev_hi = r->dev_mean;
+    if (r->skate_rt.mean_cm < sk_lo) sk_lo = r->skate_rt.mean_cm;
+    if (r->skate_rt.mean_cm > sk_hi) sk_hi = r->skate_rt.mean_cm;
+    for (c = 0; c < r->constraint_count; ++c) {
+      sw_total++;
+      sw_near += isfinite(r->switch_arc[c]) &&
+                 fabs(r->switch_arc[c] - r->constraints[c].arc) <= 1.0;
+    }
+  }
+  if (!ran) {
+    eval_summary(ctx, "**Path following**: no path could be run.");
+    return;
+  }
+  eval_summary(ctx,
+               "**Path following** (%zu paths, 30 Hz): path given -> first "
+               "pose at most %.3f ms (paper: 3-23 s to plan a drawn path); "
+               "per frame (step + 31 matrices) median <= %.1f us, p99 <= "
+               "%.1f us; reached the path's end on %zu of %zu paths; mean "
+               "root distance from the path %.2f-%.2f m per path; foot skate "
+               "%.2f-%.2f cm per contact frame; %zu of %zu style/action "
+               "switches within 1 m of the requested point.",
+               ran, first_max, med_max, p99_max, ended, ran, dev_lo, dev_hi,
+               sk_lo, sk_hi, sw_near, sw_total);
 }
 
 static void report_paths(eval_ctx* ctx, smg_graph* g,
@@ -428,6 +498,7 @@ static void report_paths(eval_ctx* ctx, smg_graph* g,
   size_t k;
   uint32_t c;
   char a[32], b[32], d[32], e[32], f[32], h[32], x[32];
+  summarize_paths(ctx, res);
   eval_md(ctx,
           "| Path | length (m) | frames | path given -> first pose (ms) | "
           "per frame median / p99 (us) | root distance from path mean / max "
@@ -474,9 +545,10 @@ static void report_paths(eval_ctx* ctx, smg_graph* g,
   }
   eval_md(ctx,
           "\nSwitches: each constraint's requested arc length and the arc "
-          "length of the hips (projected on the path) at the first frame "
-          "whose style/action equals the target. Positive difference = "
-          "switched after the requested point.\n\n"
+          "length of the hips (projected on the path) at the first frame, "
+          "after the previous switch of the same kind, at which the style/"
+          "action changes into the target. Positive difference = switched "
+          "after the requested point.\n\n"
           "| Path | constraint | requested at (m) | switched at (m) | "
           "difference (m) |\n|---|---|---:|---:|---:|\n");
   for (k = 0; k < PATH_COUNT; ++k) {
@@ -498,6 +570,19 @@ static void report_paths(eval_ctx* ctx, smg_graph* g,
                              r->switch_arc[c] - (double)q->arc)
                   : "**never**");
     }
+  }
+  eval_md(ctx,
+          "\nStyle and action held as requested: share of frames whose "
+          "style (action) is the one requested at the hips' arc length "
+          "(frames within 1.5 m of a constraint point not counted).\n\n"
+          "| Path | style as requested | action as requested |\n"
+          "|---|---:|---:|\n");
+  for (k = 0; k < PATH_COUNT; ++k) {
+    const path_result* r = &res[k];
+    if (!r->ok) continue;
+    eval_md(ctx, "| %s | %s %% | %s %% |\n", k_paths[k].title,
+            eval_fmt(a, sizeof(a), "%.0f", 100.0 * r->style_agree),
+            eval_fmt(b, sizeof(b), "%.0f", 100.0 * r->action_agree));
   }
   eval_md(ctx, "\n");
 }

@@ -704,6 +704,15 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
           eval_fmt(d, sizeof(d), "%.3f",
                    rate_n ? rate_sum / (double)rate_n : NAN),
           eval_fmt(x, sizeof(x), "%.3f", e->measured_rate));
+  eval_summary(ctx,
+               "**Synchronization**: phase drift of the upper body against "
+               "the lower body %+.3f cycles/s without synchronization, "
+               "%+.3f cycles/s as played by the runtime (0 = no velocity "
+               "differential); the gait periods call for an upper-body "
+               "playback rate of %.3f, the runtime played it at %.3f "
+               "(measured).",
+               before.drift, after.drift,
+               e->clip_phase_period / e->low_period, e->measured_rate);
   fig = svp_create(760, 380,
                    "Upper-body phase minus lower-body phase (unwrapped)");
   if (!fig) goto done;
@@ -866,6 +875,14 @@ void eval_section_splice(eval_ctx* ctx) {
                 100.0 * sp.mean, 100.0 * sg.mean, 100.0 * sp.max,
                 100.0 * sg.max, spc.mean, spc.max, sgc.mean, sgc.max,
                 res.mean, res.max);
+        eval_summary(ctx,
+                     "**Splicing accuracy** (06_01 walk legs + 06_10 "
+                     "dribbling upper body vs the original 06_10, %zu "
+                     "frames): spine error mean %.1f %% / worst %.1f %% of "
+                     "the spine length in the pelvis frame (%.1f / %.1f cm); "
+                     "in the ground frame mean %.1f %% / worst %.1f %%.",
+                     sp.count, 100.0 * sp.mean, 100.0 * sp.max, spc.mean,
+                     spc.max, 100.0 * sg.mean, 100.0 * sg.max);
         figure_error(ctx, &e);
         figure_worst(ctx, &sb, &t, &e);
       }

@@ -141,6 +141,9 @@ int main(int argc, char** argv) {
   const char* out_path = "docs/results.md";
   const char* img_dir = "docs/img";
   char probe[1200], tmp_out[1200];
+  FILE* out_file = NULL;
+  char *body = NULL, *summary = NULL;
+  size_t body_size = 0, summary_size = 0;
   void* blob = NULL;
   size_t blob_size = 0;
   double t0;
@@ -187,12 +190,20 @@ int main(int argc, char** argv) {
     /* Written to a temporary file and renamed at the end, so an
      * interrupted run never leaves a half report in place. */
     snprintf(tmp_out, sizeof(tmp_out), "%s.tmp", out_path);
-    ctx.md = fopen(tmp_out, "w");
-    if (!ctx.md) {
+    out_file = fopen(tmp_out, "w");
+    if (!out_file) {
       eval_log("cannot write %s", tmp_out);
       return 1;
     }
+    ctx.md = out_file;
     write_header(&ctx, shared);
+    /* Sections go to memory first so the summary can precede them. */
+    ctx.md = open_memstream(&body, &body_size);
+    ctx.summary = open_memstream(&summary, &summary_size);
+    if (!ctx.md || !ctx.summary) {
+      eval_log("out of memory");
+      return 1;
+    }
   }
   if (!ctx.have_cmu)
     eval_log("CMU clips not found at %s: skipping the CMU parts%s",
@@ -230,7 +241,13 @@ int main(int argc, char** argv) {
             "the per-frame cost.\n\n");
     eval_md(&ctx, "Whole evaluation run: %.1f s wall clock.\n",
             eval_now() - t0);
-    if (fclose(ctx.md) != 0 || rename(tmp_out, out_path) != 0) {
+    fclose(ctx.md);
+    fclose(ctx.summary);
+    fprintf(out_file, "## Summary (this run; details and method below)\n\n"
+                      "%s\n%s", summary ? summary : "", body ? body : "");
+    free(body);
+    free(summary);
+    if (fclose(out_file) != 0 || rename(tmp_out, out_path) != 0) {
       eval_log("cannot write %s", out_path);
       return 1;
     }
