@@ -1,0 +1,408 @@
+// renderer.cpp - shaders, meshes and draw order of the demo scene.
+#include "renderer.h"
+
+#include "gl_api.h"
+#include "palette.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <cstddef>
+
+using namespace demo_gl;
+
+namespace {
+
+// Light travels along kLightDir; mostly from above so shadows stay compact
+// and readable under the feet.
+const glm::vec3 kLightDir = glm::normalize(glm::vec3(-0.35f, -1.0f, -0.25f));
+
+const char* kLitVS = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in mat4 i_model;
+layout(location = 6) in vec4 i_colour;
+uniform mat4 u_view_proj;
+uniform mat4 u_flatten;   // identity, or the planar shadow projection
+out vec3 v_normal;
+out vec3 v_world;
+out vec4 v_colour;
+void main() {
+  vec4 w = u_flatten * (i_model * vec4(a_position, 1.0));
+  v_world = w.xyz / w.w;
+  // Instances are scaled uniformly across the normal's plane, so the
+  // model matrix itself maps normals correctly after normalising.
+  v_normal = mat3(i_model) * a_normal;
+  v_colour = i_colour;
+  gl_Position = u_view_proj * w;
+}
+)";
+
+const char* kLitFS = R"(#version 330 core
+in vec3 v_normal;
+in vec3 v_world;
+in vec4 v_colour;
+uniform int u_shadow;
+uniform vec3 u_light_dir;
+uniform vec3 u_eye;
+uniform vec3 u_sky;
+out vec4 frag;
+void main() {
+  if (u_shadow == 1) { frag = vec4(0.0, 0.0, 0.05, 0.38); return; }
+  vec3 n = normalize(v_normal);
+  float diffuse = max(dot(n, -u_light_dir), 0.0);
+  float hemi = 0.5 + 0.5 * n.y;                 // sky above, ground below
+  vec3 v = normalize(u_eye - v_world);
+  float rim = pow(1.0 - max(dot(n, v), 0.0), 3.0);
+  vec3 c = v_colour.rgb * (0.30 + 0.22 * hemi + 0.62 * diffuse) + 0.10 * rim;
+  float fog = clamp((length(u_eye - v_world) - 60.0) / 140.0, 0.0, 1.0);
+  frag = vec4(mix(c, u_sky, fog), v_colour.a);
+}
+)";
+
+const char* kGroundVS = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_view_proj;
+uniform vec3 u_centre;
+out vec3 v_world;
+void main() {
+  v_world = a_position + vec3(u_centre.x, 0.0, u_centre.z);
+  gl_Position = u_view_proj * vec4(v_world, 1.0);
+}
+)";
+
+// Grid lines every metre, stronger every 5 m, antialiased with fwidth; the
+// x and z axes are tinted so the origin is easy to find.
+const char* kGroundFS = R"(#version 330 core
+in vec3 v_world;
+uniform vec3 u_eye;
+uniform vec3 u_sky;
+out vec4 frag;
+float grid(vec2 p, float spacing, float width) {
+  vec2 q = p / spacing;
+  vec2 d = abs(fract(q - 0.5) - 0.5) / (fwidth(q) * width);
+  return 1.0 - min(min(d.x, d.y), 1.0);
+}
+void main() {
+  vec2 p = v_world.xz;
+  vec3 c = vec3(0.60, 0.62, 0.64);
+  c = mix(c, vec3(0.47, 0.49, 0.52), grid(p, 1.0, 1.0) * 0.7);
+  c = mix(c, vec3(0.36, 0.38, 0.42), grid(p, 5.0, 1.6) * 0.8);
+  vec2 axis = abs(p) / (fwidth(p) * 1.5);
+  c = mix(c, vec3(0.55, 0.40, 0.40), (1.0 - min(axis.y, 1.0)) * 0.6);
+  c = mix(c, vec3(0.40, 0.45, 0.58), (1.0 - min(axis.x, 1.0)) * 0.6);
+  float fog = clamp((length(u_eye - v_world) - 50.0) / 150.0, 0.0, 1.0);
+  frag = vec4(mix(c, u_sky, fog), 1.0);
+}
+)";
+
+const char* kFlatVS = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec4 a_colour;
+uniform mat4 u_view_proj;
+out vec4 v_colour;
+void main() {
+  v_colour = a_colour;
+  gl_Position = u_view_proj * vec4(a_position, 1.0);
+}
+)";
+
+const char* kFlatFS = R"(#version 330 core
+in vec4 v_colour;
+out vec4 frag;
+void main() { frag = v_colour; }
+)";
+
+unsigned compile(GLenum type, const char* source, std::string* error) {
+  GLuint s = glCreateShader(type);
+  glShaderSource(s, 1, &source, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {0};
+    glGetShaderInfoLog(s, sizeof log - 1, nullptr, log);
+    *error = std::string("shader compile failed: ") + log;
+    glDeleteShader(s);
+    return 0;
+  }
+  return s;
+}
+
+unsigned link(const char* vs, const char* fs, std::string* error) {
+  GLuint v = compile(GL_VERTEX_SHADER, vs, error);
+  if (!v) return 0;
+  GLuint f = compile(GL_FRAGMENT_SHADER, fs, error);
+  if (!f) {
+    glDeleteShader(v);
+    return 0;
+  }
+  GLuint p = glCreateProgram();
+  glAttachShader(p, v);
+  glAttachShader(p, f);
+  glLinkProgram(p);
+  glDeleteShader(v);
+  glDeleteShader(f);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {0};
+    glGetProgramInfoLog(p, sizeof log - 1, nullptr, log);
+    *error = std::string("shader link failed: ") + log;
+    glDeleteProgram(p);
+    return 0;
+  }
+  return p;
+}
+
+GLint loc(unsigned program, const char* name) { return glGetUniformLocation(program, name); }
+
+// Unit sphere (radius 1) as interleaved position+normal.
+void sphere_mesh(std::vector<float>* v, std::vector<unsigned>* idx) {
+  const int rings = 10, segments = 16;
+  for (int r = 0; r <= rings; ++r) {
+    float phi = float(M_PI) * float(r) / rings;
+    for (int s = 0; s <= segments; ++s) {
+      float theta = 2.0f * float(M_PI) * float(s) / segments;
+      glm::vec3 n(std::sin(phi) * std::cos(theta), std::cos(phi), std::sin(phi) * std::sin(theta));
+      v->insert(v->end(), {n.x, n.y, n.z, n.x, n.y, n.z});
+    }
+  }
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      unsigned a = unsigned(r * (segments + 1) + s), b = a + unsigned(segments + 1);
+      idx->insert(idx->end(), {a, a + 1, b, b, a + 1, b + 1});
+    }
+}
+
+// Open cylinder of radius 1 from y = 0 to y = 1 (spheres close the ends).
+void cylinder_mesh(std::vector<float>* v, std::vector<unsigned>* idx) {
+  const int segments = 16;
+  for (int s = 0; s <= segments; ++s) {
+    float theta = 2.0f * float(M_PI) * float(s) / segments;
+    float x = std::cos(theta), z = std::sin(theta);
+    v->insert(v->end(), {x, 0.0f, z, x, 0.0f, z});
+    v->insert(v->end(), {x, 1.0f, z, x, 0.0f, z});
+  }
+  for (int s = 0; s < segments; ++s) {
+    unsigned a = unsigned(2 * s);
+    idx->insert(idx->end(), {a, a + 1, a + 2, a + 2, a + 1, a + 3});
+  }
+}
+
+// y = eps plane projection along the light direction, column-major.
+glm::mat4 flatten_matrix(glm::vec3 l, float eps) {
+  glm::mat4 m(1.0f);
+  m[1][0] = -l.x / l.y;
+  m[1][1] = 0.0f;
+  m[1][2] = -l.z / l.y;
+  m[3][0] = l.x / l.y * eps;
+  m[3][1] = eps;
+  m[3][2] = l.z / l.y * eps;
+  return m;
+}
+
+}  // namespace
+
+bool Renderer::build_mesh(Mesh* mesh, const std::vector<float>& vertices, const std::vector<unsigned>& indices) {
+  glGenVertexArrays(1, &mesh->vao);
+  glBindVertexArray(mesh->vao);
+  glGenBuffers(1, &mesh->vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh->vbo);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glGenBuffers(1, &mesh->ibo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh->ibo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(),
+               GL_STATIC_DRAW);
+  glGenBuffers(1, &mesh->instance_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh->instance_vbo);
+  for (int c = 0; c < 4; ++c) {
+    glEnableVertexAttribArray(GLuint(2 + c));
+    glVertexAttribPointer(GLuint(2 + c), 4, GL_FLOAT, GL_FALSE, sizeof(Instance),
+                          reinterpret_cast<void*>(offsetof(Instance, model) + sizeof(glm::vec4) * size_t(c)));
+    glVertexAttribDivisor(GLuint(2 + c), 1);
+  }
+  glEnableVertexAttribArray(6);
+  glVertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, sizeof(Instance), reinterpret_cast<void*>(offsetof(Instance, colour)));
+  glVertexAttribDivisor(6, 1);
+  glBindVertexArray(0);
+  mesh->index_count = int(indices.size());
+  return true;
+}
+
+bool Renderer::init(std::string* error) {
+  lit_program_ = link(kLitVS, kLitFS, error);
+  if (!lit_program_) return false;
+  ground_program_ = link(kGroundVS, kGroundFS, error);
+  if (!ground_program_) return false;
+  flat_program_ = link(kFlatVS, kFlatFS, error);
+  if (!flat_program_) return false;
+
+  std::vector<float> v;
+  std::vector<unsigned> i;
+  sphere_mesh(&v, &i);
+  build_mesh(&sphere_, v, i);
+  v.clear();
+  i.clear();
+  cylinder_mesh(&v, &i);
+  build_mesh(&cylinder_, v, i);
+
+  // Ground: a 500 m square that moves with the camera target.
+  const float h = 250.0f;
+  const float quad[] = {-h, 0, -h, h, 0, -h, h, 0, h, -h, 0, -h, h, 0, h, -h, 0, h};
+  glGenVertexArrays(1, &ground_vao_);
+  glBindVertexArray(ground_vao_);
+  glGenBuffers(1, &ground_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, ground_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+
+  glGenVertexArrays(1, &flat_vao_);
+  glBindVertexArray(flat_vao_);
+  glGenBuffers(1, &flat_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, flat_vbo_);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(FlatVertex), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(FlatVertex),
+                        reinterpret_cast<void*>(offsetof(FlatVertex, colour)));
+  glBindVertexArray(0);
+  if (glGetError() != GL_NO_ERROR) {
+    *error = "OpenGL error while creating the renderer's resources";
+    return false;
+  }
+  return true;
+}
+
+void Renderer::shutdown() {
+  for (Mesh* m : {&sphere_, &cylinder_}) {
+    glDeleteVertexArrays(1, &m->vao);
+    glDeleteBuffers(1, &m->vbo);
+    glDeleteBuffers(1, &m->ibo);
+    glDeleteBuffers(1, &m->instance_vbo);
+  }
+  glDeleteVertexArrays(1, &ground_vao_);
+  glDeleteBuffers(1, &ground_vbo_);
+  glDeleteVertexArrays(1, &flat_vao_);
+  glDeleteBuffers(1, &flat_vbo_);
+  glDeleteProgram(lit_program_);
+  glDeleteProgram(ground_program_);
+  glDeleteProgram(flat_program_);
+}
+
+void Renderer::begin(int width, int height, const OrbitCamera& camera) {
+  width_ = width;
+  height_ = height;
+  view_proj_ = camera.projection(float(width) / float(height > 0 ? height : 1)) * camera.view();
+  eye_ = camera.eye();
+  target_ = camera.target;
+  spheres_.clear();
+  cylinders_.clear();
+  decals_.clear();
+}
+
+void Renderer::sphere(glm::vec3 c, float r, glm::vec4 colour) {
+  glm::mat4 m(r);
+  m[3] = glm::vec4(c, 1.0f);
+  spheres_.push_back({m, colour});
+}
+
+void Renderer::cylinder(glm::vec3 a, glm::vec3 b, float r, glm::vec4 colour) {
+  glm::vec3 d = b - a;
+  float len = glm::length(d);
+  if (!(len > 1e-5f)) return;
+  glm::vec3 y = d / len;
+  // Any axis not parallel to y gives an orthonormal frame.
+  glm::vec3 helper = std::fabs(y.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  glm::vec3 x = glm::normalize(glm::cross(helper, y));
+  glm::vec3 z = glm::cross(x, y);
+  glm::mat4 m;
+  m[0] = glm::vec4(x * r, 0.0f);
+  m[1] = glm::vec4(d, 0.0f);
+  m[2] = glm::vec4(z * r, 0.0f);
+  m[3] = glm::vec4(a, 1.0f);
+  cylinders_.push_back({m, colour});
+}
+
+void Renderer::draw_instances(const Mesh& mesh, const std::vector<Instance>& instances) {
+  if (instances.empty()) return;
+  glBindVertexArray(mesh.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh.instance_vbo);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(Instance)), instances.data(), GL_STREAM_DRAW);
+  glDrawElementsInstanced(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr, GLsizei(instances.size()));
+}
+
+void Renderer::end() {
+  glViewport(0, 0, width_, height_);
+  glClearColor(kSkyColour.r, kSkyColour.g, kSkyColour.b, 1.0f);
+  glClearStencil(0);
+  glStencilMask(0xff);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+
+  // 1. Ground.
+  glUseProgram(ground_program_);
+  glUniformMatrix4fv(loc(ground_program_, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj_));
+  glUniform3fv(loc(ground_program_, "u_centre"), 1, glm::value_ptr(target_));
+  glUniform3fv(loc(ground_program_, "u_eye"), 1, glm::value_ptr(eye_));
+  glUniform3fv(loc(ground_program_, "u_sky"), 1, glm::value_ptr(kSkyColour));
+  glBindVertexArray(ground_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+
+  // 2. Decals on the ground: pulled towards the camera so they win the
+  // depth test against the ground, never written to depth.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-2.0f, -4.0f);
+  if (!decals_.empty()) {
+    glUseProgram(flat_program_);
+    glUniformMatrix4fv(loc(flat_program_, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj_));
+    glBindVertexArray(flat_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, flat_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(decals_.size() * sizeof(FlatVertex)), decals_.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(decals_.size()));
+  }
+
+  // 3. Planar shadows; the stencil lets each pixel darken only once where
+  // several bones overlap.
+  glUseProgram(lit_program_);
+  glUniformMatrix4fv(loc(lit_program_, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj_));
+  glUniform3fv(loc(lit_program_, "u_light_dir"), 1, glm::value_ptr(kLightDir));
+  glUniform3fv(loc(lit_program_, "u_eye"), 1, glm::value_ptr(eye_));
+  glUniform3fv(loc(lit_program_, "u_sky"), 1, glm::value_ptr(kSkyColour));
+  glm::mat4 flatten = flatten_matrix(kLightDir, 0.003f);
+  glUniformMatrix4fv(loc(lit_program_, "u_flatten"), 1, GL_FALSE, glm::value_ptr(flatten));
+  glUniform1i(loc(lit_program_, "u_shadow"), 1);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  draw_instances(sphere_, spheres_);
+  draw_instances(cylinder_, cylinders_);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+
+  // 4. Lit meshes.
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glm::mat4 identity(1.0f);
+  glUniformMatrix4fv(loc(lit_program_, "u_flatten"), 1, GL_FALSE, glm::value_ptr(identity));
+  glUniform1i(loc(lit_program_, "u_shadow"), 0);
+  draw_instances(sphere_, spheres_);
+  draw_instances(cylinder_, cylinders_);
+
+  glBindVertexArray(0);
+  glUseProgram(0);
+  last_instances_ = int(spheres_.size() + cylinders_.size());
+}
