@@ -62,6 +62,7 @@ typedef struct smg_gd_character {
 
 	uint32_t last_style, last_action;
 	bool end_reached;
+	uint64_t modifier_frame; /* last frame an SmgSkeletonModifier posed us */
 } smg_gd_character;
 
 #define PATH_CAPACITY 4096u
@@ -274,17 +275,12 @@ static void quat_mul(const float *a, const float *b, float *out) {
 	out[3] = w;
 }
 
-static void write_pose(smg_gd_character *self, const smg_character_state *st) {
-	GDExtensionObjectPtr skel = find_skeleton(self);
-	if (!skel) {
-		if (!self->warned_skeleton) {
-			self->warned_skeleton = true;
-			GD_WARN("SmgCharacter: no target Skeleton3D (set 'skeleton' or add a Skeleton3D child); "
-			        "only the node moves");
-		}
-		return;
-	}
-	self->warned_skeleton = false;
+/* Writes the current pose into skel (bones by name). */
+static void write_pose_to(smg_gd_character *self, GDExtensionObjectPtr skel) {
+	smg_character_state st;
+	memset(&st, 0, sizeof st);
+	st.struct_size = sizeof st;
+	if (!self->ch || !self->blob || smg_character_get_state(self->ch, &st) != SMG_OK) return;
 	map_bones(self, skel);
 	if (!self->bone_of_joint) return;
 	uint32_t n = self->blob->joint_count;
@@ -293,8 +289,8 @@ static void write_pose(smg_gd_character *self, const smg_character_state *st) {
 
 	/* Joint 0 comes in parent space; this node already carries
 	 * (position, heading), so express the root relative to it. */
-	float h = st->heading, c = cosf(h), s = sinf(h);
-	float dx = root[0] - st->position[0], dz = root[2] - st->position[2];
+	float h = st.heading, c = cosf(h), s = sinf(h);
+	float dx = root[0] - st.position[0], dz = root[2] - st.position[2];
 	gd_vec3 root_local = { c * dx - s * dz, root[1], s * dx + c * dz };
 	float inv_yaw[4] = { 0.0f, sinf(-h * 0.5f), 0.0f, cosf(-h * 0.5f) };
 	quat_mul(inv_yaw, &self->rot[0], &self->rot[0]);
@@ -309,6 +305,39 @@ static void write_pose(smg_gd_character *self, const smg_character_state *st) {
 			gd_call(GDB_Skeleton3D_set_bone_pose_position, skel, p, NULL);
 		}
 	}
+}
+
+static uint64_t process_frame(void) {
+	GDExtensionObjectPtr engine = gd_singleton("Engine");
+	uint64_t f = 0;
+	if (engine) gd_call(GDB_Engine_get_process_frames, engine, NULL, &f);
+	return f;
+}
+
+/* The pose goes in from here unless an SmgSkeletonModifier applies it in
+ * the skeleton's modifier stage (it did so in the last two frames). */
+static void write_pose(smg_gd_character *self) {
+	if (self->modifier_frame && self->modifier_frame + 2 >= process_frame()) return;
+	GDExtensionObjectPtr skel = find_skeleton(self);
+	if (!skel) {
+		if (!self->warned_skeleton) {
+			self->warned_skeleton = true;
+			GD_WARN("SmgCharacter: no target Skeleton3D (set 'skeleton' or add a Skeleton3D child); "
+			        "only the node moves");
+		}
+		return;
+	}
+	self->warned_skeleton = false;
+	write_pose_to(self, skel);
+}
+
+bool smg_gd_character_apply_pose(GDExtensionObjectPtr character, GDExtensionObjectPtr skel) {
+	smg_gd_character *self = gd_object_self(character, CLASS);
+	if (!self || !skel) return false;
+	self->modifier_frame = process_frame();
+	if (!ensure_character(self)) return false;
+	write_pose_to(self, skel);
+	return true;
 }
 
 /* ---------------- per frame ---------------- */
@@ -341,7 +370,7 @@ static int64_t step(smg_gd_character *self, double dt) {
 	gd_transform3d nt = { { { c, 0, s }, { 0, 1, 0 }, { -s, 0, c } }, { st.position[0], t.origin[1], st.position[2] } };
 	const void *ta[1] = { &nt };
 	gd_call(GDB_Node3D_set_transform, self->owner, ta, NULL);
-	write_pose(self, &st);
+	write_pose(self);
 
 	bool style_changed = st.style != self->last_style;
 	bool action_changed = st.action != self->last_action;

@@ -3,7 +3,14 @@
 #ifndef SMG_GD_CHARACTER_H
 #define SMG_GD_CHARACTER_H
 
+#include <stdbool.h>
+
+#include "gd_api.h"
+
 void smg_gd_character_register(void);
+/* Writes the character's current pose into skel (for SmgSkeletonModifier).
+ * false: character is not an SmgCharacter or has no graph. */
+bool smg_gd_character_apply_pose(GDExtensionObjectPtr character, GDExtensionObjectPtr skel);
 void smg_gd_character_unregister(void);
 
 #endif

@@ -9,7 +9,7 @@
 # to the number of checks planned here, plus the expected error messages.
 extends SceneTree
 
-const PLANNED := 50
+const PLANNED := 53
 const FRAMES := 330                 # 11 s at 30 fps
 const MAX_PATH_ERROR := 0.6         # metres, root (ground projection) to path
 const PATH := [Vector3(0, 0, 0), Vector3(0, 0, 5), Vector3(1.5, 0, 8), Vector3(1.5, 0, 13)]
@@ -66,9 +66,11 @@ func _initialize() -> void:
 
 func run() -> void:
 	# --- classes ---------------------------------------------------------
-	check(ClassDB.class_exists("SmgGraph") and ClassDB.class_exists("SmgCharacter"), "classes registered")
-	check(ClassDB.is_parent_class("SmgGraph", "Resource") and ClassDB.is_parent_class("SmgCharacter", "Node3D"),
-		"SmgGraph is a Resource, SmgCharacter a Node3D")
+	check(ClassDB.class_exists("SmgGraph") and ClassDB.class_exists("SmgCharacter")
+		and ClassDB.class_exists("SmgSkeletonModifier"), "classes registered")
+	check(ClassDB.is_parent_class("SmgGraph", "Resource") and ClassDB.is_parent_class("SmgCharacter", "Node3D")
+		and ClassDB.is_parent_class("SmgSkeletonModifier", "SkeletonModifier3D"),
+		"SmgGraph is a Resource, SmgCharacter a Node3D, SmgSkeletonModifier a SkeletonModifier3D")
 	var props := ClassDB.class_get_property_list("SmgCharacter", true).map(func(p): return p.name)
 	check(props.has("graph") and props.has("skeleton") and props.has("style") and props.has("action")
 		and props.has("error_threshold") and props.has("ik_enabled"), "inspector properties")
@@ -193,6 +195,41 @@ func run() -> void:
 	curve.add_point(c.position + Vector3(0, 0, 3))
 	check(c.set_path_curve(curve) == OK and c.get_path_length() > 2.5, "set_path_curve")
 	check(end_before <= end_count, "end signal count monotonic")
+
+	# --- SmgSkeletonModifier: the pose applied in the modifier stage ------
+	var cm := SmgCharacter.new()
+	cm.position = Vector3(10, 0, 0)         # start where its path starts
+	cm.graph = g
+	root.add_child(cm)
+	var skm: Skeleton3D = cm.create_skeleton()
+	var mod := SmgSkeletonModifier.new()
+	skm.add_child(mod)
+	var probe := skm.find_bone(g.get_joint_name(nj / 4))
+	var mod_rots: Array = []
+	mod.modification_processed.connect(func(): mod_rots.append(skm.get_bone_pose_rotation(probe)))
+	cm.set_path(PackedVector3Array([Vector3(10, 0, 0), Vector3(10, 0, 6)]))
+	await frames(50)
+	var mod_varied := 0
+	for i in range(1, mod_rots.size()):
+		if mod_rots[i].angle_to(mod_rots[i - 1]) > 0.005:
+			mod_varied += 1
+	check(mod_rots.size() >= 40 and mod_varied >= mod_rots.size() / 2,
+		"SmgSkeletonModifier poses the skeleton in the modifier stage (%d updates, %d varied)" % [mod_rots.size(), mod_varied])
+	mod.active = false                      # the character takes over again
+	await frames(5)
+	var own_rots: Array = []
+	for i in 10:
+		await process_frame
+		own_rots.append(skm.get_bone_pose_rotation(probe))
+	var own_varied := 0
+	for i in range(1, own_rots.size()):
+		if own_rots[i].angle_to(own_rots[i - 1]) > 0.005:
+			own_varied += 1
+	check(own_varied >= 5, "inactive modifier: the character writes bone poses itself (%d/9 varied)" % own_varied)
+	skm.free()                              # modifier goes with it
+	await frames(3)
+	check(cm.step(0.1) == OK, "modifier freed, character still steps")
+	cm.free()
 
 	# --- robustness --------------------------------------------------------
 	# Reload the graph under a running character: it is rebuilt on the new one.
