@@ -21,7 +21,8 @@
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
 typedef struct layout {
-  size_t constraints, queue, rot, tmp, snap, wpos, wrot, xz, cum, total;
+  size_t constraints, queue, rot, tmp, snap, wpos, wrot, mask, xz, cum,
+      total;
 } layout;
 
 static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
@@ -41,6 +42,8 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   o += align16(sizeof(float) * 3u * J);
   l->wrot = o;
   o += align16(sizeof(float) * 4u * J);
+  l->mask = o;
+  o += align16(J);
   l->xz = o;
   o += align16(sizeof(float) * 2u * (size_t)path_cap);
   l->cum = o;
@@ -132,6 +135,18 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->snap = (float*)(mem + l.snap);
   ch->wpos = (float*)(mem + l.wpos);
   ch->wrot = (float*)(mem + l.wrot);
+  ch->leg_mask = mem + l.mask;
+  {
+    /* joints at or below each hip: IK re-runs FK for them */
+    const smgi_info* info = graph->data.info;
+    const uint32_t hips[2] = {info->left_leg[0], info->right_leg[0]};
+    for (uint32_t j = 1; j < J; ++j) {
+      uint32_t p = (uint32_t)graph->data.joints[j].parent;
+      ch->leg_mask[j] = ch->leg_mask[p];
+      for (uint32_t f = 0; f < 2u; ++f)
+        if (j == hips[f]) ch->leg_mask[j] |= (uint8_t)(1u << f);
+    }
+  }
   ch->path.xz = (float*)(mem + l.xz);
   ch->path.cum = (float*)(mem + l.cum);
   ch->path.capacity = d.path_capacity;
@@ -341,14 +356,6 @@ static void mat_from(const float* q, const float* t, float* m) {
   m[15] = 1.0f;
 }
 
-/* o = a * b for rigid column-major matrices (o must not alias a or b). */
-static void mat_mul(const float* a, const float* b, float* o) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      o[4 * c + r] = a[r] * b[4 * c] + a[4 + r] * b[4 * c + 1] +
-                     a[8 + r] * b[4 * c + 2] + a[12 + r] * b[4 * c + 3];
-}
-
 SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
                                                     uint32_t space,
                                                     float* matrices,
@@ -358,27 +365,23 @@ SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
     return SMG_ERROR_INVALID_ARGUMENT;
   if (joint_count < ch->joint_count) return SMG_ERROR_BUFFER_TOO_SMALL;
   if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
-  const smgi_joint* joints = ch->graph->data.joints;
-  float root_rot[4], root_pos[3];
-  memcpy(root_rot, ch->rot, sizeof root_rot);
-  memcpy(root_pos, ch->root, sizeof root_pos);
-  if (space == SMG_SPACE_CHARACTER) {
-    /* inverse of (ground position, heading) applied to the root */
-    float yaw[4], q[4], v[3];
-    smgi_q_yaw(-ch->heading, yaw);
-    smgi_q_mul(yaw, root_rot, q);
-    memcpy(root_rot, q, sizeof q);
-    v[0] = root_pos[0] - ch->ground[0];
-    v[1] = root_pos[1];
-    v[2] = root_pos[2] - ch->ground[1];
-    smgi_q_rotate(yaw, v, root_pos);
+  /* world transforms were cached by the last step; only convert */
+  if (space == SMG_SPACE_WORLD) {
+    for (uint32_t j = 0; j < ch->joint_count; ++j)
+      mat_from(ch->wrot + 4u * j, ch->wpos + 3u * j, matrices + 16u * j);
+    return SMG_OK;
   }
-  mat_from(root_rot, root_pos, matrices);
-  for (uint32_t j = 1; j < ch->joint_count; ++j) {
-    float local[16];
-    mat_from(ch->rot + 4u * j, joints[j].offset, local);
-    mat_mul(matrices + 16u * (uint32_t)joints[j].parent, local,
-            matrices + 16u * j);
+  /* character space: the inverse of (ground position, heading) first */
+  float yaw[4];
+  smgi_q_yaw(-ch->heading, yaw);
+  for (uint32_t j = 0; j < ch->joint_count; ++j) {
+    float q[4], v[3], p[3];
+    smgi_q_mul(yaw, ch->wrot + 4u * j, q);
+    v[0] = ch->wpos[3u * j] - ch->ground[0];
+    v[1] = ch->wpos[3u * j + 1u];
+    v[2] = ch->wpos[3u * j + 2u] - ch->ground[1];
+    smgi_q_rotate(yaw, v, p);
+    mat_from(q, p, matrices + 16u * j);
   }
   return SMG_OK;
 }

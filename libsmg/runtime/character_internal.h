@@ -98,6 +98,7 @@ struct smg_character {
   /* lower playback */
   smgi_qentry* queue;      /* ring of SMGI_QUEUE_CAP */
   uint32_t q_head, q_count, next_seq;
+  uint32_t q_frames;       /* sum of frame counts of the queued edges */
   float t;                 /* frames into the head edge (fractional) */
   uint32_t backtracks;     /* since the last within-threshold choice */
   uint32_t lower_node;
@@ -129,8 +130,10 @@ struct smg_character {
   float* rot;              /* 4J: output local rotations */
   float* tmp;              /* 4J: sampling scratch */
   float* snap;             /* 4J: upper-body snapshot for crossfades */
-  float* wpos;             /* 3J: FK scratch */
-  float* wrot;             /* 4J: FK scratch */
+  float* wpos;             /* 3J: world joint positions of the pose */
+  float* wrot;             /* 4J: world joint rotations of the pose */
+  uint8_t* leg_mask;       /* J: bit 0/1 = joint below the left/right hip
+                              (what IK must re-run FK for) */
 };
 
 /* ---- path.c ---- */
@@ -192,6 +195,8 @@ smg_result smgi_step(smg_character* ch, float dt);
 void smgi_pose_compose(smg_character* ch);
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot);
+/* Re-run FK only for joints whose leg_mask has `bit` (after IK). */
+void smgi_fk_masked(smg_character* ch, uint8_t bit);
 
 /* ---- upper.c ---- */
 void smgi_upper_advance(smg_character* ch, float lower_frames);

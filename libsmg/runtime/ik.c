@@ -13,7 +13,7 @@
 #include "character_internal.h"
 
 #define IK_BLEND 0.1f      /* seconds to blend in/out */
-#define IK_ITERATIONS 4u
+#define IK_ITERATIONS 3u
 #define IK_RELEASE 0.35f   /* fraction of leg length */
 
 /* Rotate world-space chain joints [from, 3) about joint `k` by dq. */
@@ -53,6 +53,9 @@ static void solve_leg(smg_character* ch, const uint32_t* leg,
   float ankle_world[4];
   memcpy(ankle_world, rotw[2], sizeof ankle_world);
   for (uint32_t it = 0; it < IK_ITERATIONS; ++it) {
+    float ex = target[0] - pos[2][0], ey = target[1] - pos[2][1],
+          ez = target[2] - pos[2][2];
+    if (ex * ex + ey * ey + ez * ez < 4e-6f) break; /* within 2 mm */
     for (int k = 1; k >= 0; --k) { /* knee, then hip */
       float v1[3] = {pos[2][0] - pos[k][0], pos[2][1] - pos[k][1],
                      pos[2][2] - pos[k][2]};
@@ -86,7 +89,6 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     return;
   }
   const smgi_info* info = ch->graph->data.info;
-  smgi_fk(ch->graph, ch->root, ch->rot, ch->wpos, ch->wrot);
   const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
   const uint32_t* legs[2] = {info->left_leg, info->right_leg};
   float step = dt / IK_BLEND;
@@ -112,6 +114,9 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     }
     foot->weight += foot->planted ? step : -step;
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
-    if (foot->weight > 0.0f) solve_leg(ch, legs[f], foot->anchor, foot->weight);
+    if (foot->weight > 0.0f) {
+      solve_leg(ch, legs[f], foot->anchor, foot->weight);
+      smgi_fk_masked(ch, (uint8_t)(1u << f)); /* keep the cache true */
+    }
   }
 }

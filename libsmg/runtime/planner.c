@@ -230,6 +230,7 @@ static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
   const smg_graph* g = ch->graph;
   const smgi_edge* e = &g->data.lower_edges[c->edge];
   smgi_qentry* q = smgi_q_at(ch, ch->q_count++);
+  ch->q_frames += e->frame_count;
   q->edge = c->edge;
   q->seq = ch->next_seq++;
   q->W = W;
@@ -264,11 +265,9 @@ static float start_error(const smg_character* ch, smgi_xform2 W, float s,
 }
 
 float smgi_frames_ahead(const smg_character* ch) {
-  float f = -ch->t;
-  const smgi_edge* edges = ch->graph->data.lower_edges;
-  for (uint32_t i = 0; i < ch->q_count; ++i)
-    f += (float)edges[smgi_q_at_c(ch, i)->edge].frame_count;
-  return f;
+  /* kept incrementally: scanning the queue every step would touch every
+   * planned entry and its edge record (cache misses with many characters) */
+  return (float)ch->q_frames - ch->t;
 }
 
 /* The paper's back-up step, made safe: the last planned choice led to a
@@ -309,6 +308,7 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
     }
   }
   ch->q_count--;
+  ch->q_frames -= g->data.lower_edges[last.edge].frame_count;
   push(ch, last.W, last.s_start, &c[best_r], best_r, n);
   smgi_q_at(ch, ch->q_count - 1u)->rank = (uint16_t)SMGI_MAX_RANK; /* final */
   return best_r != cur;
@@ -351,12 +351,15 @@ void smgi_replan(smg_character* ch) {
     uint32_t from = ch->graph->data.lower_edges[h.edge].from;
     uint32_t n = rank_node(ch, from, h.W, ch->progress, ch->seg, c);
     ch->q_count = 0;
+    ch->q_frames = 0;
     ch->backtracks = 0;
     ch->pending.valid = 0;
     push(ch, h.W, ch->progress, &c[0], 0, n);
     return;
   }
   ch->q_count = 1; /* keep only the edge that is playing */
+  ch->q_frames =
+      ch->graph->data.lower_edges[smgi_q_at(ch, 0)->edge].frame_count;
   ch->backtracks = 0;
   smgi_qentry* h = smgi_q_at(ch, 0);
   const smgi_edge* e = &ch->graph->data.lower_edges[h->edge];
@@ -403,6 +406,7 @@ smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
   uint32_t n = rank_node(ch, node, W, ch->progress, ch->seg, c);
   ch->q_head = 0;
   ch->q_count = 0;
+  ch->q_frames = 0;
   ch->t = 0.0f;
   push(ch, W, ch->progress, &c[0], 0, n);
   ch->lower_node = node;

@@ -68,6 +68,7 @@ smg_result smgi_step(smg_character* ch, float dt) {
     ch->lower_node = edges[h->edge].to;
     ch->q_head = (ch->q_head + 1u) & (SMGI_QUEUE_CAP - 1u);
     ch->q_count--;
+    ch->q_frames -= edges[h->edge].frame_count;
   }
   ch->style = edges[smgi_q_at(ch, 0)->edge].label;
   ch->time += (double)dt;
@@ -85,6 +86,9 @@ smg_result smgi_step(smg_character* ch, float dt) {
   if (new_frame) smgi_sync_update(ch);
 
   smgi_pose_compose(ch);
+  /* world transforms are cached: IK needs them, and the getters then
+   * only convert (model matrices) or copy (local pose) */
+  smgi_fk(ch->graph, ch->root, ch->rot, ch->wpos, ch->wrot);
   smgi_ik_apply(ch, dt);
   update_progress(ch);
   return SMG_OK;

@@ -100,3 +100,17 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
     smgi_q_mul(wrot + 4u * p, rot + 4u * j, wrot + 4u * j);
   }
 }
+
+void smgi_fk_masked(smg_character* ch, uint8_t bit) {
+  const smgi_joint* joints = ch->graph->data.joints;
+  for (uint32_t j = 1; j < ch->joint_count; ++j) {
+    if (!(ch->leg_mask[j] & bit)) continue;
+    uint32_t p = (uint32_t)joints[j].parent;
+    float o[3];
+    smgi_q_rotate(ch->wrot + 4u * p, joints[j].offset, o);
+    ch->wpos[3u * j] = ch->wpos[3u * p] + o[0];
+    ch->wpos[3u * j + 1u] = ch->wpos[3u * p + 1u] + o[1];
+    ch->wpos[3u * j + 2u] = ch->wpos[3u * p + 2u] + o[2];
+    smgi_q_mul(ch->wrot + 4u * p, ch->rot + 4u * j, ch->wrot + 4u * j);
+  }
+}
