@@ -170,6 +170,8 @@ typedef struct splice_eval {
   double clip_phase_period; /* seconds per gait cycle in 06_10 */
   double low_period;        /* seconds per gait cycle of the output */
   double measured_rate;     /* upper source frames per frame-time played */
+  double clip_period_baker; /* 06_10 gait period from the blob's contacts */
+  double low_period_own;    /* output gait period from own detection */
 } splice_eval;
 
 static void splice_eval_free(splice_eval* e) {
@@ -256,6 +258,18 @@ static int clip_phases(const splice_blob* sb, uint32_t lfoot, uint32_t ltoe,
   return 1;
 }
 
+/* Mean time between rising edges of a contact signal (NAN if < 2). */
+static double contact_period(const uint8_t* c, size_t n, double dt) {
+  size_t first = n, last = 0, count = 0, i;
+  for (i = 1; i < n; ++i)
+    if (c[i] && !c[i - 1]) {
+      if (first == n) first = i;
+      last = i;
+      count++;
+    }
+  return count > 1 ? (double)(last - first) / (double)(count - 1) * dt : NAN;
+}
+
 /* Phase at a fractional clip frame (circular interpolation). */
 static double phase_at(const double* phase, uint32_t n, double f) {
   long i = (long)floor(f);
@@ -336,6 +350,30 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   if (!clip_phases(sb, lfoot, ltoe, clip_phase, &e->clip_phase_period))
     goto out;
 
+  /* Cross-checks of both periods from a second contact source: the
+   * baker's per-frame labels for the clip, own detection for the output. */
+  {
+    uint8_t* c = (uint8_t*)malloc(sb->upper_count > F ? sb->upper_count : F);
+    double* low = (double*)malloc(3 * F * sizeof(double));
+    if (c && low) {
+      for (i = 0; i < sb->upper_count; ++i)
+        c[i] = (sb->gd.frames[sb->upper_first + i].flags &
+                SMGI_FRAME_LEFT_CONTACT) != 0;
+      e->clip_period_baker = contact_period(c, sb->upper_count,
+                                            1.0 / sb->gd.info->frame_rate);
+      for (f = 0; f < F; ++f) {
+        const double* a = eval_joint(t, f, lfoot);
+        const double* b = eval_joint(t, f, ltoe);
+        memcpy(low + 3 * f, b[1] < a[1] ? b : a, 3 * sizeof(double));
+      }
+      em_detect_contacts(low, F, t->dt, 0.03, 1.0, c);
+      e->low_period_own = contact_period(c, F, t->dt);
+    } else {
+      e->clip_period_baker = e->low_period_own = NAN;
+    }
+    free(c);
+    free(low);
+  }
   e->switch_frame = em_first_label(t->action, F, 0, sb->dribble);
   window = (size_t)ceil(sb->gd.info->window_seconds * RATE);
   e->first_compared = e->switch_frame + window;
@@ -628,7 +666,7 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
          *u_before = NULL;
   sync_numbers after, before;
   svp_figure* fig = NULL;
-  char full[1400], a[32], b[32], c[32], d[32], x[32];
+  char full[1400], a[32], b[32], c[32], d[32], x[32], y[32], z[32];
   double rate_sum = 0.0;
   size_t f, rate_n = 0;
 
@@ -691,14 +729,18 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
           eval_fmt(d, sizeof(d), "%.3f", after.foot_sd));
   eval_md(ctx,
           "Gait period of the output's lower body (06_01 walk, runtime "
-          "contact flags): %s s; gait period of the dribble clip 06_10: "
-          "%s s; so synchronization should play the upper body at about "
-          "%s x its own speed. Mean `sync_rate` the runtime reported while "
+          "contact flags): %s s (own detection on the output: %s s); gait "
+          "period of the dribble clip 06_10: %s s (from the baker's contact "
+          "labels: %s s); so synchronization should play the upper body at "
+          "about %s x its own speed. Mean `sync_rate` the runtime reported "
+          "while "
           "dribbling: %s; upper-body playback rate measured from the "
           "matched source frames (mean source-frame advance per output "
           "frame, graph jumps excluded): %s.\n\n",
           eval_fmt(a, sizeof(a), "%.3f", e->low_period),
+          eval_fmt(y, sizeof(y), "%.3f", e->low_period_own),
           eval_fmt(b, sizeof(b), "%.3f", e->clip_phase_period),
+          eval_fmt(z, sizeof(z), "%.3f", e->clip_period_baker),
           eval_fmt(c, sizeof(c), "%.3f",
                    e->clip_phase_period / e->low_period),
           eval_fmt(d, sizeof(d), "%.3f",
@@ -780,6 +822,12 @@ void eval_section_splice(eval_ctx* ctx) {
     eval_check(ctx, 0, "splice blob: %s", err);
     splice_blob_free(&sb);
     return;
+  }
+  if (ctx->keep_dir) {
+    char kp[1200], why[256];
+    snprintf(kp, sizeof(kp), "%s/splice-dribble.smg", ctx->keep_dir);
+    if (smg_bake_write_file(&sb.bake, kp, why, sizeof(why)) != SMG_OK)
+      eval_log("cannot keep %s: %s", kp, why);
   }
   n = em_path_straight(PATH_LENGTH, 0.1, path, 1024);
   for (i = 0; i < 2 * n; ++i) pathf[i] = (float)path[i];
