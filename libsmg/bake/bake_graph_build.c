@@ -112,6 +112,7 @@ static int pair_filter(uint32_t i, uint32_t j, void* user) {
 typedef struct cand {
   smgb_minimum m;
   uint32_t li, lj;    /* labels */
+  uint32_t ci, cj;    /* clips */
   uint32_t region;    /* source region: (clip, local frame / span) */
   uint32_t target;    /* thinning group: target clip (same label) or
                          0x80000000 | target label (label change) */
@@ -139,6 +140,14 @@ static int cand_cmp(const void* pa, const void* pb) {
   return 0;
 }
 
+static int clip_cmp(const void* pa, const void* pb) {
+  const cand* a = pa;
+  const cand* b = pb;
+  if (a->ci != b->ci) return a->ci < b->ci ? -1 : 1;
+  if (a->cj != b->cj) return a->cj < b->cj ? -1 : 1;
+  return cand_cmp(pa, pb);
+}
+
 static int u32_cmp(const void* pa, const void* pb) {
   uint32_t a = *(const uint32_t*)pa, b = *(const uint32_t*)pb;
   return a < b ? -1 : a > b ? 1 : 0;
@@ -156,30 +165,71 @@ static uint32_t find_node(const smgb_graph* g, uint32_t frame) {
   return lo < g->node_count && g->nodes[lo].frame == frame ? lo : SMGI_NONE;
 }
 
-/* Percentile per (label, label) pair (plus the optional absolute cap), then
- * thinning: periodic motion has a local minimum against every cycle of
- * every similar clip, so per source region (see cand.region) and target
+/* Choose transitions among local minima.
+ *
+ * Same-label candidates (by_clip = 1): per (source clip, target clip) pair
+ * the best transition_percentile % are kept, provided they are no worse
+ * than the median local minimum of their (label, label) pair (and the
+ * absolute transition_threshold when set). Ranking per clip pair rather
+ * than per label pair matters: near-identical clips (a clip and its own
+ * periodic repeats, mirrored twins) have minima near zero that would
+ * otherwise take the whole percentile and leave, say, straight and turning
+ * walks unconnected although their best transitions are excellent.
+ * Label changes (by_clip = 0): the percentile is taken per label pair.
+ *
+ * Then thinning: periodic motion has a local minimum against every cycle
+ * of every similar clip, so per source region (see cand.region) and target
  * clip (label, for label changes) only the best candidate is kept.
  * Returns the new count. */
-static uint32_t select_candidates(const smgb_bake* b, cand* cands,
-                                  uint32_t n) {
+static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
+                                  int by_clip) {
   uint32_t i, kept = 0, t, nk = 0;
-  qsort(cands, n, sizeof *cands, cand_cmp);
+  float* ceiling = NULL;
+  uint32_t L = b->style_count > b->action_count ? b->style_count
+                                                : b->action_count;
+  if (n == 0) return 0;
+  if (by_clip) {
+    ceiling = malloc((size_t)L * L * sizeof *ceiling);
+    if (ceiling) {
+      for (i = 0; i < L * L; ++i) ceiling[i] = INFINITY;
+      qsort(cands, n, sizeof *cands, cand_cmp);
+      for (i = 0; i < n;) {
+        uint32_t e = i;
+        while (e < n && cands[e].li == cands[i].li &&
+               cands[e].lj == cands[i].lj)
+          ++e;
+        if (cands[i].li < L && cands[i].lj < L)
+          ceiling[cands[i].li * L + cands[i].lj] = cands[i + (e - i - 1) / 2].m.dist;
+        i = e;
+      }
+    }
+    qsort(cands, n, sizeof *cands, clip_cmp);
+  } else {
+    qsort(cands, n, sizeof *cands, cand_cmp);
+  }
   for (i = 0; i < n;) {
     uint32_t e = i, keep;
-    while (e < n && cands[e].li == cands[i].li && cands[e].lj == cands[i].lj)
+    float cap = INFINITY;
+    while (e < n && cands[e].li == cands[i].li &&
+           cands[e].lj == cands[i].lj &&
+           (!by_clip || (cands[e].ci == cands[i].ci &&
+                         cands[e].cj == cands[i].cj)))
       ++e;
     keep = (uint32_t)ceil((e - i) * (double)b->opt.transition_percentile /
                           100.0);
     if (keep < 1) keep = 1;
+    if (ceiling && cands[i].li < L && cands[i].lj < L)
+      cap = ceiling[cands[i].li * L + cands[i].lj];
+    if (b->opt.transition_threshold > 0.0f && b->opt.transition_threshold < cap)
+      cap = b->opt.transition_threshold;
     for (t = i; t < i + keep && t < e; ++t) {
-      if (b->opt.transition_threshold > 0.0f &&
-          cands[t].m.dist > b->opt.transition_threshold && t > i)
-        break;
+      /* label changes always keep their best candidate */
+      if (cands[t].m.dist > cap && (by_clip || t > i)) break;
       cands[kept++] = cands[t];
     }
     i = e;
   }
+  free(ceiling);
   qsort(cands, kept, sizeof *cands, region_cmp);
   for (t = 0; t < kept; ++t) {
     if (nk > 0 && cands[nk - 1].region == cands[t].region &&
@@ -390,6 +440,8 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
     cands[i].m = mins[i];
     cands[i].li = b->clips[ctx.clip_of[mins[i].i]].label;
     cands[i].lj = b->clips[ctx.clip_of[mins[i].j]].label;
+    cands[i].ci = ctx.clip_of[mins[i].i];
+    cands[i].cj = ctx.clip_of[mins[i].j];
     {
       /* same-label candidates: one per k source frames; label changes are
        * far costlier (walk vs run poses) and only need to be available,
@@ -417,7 +469,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
         cands[t] = tmp;
       }
     ncross = min_count - nsame;
-    nsame = select_candidates(b, cands, nsame);
+    nsame = select_candidates(b, cands, nsame, 1);
     if (ncross > 0) {
       uint8_t* mark = NULL;
       memmove(cands + nsame, cands + (min_count - ncross),
@@ -438,7 +490,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
         }
       }
       free(mark);
-      ncross = select_candidates(b, cands + nsame, ncross);
+      ncross = select_candidates(b, cands + nsame, ncross, 0);
       smgb_graph_free(g);
     }
     kept = nsame + ncross;
