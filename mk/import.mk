@@ -18,3 +18,16 @@ $(SYNTHETIC_STAMP): $(SMG_GEN_CLIPS)
 
 .PHONY: synthetic-clips
 synthetic-clips: $(SYNTHETIC_STAMP)
+
+# Import benchmark (part of `make bench`): BVH parse vs a read+scan
+# baseline, resample, mirror, synthetic generation.
+BENCH_IMPORT := $(BUILD)/bench/bench_import
+BENCH_TARGETS += bench-import
+
+$(BENCH_IMPORT): bench/bench_import.c $(LIBSMG_BAKE_A) $(LIBSMG_A) $(LIB_HDR) $(BAKE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_TOOL) -DSMG_SHARED_DIR='"$(SMG_SHARED)"' $< -o $@ $(LIBSMG_BAKE_A) $(LIBSMG_A) $(BAKE_LDLIBS) $(LDLIBS_M)
+
+.PHONY: bench-import
+bench-import: $(BENCH_IMPORT)
+	SMG_SHARED=$(SMG_SHARED) $(BENCH_IMPORT)
