@@ -203,6 +203,49 @@ static void test_x_left_mirrors(void** state) {
   svp_destroy(fig);
 }
 
+/* x of the legend box (the first rect with fill-opacity). */
+static double legend_x(const char* doc) {
+  const char* p = strstr(doc, "fill-opacity");
+  double x = -1, y = -1;
+  assert_non_null(p);
+  while (p > doc && strncmp(p, "<rect", 5) != 0) p--;
+  assert_int_equal(sscanf(p, "<rect x=\"%lf\" y=\"%lf\"", &x, &y), 2);
+  return x;
+}
+
+static void test_legend_avoids_data(void** state) {
+  /* Many points in the top-right corner: the legend moves left. */
+  double x[50], y[50];
+  size_t i;
+  svp_figure* fig = svp_create(600, 400, NULL);
+  char* doc;
+  double lx_crowded, lx_free;
+  (void)state;
+  for (i = 0; i < 50; ++i) {
+    x[i] = 9.0 + 0.02 * (double)i;
+    y[i] = 9.0 + 0.02 * (double)i;
+  }
+  assert_int_equal(svp_scatter(fig, x, y, 50, SVP_CIRCLE, "red", 2, "dots"),
+                   0);
+  assert_int_equal(svp_set_range(fig, 0, 10, 0, 10), 0);
+  doc = render(fig);
+  lx_crowded = legend_x(doc);
+  free(doc);
+  assert_true(lx_crowded < 300.0); /* left half */
+  /* Points moved to the bottom-left: the legend stays top-right. */
+  for (i = 0; i < 50; ++i) x[i] = y[i] = 0.5 + 0.02 * (double)i;
+  svp_destroy(fig);
+  fig = svp_create(600, 400, NULL);
+  assert_int_equal(svp_scatter(fig, x, y, 50, SVP_CIRCLE, "red", 2, "dots"),
+                   0);
+  assert_int_equal(svp_set_range(fig, 0, 10, 0, 10), 0);
+  doc = render(fig);
+  lx_free = legend_x(doc);
+  free(doc);
+  assert_true(lx_free > 300.0);
+  svp_destroy(fig);
+}
+
 static void test_write_file(void** state) {
   char path[] = "/tmp/smg-test-svg-XXXXXX";
   double x[3] = {0, 1, 2}, y[3] = {1, 0, 1};
@@ -234,6 +277,7 @@ int main(void) {
       cmocka_unit_test(test_document_content),
       cmocka_unit_test(test_equal_aspect),
       cmocka_unit_test(test_x_left_mirrors),
+      cmocka_unit_test(test_legend_avoids_data),
       cmocka_unit_test(test_write_file),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -575,6 +575,45 @@ static void write_axes(const svp_figure* fig, const mapping* m, FILE* out) {
   }
 }
 
+/* Data points (all items) inside the pixel box [x, x+w] x [y, y+h]. */
+static size_t points_in_box(const svp_figure* fig, const mapping* m,
+                            double x, double y, double w, double h) {
+  size_t i, j, n = 0;
+  for (i = 0; i < fig->item_count; ++i) {
+    const item* it = &fig->items[i];
+    for (j = 0; j < it->n; ++j) {
+      double px, py;
+      if (!isfinite(it->x[j]) || !isfinite(it->y[j])) continue;
+      px = map_x(m, it->x[j]);
+      py = map_y(m, it->y[j]);
+      if (px >= x && px <= x + w && py >= y && py <= y + h) n++;
+    }
+  }
+  return n;
+}
+
+/* The legend goes in the plot corner covering the fewest data points
+ * (top-right, top-left, bottom-right, bottom-left; first wins ties). */
+static void legend_corner(const svp_figure* fig, const mapping* m, double w,
+                          double h, double* out_x, double* out_y) {
+  double xs[4], ys[4];
+  size_t best = (size_t)-1, c;
+  xs[0] = xs[2] = m->x0 + m->w - w - 8;
+  xs[1] = xs[3] = m->x0 + 8;
+  ys[0] = ys[1] = m->y0 + 8;
+  ys[2] = ys[3] = m->y0 + m->h - h - 8;
+  *out_x = xs[0];
+  *out_y = ys[0];
+  for (c = 0; c < 4; ++c) {
+    size_t n = points_in_box(fig, m, xs[c], ys[c], w, h);
+    if (n < best) {
+      best = n;
+      *out_x = xs[c];
+      *out_y = ys[c];
+    }
+  }
+}
+
 static void write_legend(const svp_figure* fig, const mapping* m, FILE* out) {
   size_t i, entries = 0, longest = 0;
   double x, y, w, h;
@@ -588,8 +627,7 @@ static void write_legend(const svp_figure* fig, const mapping* m, FILE* out) {
   if (longest > 60) longest = 60;
   w = 34.0 + 6.6 * (double)longest;
   h = 8.0 + 17.0 * (double)entries;
-  x = m->x0 + m->w - w - 8;
-  y = m->y0 + 8;
+  legend_corner(fig, m, w, h, &x, &y);
   fprintf(out,
           "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" "
           "fill=\"white\" fill-opacity=\"0.88\" stroke=\"#888\"/>\n",

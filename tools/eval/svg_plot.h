@@ -3,8 +3,9 @@
  *
  * One figure = one pair of axes (data coordinates in, pixels out) holding
  * line plots, scatter points, per-vertex coloured polylines (a trajectory
- * coloured by locomotion style), markers with labels, free text, a legend,
- * and axes with "nice" 1-2-5 ticks. Everything is written from code: no
+ * coloured by locomotion style), markers with labels, free text, a legend
+ * (placed in the plot corner that hides the fewest data points), and axes
+ * with "nice" 1-2-5 ticks. Everything is written from code: no
  * figure in docs/img is ever edited by hand.
  *
  * Non-finite data points break a line (a gap), they are never drawn.
