@@ -34,6 +34,7 @@ GODOT_CFLAGS := -std=c11 $(WARN) $(OPT) -fPIC -fvisibility=hidden -D_POSIX_C_SOU
 GODOT_DEFAULT_SMG := $(BUILD)/default.smg
 GODOT_TEST_PROJ := $(GODOT_BUILD)/test-project
 GODOT_TEST_LOG := $(GODOT_BUILD)/test-godot.log
+GODOT_TEST_EDITOR_LOG := $(GODOT_BUILD)/test-godot-editor.log
 GODOT_DEMO := $(GODOT_DIR)/demo
 
 TEST_TARGETS += test-godot
@@ -86,6 +87,16 @@ test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG)
 		echo "godot exit code $$? (not trusted; checking the pass line)"
 	@grep -E '^(PASS|FAIL|godot:)' $(GODOT_TEST_LOG) || true
 	@sh $(GODOT_DIR)/test/check_log.sh $(GODOT_TEST_LOG)
+	@echo "== godot editor smoke test: open character.tscn in the headless editor ($(GODOT_TEST_EDITOR_LOG))"
+	@cd $(GODOT_TEST_PROJ) && timeout $(GODOT_TIMEOUT) $(GODOT_GD) --headless --editor --audio-driver Dummy \
+		--path . --quit-after 120 character.tscn > $(abspath $(GODOT_TEST_EDITOR_LOG)) 2>&1; rc=$$?; \
+		if [ $$rc -ne 0 ] || grep -qE 'Program crashed|handle_crash|Segmentation fault|SmgGraph: .*(not found|not a valid)' \
+			$(abspath $(GODOT_TEST_EDITOR_LOG)); then \
+			echo "test-godot: editor run failed (exit $$rc), see $(GODOT_TEST_EDITOR_LOG)" >&2; tail -20 $(abspath $(GODOT_TEST_EDITOR_LOG)) >&2; exit 1; \
+		fi; \
+		grep -q 'open_scenes=PackedStringArray("res://character.tscn")' .godot/editor/editor_layout.cfg \
+			|| { echo "test-godot: the editor did not open character.tscn" >&2; exit 1; }
+	@echo "test-godot: editor opened the scene with the extension loaded and exited cleanly"
 
 # The demo project runs from bindings/godot/demo in the editor once the
 # extension and a graph are copied in (both git-ignored).
