@@ -54,3 +54,13 @@ test-install: $(LIBSMG_A) $(LIBSMG_SO)
 SANITIZE_FLAGS := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 sanitize:
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize OPT="$(SANITIZE_FLAGS)" test-unit
+
+# Graph load cost vs a memcpy baseline, on the default blob when it exists.
+BENCH_TARGETS += bench-load
+.PHONY: bench-load
+$(BUILD)/tests/core/bench_load: tests/core/bench_load.c $(LIBSMG_A) $(LIB_HDR) tests/fixture_graph.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_TOOL) -Itests $< -o $@ $(LIBSMG_A) -lm
+bench-load: $(BUILD)/tests/core/bench_load
+	@$(BUILD)/tests/core/bench_load
+	@if [ -f $(BUILD)/default.smg ]; then $(BUILD)/tests/core/bench_load $(BUILD)/default.smg; fi
