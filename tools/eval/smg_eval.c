@@ -206,6 +206,9 @@ int main(int argc, char** argv) {
     }
   }
   if (!ctx.have_cmu)
+    eval_summary(&ctx, "The CMU clips were not found at `%s`: nothing was "
+                       "measured in this run.", ctx.cmu_dir);
+  if (!ctx.have_cmu)
     eval_log("CMU clips not found at %s: skipping the CMU parts%s",
              ctx.cmu_dir, ctx.check ? "" : " (the report says so)");
 
@@ -224,8 +227,8 @@ int main(int argc, char** argv) {
             "frames and the runtime is stepped at 30 Hz.\n"
             "- **Clips**: the paper's walk (forward and backward) is CMU "
             "09_12 here as well; its circular run is replaced by the "
-            "straight runs 09_01-09_09 (no circular run is available in "
-            "`../shared`); **boxing is replaced by 02_05 punch/strike** "
+            "straight runs 09_01-09_09 and 09_11 (no circular run is available "
+            "in `../shared`); **boxing is replaced by 02_05 punch/strike** "
             "(another subject, retargeted to the walk's skeleton); the "
             "\"carry\" ground truth of Fig. 5 is replaced by **06_10 "
             "(walking while dribbling)** with the same actor's plain walk "
