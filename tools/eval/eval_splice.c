@@ -157,6 +157,7 @@ typedef struct splice_eval {
   double* time;           /* seconds since the switch */
   double* src;            /* matched source frame (fractional, clip-local) */
   double* residual_deg;   /* match residual */
+  double* base_deg;       /* spine-base local rotation: output vs original */
   double* err_pelvis;     /* fraction of spine length */
   double* err_ground;
   double* err_pelvis_cm;
@@ -178,6 +179,7 @@ static void splice_eval_free(splice_eval* e) {
   free(e->time);
   free(e->src);
   free(e->residual_deg);
+  free(e->base_deg);
   free(e->err_pelvis);
   free(e->err_ground);
   free(e->err_pelvis_cm);
@@ -287,7 +289,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
                    splice_eval* e) {
   uint32_t J = sb->gd.joint_count, i, k;
   uint32_t jm[MAX_MATCH_JOINTS], spine[SPINE_JOINTS];
-  uint32_t lfoot, ltoe, hips;
+  uint32_t lfoot, ltoe, hips, base;
   size_t F = t->frames, m = 0, f, falls_n, window;
   double *gt_a, *gt_b, *gt_rot_a, *gt_rot_b, *clip_phase;
   uint8_t* lc;
@@ -306,6 +308,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   if (smg_graph_find_joint(sb->graph, "LeftFoot", &lfoot) != SMG_OK ||
       smg_graph_find_joint(sb->graph, "LeftToeBase", &ltoe) != SMG_OK ||
       smg_graph_find_joint(sb->graph, "Hips", &hips) != SMG_OK || hips != 0 ||
+      smg_graph_find_joint(sb->graph, "LowerBack", &base) != SMG_OK ||
       m < 8)
     return 0;
   /* Spine length: rest offsets along Hips -> Head. */
@@ -328,6 +331,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   e->time = (double*)malloc(F * sizeof(double));
   e->src = (double*)malloc(F * sizeof(double));
   e->residual_deg = (double*)malloc(F * sizeof(double));
+  e->base_deg = (double*)malloc(F * sizeof(double));
   e->err_pelvis = (double*)malloc(F * sizeof(double));
   e->err_ground = (double*)malloc(F * sizeof(double));
   e->err_pelvis_cm = (double*)malloc(F * sizeof(double));
@@ -342,7 +346,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   clip_phase = (double*)malloc(sb->upper_count * sizeof(double));
   lc = (uint8_t*)malloc(F);
   falls = (size_t*)malloc(F * sizeof(size_t));
-  if (!e->time || !e->src || !e->residual_deg || !e->err_pelvis ||
+  if (!e->time || !e->src || !e->residual_deg || !e->base_deg || !e->err_pelvis ||
       !e->err_ground || !e->err_pelvis_cm || !e->err_ground_cm ||
       !e->phase_low || !e->phase_up || !e->phase_up_native || !gt_a ||
       !gt_b || !gt_rot_a || !gt_rot_b || !clip_phase || !lc || !falls)
@@ -379,7 +383,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   e->first_compared = e->switch_frame + window;
   for (f = 0; f < F; ++f) {
     e->time[f] = ((double)f - (double)e->switch_frame) * t->dt;
-    e->src[f] = e->residual_deg[f] = NAN;
+    e->src[f] = e->residual_deg[f] = e->base_deg[f] = NAN;
     e->err_pelvis[f] = e->err_ground[f] = NAN;
     e->err_pelvis_cm[f] = e->err_ground_cm[f] = NAN;
     e->phase_up[f] = e->phase_up_native[f] = NAN;
@@ -430,6 +434,22 @@ static int measure(const splice_blob* sb, const eval_trace* t,
       continue;
     }
     e->src[f] = src;
+    /* How far the splice turned the spine base (LowerBack) away from the
+     * original's, at the best whole frame: the Horn correction at work. */
+    {
+      const float* ob = out + 3 + 4 * base;
+      const float* gb = sb->gd.poses +
+                        (size_t)(sb->upper_first + bi) * SMGI_POSE_STRIDE(J) +
+                        3 + 4 * base;
+      double qa[4] = {ob[0], ob[1], ob[2], ob[3]};
+      double qb[4] = {gb[0], gb[1], gb[2], gb[3]};
+      double na = sqrt(qa[0] * qa[0] + qa[1] * qa[1] + qa[2] * qa[2] +
+                       qa[3] * qa[3]);
+      double nb = sqrt(qb[0] * qb[0] + qb[1] * qb[1] + qb[2] * qb[2] +
+                       qb[3] * qb[3]);
+      for (k = 0; k < 4; ++k) qa[k] /= na, qb[k] /= nb;
+      e->base_deg[f] = em_quat_angle(qa, qb) * 180.0 / 3.14159265358979323846;
+    }
     /* Ground truth between frames floor(src) and floor(src) + 1. */
     if (src < 0.0) src = 0.0;
     i = (uint32_t)floor(src);
@@ -868,13 +888,14 @@ void eval_section_splice(eval_ctx* ctx) {
   }
   {
     double* scratch = (double*)malloc(e.frames * sizeof(double));
-    em_stats sp, sg, spc, sgc, res;
+    em_stats sp, sg, spc, sgc, res, bas;
     if (scratch) {
       em_stats_compute(e.err_pelvis, e.frames, scratch, &sp);
       em_stats_compute(e.err_ground, e.frames, scratch, &sg);
       em_stats_compute(e.err_pelvis_cm, e.frames, scratch, &spc);
       em_stats_compute(e.err_ground_cm, e.frames, scratch, &sgc);
       em_stats_compute(e.residual_deg, e.frames, scratch, &res);
+      em_stats_compute(e.base_deg, e.frames, scratch, &bas);
       free(scratch);
       if (ctx->check) {
         eval_check(ctx, sp.count > 30 && sp.mean < 0.15,
@@ -916,13 +937,20 @@ void eval_section_splice(eval_ctx* ctx) {
                 "| worst error, %% of spine length | %.2f | %.2f |\n"
                 "| mean / worst error, cm | %.2f / %.2f | %.2f / %.2f |\n"
                 "| match residual mean / max (deg per joint) | %.2f / %.2f | "
-                "|\n\n",
+                "|\n"
+                "| spine-base (LowerBack) rotation vs the original's, mean / "
+                "max (deg) | %.2f / %.2f | |\n\n"
+                "The pelvis-frame error comes from the spine base: every "
+                "joint above it is copied from the source frame, so the "
+                "last row (the rotation the splice applies there, i.e. the "
+                "Horn correction plus any blending) is what moves the spine "
+                "away from the original relative to the pelvis.\n\n",
                 PATH_LENGTH, (double)SPLICE_AT,
                 sb.gd.info->window_seconds, MATCH_LIMIT_DEG,
                 100.0 * e.spine_length, sp.count, e.rejected, sg.count,
                 100.0 * sp.mean, 100.0 * sg.mean, 100.0 * sp.max,
                 100.0 * sg.max, spc.mean, spc.max, sgc.mean, sgc.max,
-                res.mean, res.max);
+                res.mean, res.max, bas.mean, bas.max);
         eval_summary(ctx,
                      "**Splicing accuracy** (06_01 walk legs + 06_10 "
                      "dribbling upper body vs the original 06_10, %zu "
