@@ -66,6 +66,18 @@ static int is_space(char c) {
          c == '\f';
 }
 
+/* ASCII case-insensitive equality: exporters disagree on "End Site" vs
+ * "End site", "Xrotation" vs "XRotation". */
+static int ieq(const char* a, const char* b) {
+  for (; *a && *b; ++a, ++b) {
+    char x = *a, y = *b;
+    if (x >= 'A' && x <= 'Z') x = (char)(x - 'A' + 'a');
+    if (y >= 'A' && y <= 'Z') y = (char)(y - 'A' + 'a');
+    if (x != y) return 0;
+  }
+  return *a == *b;
+}
+
 /* Next whitespace-separated token ('{' and '}' always stand alone).
  * Returns 1 on a token, 0 at end of input, -1 on an overlong token. */
 static int lex_next(bvh_lexer* lx) {
@@ -210,7 +222,7 @@ static int lex_number(bvh_lexer* lx, const char* what, double* out) {
 static int lex_expect(bvh_lexer* lx, const char* word, const char* context) {
   int r = lex_next(lx);
   if (r < 0) return 0;
-  if (r == 0 || strcmp(lx->tok, word) != 0) {
+  if (r == 0 || !ieq(lx->tok, word)) {
     smgb_imp_errorf(lx->err, "%s:%u: expected '%s' %s, found '%s'", lx->name,
                     lx->tok_line, word, context, tok_show(lx));
     return 0;
@@ -223,7 +235,7 @@ static int channel_from_name(const char* s) {
                                        "Xrotation", "Yrotation", "Zrotation"};
   int i;
   for (i = 0; i < 6; ++i)
-    if (strcmp(s, names[i]) == 0) return i;
+    if (ieq(s, names[i])) return i;
   return -1;
 }
 
@@ -338,7 +350,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       return 0;
     }
     if (in_end_site) {
-      if (strcmp(lx->tok, "OFFSET") == 0 && !end_site_offset) {
+      if (ieq(lx->tok, "OFFSET") && !end_site_offset) {
         double tmp[3];
         if (!parse_offset(lx, tmp)) return 0;
         end_site_offset = 1;
@@ -358,7 +370,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       continue;
     }
-    if (strcmp(lx->tok, "OFFSET") == 0) {
+    if (ieq(lx->tok, "OFFSET")) {
       if (j->has_offset || j->has_children) {
         smgb_imp_errorf(lx->err, "%s:%u: misplaced or repeated OFFSET in '%s'",
                         lx->name, lx->tok_line, j->name);
@@ -366,7 +378,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       if (!parse_offset(lx, j->offset)) return 0;
       j->has_offset = 1;
-    } else if (strcmp(lx->tok, "CHANNELS") == 0) {
+    } else if (ieq(lx->tok, "CHANNELS")) {
       if (j->has_channels || j->has_children) {
         smgb_imp_errorf(lx->err,
                         "%s:%u: misplaced or repeated CHANNELS in '%s'",
@@ -374,7 +386,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
         return 0;
       }
       if (!parse_channels(lx, h, j)) return 0;
-    } else if (strcmp(lx->tok, "JOINT") == 0 || strcmp(lx->tok, "End") == 0 ||
+    } else if (ieq(lx->tok, "JOINT") || ieq(lx->tok, "End") ||
                strcmp(lx->tok, "}") == 0) {
       if (!j->has_offset) {
         smgb_imp_errorf(lx->err, "%s:%u: joint '%s' has no OFFSET", lx->name,
@@ -388,7 +400,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       if (lx->tok[0] == '}') {
         depth--;
-      } else if (lx->tok[0] == 'E') {
+      } else if (lx->tok[0] == 'E' || lx->tok[0] == 'e') {
         if (!lex_expect(lx, "Site", "after 'End'")) return 0;
         if (!lex_expect(lx, "{", "after 'End Site'")) return 0;
         j->has_children = 1;
@@ -624,8 +636,8 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
 
   /* MOTION / Frames: N / Frame Time: T */
   if (lex_next(&lx) < 0) goto done;
-  if (strcmp(lx.tok, "MOTION") != 0) {
-    if (strcmp(lx.tok, "ROOT") == 0)
+  if (!ieq(lx.tok, "MOTION")) {
+    if (ieq(lx.tok, "ROOT"))
       smgb_imp_errorf(err, "%s:%u: more than one ROOT is not supported", name,
                       lx.tok_line);
     else

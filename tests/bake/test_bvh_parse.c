@@ -200,6 +200,21 @@ static void test_constant_joint_translation(void** state) {
   smgb_clip_free(&c);
 }
 
+/* Keywords and channel names are matched case-insensitively (exporters
+ * write "End site", "XROTATION", ...). */
+static void test_keyword_case(void** state) {
+  static const char text[] =
+      "hierarchy\nroot R\n{\n offset 0 0 0\n channels 2 YPOSITION "
+      "xRotation\n End site\n {\n  OFFSET 0 1 0\n }\n}\nmotion\n"
+      "frames: 1\nframe time: 0.5\n1.5 90\n";
+  smgb_clip c = parse_ok(text, 1.0f, 0);
+  (void)state;
+  assert_int_equal(c.skeleton.joint_count, 1);
+  assert_float_equal(c.poses[1], 1.5f, 0.0f);
+  assert_float_equal(c.poses[3], (float)sqrt(0.5), 1e-6f);
+  smgb_clip_free(&c);
+}
+
 /* Writer: ZYX channels in metres; load(save(c)) == c. */
 static void test_round_trip(void** state) {
   static const char text[] =
@@ -252,6 +267,7 @@ int main(void) {
       cmocka_unit_test(test_units_skip_rate),
       cmocka_unit_test(test_hemisphere),
       cmocka_unit_test(test_constant_joint_translation),
+      cmocka_unit_test(test_keyword_case),
       cmocka_unit_test(test_round_trip),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
