@@ -160,8 +160,8 @@ static void write_report(eval_ctx* ctx, const smgb_manifest* man,
 
   eval_md(ctx, "Every stage the baker reported (1 thread%s):\n\n"
                "| Stage | 1 thread |%s\n|---|---:|%s\n",
-          r2 ? " and default threads" : "",
-          r2 ? " threads" : "", r2 ? "---:|" : "");
+          r2 ? " and the default thread count" : "",
+          r2 ? " default threads |" : "", r2 ? "---:|" : "");
   for (i = 0; i < r1->stage_count && i < SMG_BAKE_MAX_STAGES; ++i) {
     eval_md(ctx, "| %s | %s |", r1->stages[i].name ? r1->stages[i].name : "?",
             fmt_seconds(a, sizeof(a), r1->stages[i].seconds));

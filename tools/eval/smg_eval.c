@@ -95,7 +95,7 @@ static void delete_stale_figures(const char* dir) {
 }
 
 static void write_header(eval_ctx* ctx, const char* shared) {
-  char cpu[256], commit[64], dirty[8], date[64], kernel[256];
+  char cpu[256], commit[64], dirty[8], date[64], kernel[256], load[128];
   time_t now = time(NULL);
   struct tm tmv;
   long cores = sysconf(_SC_NPROCESSORS_ONLN), mem = mem_total_mib();
@@ -108,6 +108,9 @@ static void write_header(eval_ctx* ctx, const char* shared) {
       "':!docs/results.md' ':!docs/img' 2>/dev/null | head -n 1",
       dirty, sizeof(dirty));
   command_line("uname -sr 2>/dev/null", kernel, sizeof(kernel));
+  /* Timings depend on what else runs: record the load when we start. */
+  command_line("cut -d' ' -f1-3 /proc/loadavg 2>/dev/null", load,
+               sizeof(load));
   gmtime_r(&now, &tmv);
   strftime(date, sizeof(date), "%Y-%m-%d %H:%M:%S UTC", &tmv);
   eval_md(ctx,
@@ -120,9 +123,11 @@ static void write_header(eval_ctx* ctx, const char* shared) {
           "| Machine | %s, %ld logical core(s), %ld MiB RAM, %s |\n"
           "| Commit | `%s%s` |\n"
           "| Date | %s |\n"
+          "| Load average (1/5/15 min) at start | %s |\n"
           "| Data | `%s` (%s) |\n\n",
           cpu, cores, mem, kernel[0] ? kernel : "unknown OS",
           commit[0] ? commit : "unknown", dirty[0] ? "-dirty" : "", date,
+          load[0] ? load : "unknown",
           ctx->cmu_dir,
           ctx->have_cmu ? "CMU clips found" : "CMU clips NOT found");
   (void)shared;
