@@ -719,7 +719,9 @@ void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size) {
           "Timing: *path given -> first pose* covers `set_path` + the "
           "constraints + the first `step` + reading the first pose (the "
           "character already exists); *per frame* is one `step` plus "
-          "`get_model_matrices` (31 joints), wall clock, one thread. The "
+          "`get_model_matrices` (31 joints), wall clock, one thread; the "
+          "paths run in the order listed on a freshly loaded graph, so the "
+          "first one also pays first-touch costs of the graph's memory. The "
           "paper reports 3-23 s from drawing to animation for the whole "
           "path; libsmg plans incrementally within each step.\n\n");
   for (k = 0; k < PATH_COUNT; ++k) {
