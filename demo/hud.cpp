@@ -17,8 +17,11 @@ const char* kMicro = "\xC2\xB5s";  // "µs" in UTF-8 (the default font has it)
 void stats(App& app) {
   const World& w = app.world;
   const smg_graph_info& info = w.info();
-  ImGui::Text("frame %.2f ms (%.0f fps)   sim %.1f s%s", app.frame_ms, app.frame_ms > 0 ? 1000.0 / app.frame_ms : 0.0,
-              w.sim_time(), app.paused ? "  [paused]" : "");
+  if (app.headless)  // pictures: only the simulation runs per frame
+    ImGui::Text("headless: %.3f ms per simulated frame   sim %.1f s", app.frame_ms, w.sim_time());
+  else
+    ImGui::Text("frame %.2f ms (%.0f fps)   sim %.1f s%s", app.frame_ms,
+                app.frame_ms > 0 ? 1000.0 / app.frame_ms : 0.0, w.sim_time(), app.paused ? "  [paused]" : "");
   ImGui::Text("step+pose %.1f %s/character (max %.1f)", app.step_us_avg, kMicro, app.step_us_max);
   ImGui::Text("characters %d   total %.0f %s/frame", int(w.characters().size()),
               app.step_us_avg * double(w.characters().size()), kMicro);

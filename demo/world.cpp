@@ -38,6 +38,15 @@ std::string lower(const std::string& s) {
   return out;
 }
 
+// The runtime accepts constraints only within its copy of the path; each
+// character's translated copy may differ from the demo's length by float
+// rounding, so a marker at the very end is clamped per character.
+float clamp_to_path(const smg_character* ch, float s) {
+  float length = 0.0f;
+  if (smg_character_get_path_length(ch, &length) == SMG_OK && s > length && s < length + 1e-2f) return length;
+  return s;
+}
+
 }  // namespace
 
 std::vector<glm::vec2> crowd_offsets(int n, float spacing) {
@@ -284,9 +293,10 @@ int World::add_marker(MarkerKind kind, float s, uint32_t value) {
   m.arc_length = s;
   for (size_t i = 0; i < characters_.size(); ++i) {
     uint32_t id = 0;
+    float si = clamp_to_path(characters_[i].handle, s);
     smg_result r = kind == MarkerKind::Transition
-                       ? smg_character_add_transition(characters_[i].handle, s, value, &id)
-                       : smg_character_add_splice(characters_[i].handle, s, value, &id);
+                       ? smg_character_add_transition(characters_[i].handle, si, value, &id)
+                       : smg_character_add_splice(characters_[i].handle, si, value, &id);
     if (!check(r, kind == MarkerKind::Transition ? "smg_character_add_transition" : "smg_character_add_splice")) {
       // Keep all characters consistent: undo the ones already added.
       for (size_t k = 0; k < i; ++k) smg_character_remove_constraint(characters_[k].handle, m.ids[k]);
@@ -312,7 +322,8 @@ bool World::move_marker(int uid, float s) {
     if (m.uid != uid) continue;
     m.arc_length = s;
     for (size_t i = 0; i < characters_.size() && i < m.ids.size(); ++i)
-      check(smg_character_move_constraint(characters_[i].handle, m.ids[i], s), "smg_character_move_constraint");
+      check(smg_character_move_constraint(characters_[i].handle, m.ids[i], clamp_to_path(characters_[i].handle, s)),
+            "smg_character_move_constraint");
     return true;
   }
   last_error_ = "no marker #" + std::to_string(uid);
@@ -338,16 +349,16 @@ void World::clear_markers() {
     check(smg_character_clear_constraints(c.handle), "smg_character_clear_constraints");
 }
 
-// The latest marker (by arc length, then creation) at or before s wins.
+// The marker with the largest arc length at or before s wins.
 static uint32_t value_at(const std::vector<Marker>& markers, MarkerKind kind, float s) {
   uint32_t v = 0;
   float best = -1.0f;
-  int best_uid = 0;
   for (const Marker& m : markers) {
     if (m.kind != kind || m.arc_length > s) continue;
-    if (m.arc_length > best || (m.arc_length == best && m.uid > best_uid)) {
+    // Strictly greater, as the runtime: among equal arc lengths the marker
+    // placed first (markers_ is in creation order) wins.
+    if (m.arc_length > best) {
       best = m.arc_length;
-      best_uid = m.uid;
       v = m.value;
     }
   }
