@@ -17,7 +17,8 @@
 #define SMGI_QUEUE_CAP 64u        /* committed + planned lower edges */
 #define SMGI_MAX_CANDIDATES 64u   /* out-edges ranked per planning step */
 #define SMGI_PLAN_BUDGET 48u      /* candidate evaluations per step */
-#define SMGI_LOOK_BUDGET 12u      /* look-ahead edge evaluations per candidate */
+#define SMGI_LOOK_BUDGET 48u      /* look-ahead edge evaluations per candidate */
+#define SMGI_SEARCH_SECONDS 1.2f  /* look-ahead window below a candidate */
 #define SMGI_MAX_RANK 3u          /* backtracking tries per node */
 #define SMGI_MAX_BACKTRACKS 8u    /* backtracks before accepting the best */
 #define SMGI_SPLICE_WINDOW 20u    /* lower frames searched for a splice */

@@ -25,6 +25,7 @@
 #define STYLE_WEIGHT 3.0f      /* metres of penalty per hop to the style:
                                   style constraints dominate path error */
 #define END_SPEED_WEIGHT 0.5f  /* at the end prefer edges that travel less */
+#define PROGRESS_WEIGHT 1.0f   /* metres of error per metre of lost progress */
 
 typedef struct cand {
   uint32_t edge;
@@ -70,6 +71,48 @@ static float style_penalty(const smg_character* ch, const smgi_edge* e,
   return STYLE_WEIGHT * (1.0f + (float)h);
 }
 
+/* An edge that spans arc lengths [s0, s1] is in style if its label is
+ * wanted at either end: transition edges cross the point where the style
+ * changes, and an edge ending exactly on a transition point is fine. */
+static float edge_style_penalty(const smg_character* ch, const smgi_edge* e,
+                                float s0, float s1) {
+  uint32_t a = smgi_style_at(ch, s0), b = smgi_style_at(ch, s1);
+  if (e->label == a || e->label == b) return 0.0f;
+  return style_penalty(ch, e, b);
+}
+
+/* How far a planned ground position is from following the path, given
+ * that it should have progressed to arc length s_exp: its distance from
+ * the path (nearest point near s_exp) plus a penalty when its progress
+ * falls short of s_exp by more than a slack (looping, walking backwards).
+ * Projection rather than "distance to the point at s_exp" lets a wide
+ * turn cut a corner instead of being punished for it. Writes the
+ * projected arc length and segment, and the tangent heading there. */
+static float track_error(const smg_character* ch, float x, float z,
+                         float s_exp, float slack, uint32_t* seg,
+                         float* s_proj, float* tangent) {
+  const smgi_path* p = &ch->path;
+  float px, pz, d;
+  smgi_path_eval(p, s_exp, seg, &px, &pz, NULL);
+  float sp = smgi_path_project_local(p, x, z, seg, &d);
+  float shortfall = s_exp - sp - slack;
+  if (shortfall > 0.0f) d += PROGRESS_WEIGHT * shortfall;
+  /* beyond the end: the overshoot counts as distance too */
+  if (s_exp > p->length) {
+    float ex = p->xz[2u * (p->count - 1u)] - x;
+    float ez = p->xz[2u * (p->count - 1u) + 1u] - z;
+    float de = sqrtf(ex * ex + ez * ez);
+    if (de > d) d = de;
+  }
+  *s_proj = sp;
+  if (tangent) {
+    float tx, tz;
+    uint32_t sg = *seg;
+    smgi_path_eval(p, sp, &sg, &tx, &tz, tangent);
+  }
+  return d;
+}
+
 /* Value of standing at `node` with ground transform W and progress s:
  * where the node's natural continuation leads (derived node_look) against
  * the path further on, position plus heading error. */
@@ -78,58 +121,74 @@ static float leaf_value(const smg_character* ch, uint32_t node,
   const float* look = smgi_derived_of(ch->graph)->node_look + 4u * node;
   smgi_xform2 lk = {look[0], look[1], look[2]};
   smgi_xform2 end = smgi_xf_mul(W, lk);
-  float x, z, h;
-  smgi_path_eval(&ch->path, s + look[3], &seg, &x, &z, &h);
-  float d = sqrtf((end.x - x) * (end.x - x) + (end.z - z) * (end.z - z));
-  return d + HEADING_WEIGHT * fabsf(smgi_wrap_angle(end.h - h));
+  float sp, th;
+  float d = track_error(ch, end.x, end.z, s + look[3], 0.5f * look[3], &seg,
+                        &sp, &th);
+  return d + HEADING_WEIGHT * fabsf(smgi_wrap_angle(end.h - th));
 }
 
-/* Bounded look-ahead below a candidate edge: a depth-first search over the
- * next `frames_left` frames of graph (at most *budget edge evaluations,
- * shared by the whole subtree), returning the best achievable worst
- * distance error plus the leaf's heading error and style penalties. Baked
- * graphs can have edges of two frames and nodes with one or two exits; a
- * one-edge greedy choice cannot see that a turn becomes possible three
- * edges later, this can - at a fixed, small cost. */
+/* Bounded look-ahead below a candidate edge. Baked graphs can have edges
+ * of two frames and nodes with one or two exits, so a one-edge greedy
+ * choice cannot see that a turn becomes possible three edges later. This
+ * walks the natural continuation (the original motion) for the next
+ * `frames_left` frames and, at every branching node on the way, also
+ * tries leaving it once (each exit judged by where its own natural
+ * continuation leads, from the derived node_look table). The value is the
+ * best, over these sequences, of the worst distance error along it plus
+ * the end's heading error and style penalties. Cost: about one edge
+ * evaluation per natural edge plus two per alternative exit, capped by
+ * *budget; deviations near the start are tried first, where they matter
+ * most. */
 static float look_value(const smg_character* ch, uint32_t node,
                         smgi_xform2 W, float s, uint32_t seg,
-                        float frames_left, uint32_t* budget, uint32_t depth) {
+                        float frames_left, uint32_t* budget) {
   const smg_graph* g = ch->graph;
-  const smgi_node* n = &g->data.lower_nodes[node];
-  if (frames_left <= 0.0f || *budget == 0 || depth >= 24u ||
-      n->edge_count == 0)
-    return leaf_value(ch, node, W, s, seg);
-  float best = INFINITY;
-  for (uint32_t k = 0; k < n->edge_count && *budget > 0; ++k) {
-    /* natural continuation first, so a small budget follows it; then
-     * the other exits in order */
-    uint32_t nat = smgi_derived_of(g)->natural_next[node];
-    uint32_t ei = n->first_edge + k;
-    if (nat != SMGI_NONE) {
-      if (k == 0) {
-        ei = nat;
-      } else {
-        ei = n->first_edge + k - 1u;
-        if (ei >= nat) ++ei;
-      }
+  const smgi_derived* dv = smgi_derived_of(g);
+  float best = INFINITY, worst = 0.0f, pen_acc = 0.0f;
+  for (uint32_t hop = 0; hop < 64u; ++hop) {
+    const smgi_node* n = &g->data.lower_nodes[node];
+    uint32_t nat = dv->natural_next[node];
+    if (frames_left <= 0.0f || *budget == 0 || n->edge_count == 0) break;
+    /* leave the natural motion here */
+    for (uint32_t k = 0; k < n->edge_count && *budget > 0; ++k) {
+      uint32_t ei = n->first_edge + k;
+      if (ei == nat) continue;
+      *budget = *budget > 2u ? *budget - 2u : 0u;
+      const smgi_edge* e = &g->data.lower_edges[ei];
+      smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
+      float s_t = s + e->arc_length;
+      uint32_t sg = seg;
+      float sp;
+      float d = track_error(ch, end.x, end.z, s_t, 0.5f * e->arc_length, &sg,
+                            &sp, NULL);
+      float pen =
+          pen_acc + 0.5f * edge_style_penalty(ch, e, s, s_t);
+      float w = worst > d ? worst : d;
+      if (w + pen >= best) continue; /* cannot beat what we have */
+      float leaf = leaf_value(ch, e->to, end, sp, sg);
+      float v = (w > leaf ? w : leaf) + pen;
+      if (v < best) best = v;
     }
+    if (nat == SMGI_NONE) break;
+    /* follow the natural motion one edge */
     (*budget)--;
-    const smgi_edge* e = &g->data.lower_edges[ei];
+    const smgi_edge* e = &g->data.lower_edges[nat];
     smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
     float s_t = s + e->arc_length;
-    uint32_t sg = seg;
-    float x, z;
-    smgi_path_eval(&ch->path, s_t, &sg, &x, &z, NULL);
-    float d = sqrtf((end.x - x) * (end.x - x) + (end.z - z) * (end.z - z));
-    float pen = 0.5f * style_penalty(ch, e, smgi_style_at(ch, s_t));
-    if (d + pen >= best) continue; /* cannot beat what we have */
-    float sub = look_value(ch, e->to, end, s_t, sg,
-                           frames_left - (float)e->frame_count, budget,
-                           depth + 1u);
-    float v = (d > sub ? d : sub) + pen;
-    if (v < best) best = v;
+    float sp;
+    float d = track_error(ch, end.x, end.z, s_t, 0.5f * e->arc_length, &seg,
+                          &sp, NULL);
+    if (d > worst) worst = d;
+    pen_acc += 0.5f * edge_style_penalty(ch, e, s, s_t);
+    W = end;
+    s = sp;
+    frames_left -= (float)e->frame_count;
+    node = e->to;
+    if (worst + pen_acc >= best) return best; /* only gets worse */
   }
-  return isfinite(best) ? best : leaf_value(ch, node, W, s, seg);
+  float leaf = leaf_value(ch, node, W, s, seg);
+  float v = (worst > leaf ? worst : leaf) + pen_acc;
+  return v < best ? v : best;
 }
 
 static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
@@ -154,31 +213,30 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
     float arc = e->arc_length;
     float s_t = s + arc;
     uint32_t sg = seg;
-    float tx, tz;
-    smgi_path_eval(p, s_t, &sg, &tx, &tz, NULL);
-    float dx = end.x - tx, dz = end.z - tz;
-    float e_end = sqrtf(dx * dx + dz * dz);
+    float sp;
+    float e_end = track_error(ch, end.x, end.z, s_t, 0.5f * arc, &sg, &sp,
+                              NULL);
     /* mid-edge root sample, placed from FRMI without FK */
     const smgi_node* from = &g->data.lower_nodes[e->from];
     smgi_xform2 M = smgi_xf_mul(W, smgi_xf_inv(ground_of(g, from->frame)));
     const float* r = g->data.frames[e->first_frame + e->frame_count / 2u]
                          .root2d;
-    float mx, mz, px, pz;
+    float mx, mz, spm;
     smgi_xf_point(M, r[0], r[1], &mx, &mz);
     uint32_t sm = seg;
-    smgi_path_eval(p, s + 0.5f * arc, &sm, &px, &pz, NULL);
-    float e_mid = sqrtf((mx - px) * (mx - px) + (mz - pz) * (mz - pz));
+    float e_mid = track_error(ch, mx, mz, s + 0.5f * arc, 0.5f * arc, &sm,
+                              &spm, NULL);
     /* where this edge can lead within the look-ahead window */
     uint32_t budget = SMGI_LOOK_BUDGET;
-    float la = look_value(ch, e->to, end, s_t, sg,
-                          SMGI_LOOK_SECONDS * ch->fps - (float)e->frame_count,
-                          &budget, 0);
+    float la = look_value(ch, e->to, end, sp, sg,
+                          SMGI_SEARCH_SECONDS * ch->fps -
+                              (float)e->frame_count,
+                          &budget);
     err = e_end > e_mid ? e_end : e_mid;
     score = e_end + 0.5f * e_mid + la;
-    float dist;
-    out->s_end = smgi_path_project_local(p, end.x, end.z, &sg, &dist);
+    out->s_end = sp;
     out->seg_end = sg;
-    out->pen = style_penalty(ch, e, smgi_style_at(ch, s_t));
+    out->pen = edge_style_penalty(ch, e, s, s_t);
     score += out->pen;
   } else {
     float tx, tz;

@@ -128,7 +128,7 @@ static void test_transition(void** state) {
   assert_int_equal(smg_character_create(c->g, NULL, &ch), SMG_OK);
   assert_int_equal(smg_character_set_path(ch, xz, 61), SMG_OK);
   assert_int_equal(smg_character_add_transition(ch, 6.0f, 1, &id), SMG_OK);
-  float switched_at = -1.0f, back_at = -1.0f;
+  float switched_at = -1.0f, back_at = -1.0f, max_err = 0.0f;
   uint32_t id2;
   assert_int_equal(smg_character_add_transition(ch, 20.0f, 0, &id2), SMG_OK);
   for (int i = 0; i < 60 * 14; ++i) {
@@ -138,8 +138,10 @@ static void test_transition(void** state) {
     if (switched_at >= 0 && s.style == 0 && back_at < 0)
       back_at = s.path_distance;
     if (switched_at < 0) assert_int_equal(s.style, 0);
-    assert_true(s.path_error < 0.3f);
+    if (s.path_error > max_err) max_err = s.path_error;
   }
+  print_message("transition path: max err %.3f m\n", max_err);
+  assert_true(max_err < 0.3f);
   print_message("walk->run at %.2f m (point 6), run->walk at %.2f m (point "
                 "20)\n",
                 switched_at, back_at);
