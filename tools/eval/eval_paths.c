@@ -78,6 +78,8 @@ typedef struct path_result {
   eval_constraint constraints[8];
   double switch_arc[8]; /* where it switched (NAN: never) */
   double style_agree, action_agree; /* share of frames as requested */
+  double furthest;      /* largest hips arc length reached, metres */
+  double seconds;       /* simulated time of the run */
   size_t switch_frame[8];
 } path_result;
 
@@ -85,6 +87,7 @@ typedef struct path_result {
 typedef struct series {
   double* hips_xz;
   double* arc;
+  double* arc_dist; /* distance to the path at that arc length */
   double *lank, *ltoe, *rank, *rtoe; /* 3 per frame */
   uint8_t *lc_rt, *rc_rt, *lc_own, *rc_own;
   double* scratch;
@@ -93,6 +96,7 @@ typedef struct series {
 static void series_free(series* s) {
   free(s->hips_xz);
   free(s->arc);
+  free(s->arc_dist);
   free(s->lank);
   free(s->ltoe);
   free(s->rank);
@@ -123,6 +127,7 @@ static int series_make(const eval_trace* t, const joints* j,
   memset(s, 0, sizeof(*s));
   s->hips_xz = (double*)malloc(2 * F * sizeof(double));
   s->arc = (double*)malloc(F * sizeof(double));
+  s->arc_dist = (double*)malloc(F * sizeof(double));
   s->lank = (double*)malloc(3 * F * sizeof(double));
   s->ltoe = (double*)malloc(3 * F * sizeof(double));
   s->rank = (double*)malloc(3 * F * sizeof(double));
@@ -133,7 +138,7 @@ static int series_make(const eval_trace* t, const joints* j,
   s->rc_own = (uint8_t*)malloc(F);
   s->scratch = (double*)malloc(F * sizeof(double));
   low = (double*)malloc(3 * F * sizeof(double));
-  if (!s->hips_xz || !s->arc || !s->lank || !s->ltoe || !s->rank ||
+  if (!s->hips_xz || !s->arc || !s->arc_dist || !s->lank || !s->ltoe || !s->rank ||
       !s->rtoe || !s->lc_rt || !s->rc_rt || !s->lc_own || !s->rc_own ||
       !s->scratch || !low) {
     free(low);
@@ -146,8 +151,8 @@ static int series_make(const eval_trace* t, const joints* j,
     s->hips_xz[2 * i + 1] = h[2];
     /* Arc length of the hips along the path, tracked so that a path
      * passing the same place twice (the circle) is not confused. */
-    em_polyline_distance_window(path, n, h[0], h[2], prev_arc - 0.5,
-                                prev_arc + 2.0, &s->arc[i]);
+    s->arc_dist[i] = em_polyline_distance_window(
+        path, n, h[0], h[2], prev_arc - 0.5, prev_arc + 2.0, &s->arc[i]);
     prev_arc = s->arc[i];
     memcpy(s->lank + 3 * i, eval_joint(t, i, j->lfoot), 3 * sizeof(double));
     memcpy(s->ltoe + 3 * i, eval_joint(t, i, j->ltoe), 3 * sizeof(double));
@@ -446,6 +451,12 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
     for (i = 0; i < F; ++i) con += s.lc_rt[i] + s.rc_rt[i];
     pr->contact_fraction_rt = (double)con / (2.0 * (double)F);
   }
+  pr->furthest = 0.0;
+  /* Only points actually reached count: within 1 m of the path there. */
+  for (i = 0; i < F; ++i)
+    if (s.arc_dist[i] < 1.0 && s.arc[i] > pr->furthest)
+      pr->furthest = s.arc[i];
+  pr->seconds = (double)(F - 1) * t.dt;
   find_switches(&t, &s, pr);
   agreement(&t, &s, pr, walk, &pr->style_agree, &pr->action_agree);
   if (draw) draw_figure(ctx, g, p, path, n, &t, &s, pr);
@@ -502,22 +513,26 @@ static void report_paths(eval_ctx* ctx, smg_graph* g,
   eval_md(ctx,
           "| Path | length (m) | frames | path given -> first pose (ms) | "
           "per frame median / p99 (us) | root distance from path mean / max "
-          "(cm) | reached end |\n|---|---:|---:|---:|---:|---:|---|\n");
+          "(cm) | furthest point of the path reached, within 1 m (m), in "
+          "time (s) | "
+          "runtime flagged the end reached |\n|---|---:|---:|---:|---:|---:|---:|---|\n");
   for (k = 0; k < PATH_COUNT; ++k) {
     const path_result* r = &res[k];
     if (!r->ok) {
-      eval_md(ctx, "| %s | FAILED: %s | | | | | |\n", k_paths[k].title,
+      eval_md(ctx, "| %s | FAILED: %s | | | | | | |\n", k_paths[k].title,
               r->error);
       continue;
     }
-    eval_md(ctx, "| %s | %.1f | %zu | %s | %s / %s | %s / %s | %s |\n",
+    eval_md(ctx,
+            "| %s | %.1f | %zu | %s | %s / %s | %s / %s | %.1f in %.1f | %s "
+            "|\n",
             k_paths[k].title, r->length, r->frames,
             eval_fmt(a, sizeof(a), "%.3f", r->first_pose_ms),
             eval_fmt(b, sizeof(b), "%.1f", r->step_us.median),
             eval_fmt(d, sizeof(d), "%.1f", r->step_us.p99),
             eval_fmt(e, sizeof(e), "%.1f", 100.0 * r->dev_mean),
-            eval_fmt(f, sizeof(f), "%.1f", 100.0 * r->dev_max),
-            r->reached_end ? "yes" : "**no**");
+            eval_fmt(f, sizeof(f), "%.1f", 100.0 * r->dev_max), r->furthest,
+            r->seconds, r->reached_end ? "yes" : "**no**");
   }
   eval_md(ctx,
           "\nFoot skate: horizontal slide of the planted part of the foot "
