@@ -38,10 +38,18 @@ include $(filter-out mk/lib.mk mk/bake.mk,$(sort $(wildcard mk/*.mk)))
 .PHONY: all test bench clean deps
 all: $(ALL_TARGETS)
 
-# Tests run in the listed order; each target fails the whole run on failure.
+# The core suites run first, then every other part's target. Every target
+# runs even when an earlier one failed, so one red part does not hide the
+# state of the others; the run fails if any target failed.
+TEST_FIRST := test-unit test-valgrind
+TEST_ORDER := $(filter $(TEST_FIRST),$(TEST_TARGETS)) $(filter-out $(TEST_FIRST),$(TEST_TARGETS))
 test: all
-	@set -e; for t in $(TEST_TARGETS); do $(MAKE) --no-print-directory $$t; done
-	@echo "make test: all test targets passed ($(TEST_TARGETS))"
+	@failed=""; for t in $(TEST_ORDER); do \
+	  echo "######## $$t"; \
+	  $(MAKE) --no-print-directory $$t || failed="$$failed $$t"; \
+	done; \
+	if [ -n "$$failed" ]; then echo "make test: FAILED:$$failed"; exit 1; fi; \
+	echo "make test: all test targets passed ($(TEST_ORDER))"
 
 bench: all
 	@set -e; for t in $(BENCH_TARGETS); do $(MAKE) --no-print-directory $$t; done
