@@ -115,16 +115,25 @@ static float track_error(const smg_character* ch, float x, float z,
 
 /* Value of standing at `node` with ground transform W and progress s:
  * where the node's natural continuation leads (derived node_look) against
- * the path further on, position plus heading error. */
+ * the path further on, plus a heading error towards a pursuit point on
+ * the path ahead (as far ahead as the character is off the path, at least
+ * the look-ahead's length): on the path this is the tangent, off it the
+ * direction that rejoins it. */
 static float leaf_value(const smg_character* ch, uint32_t node,
                         smgi_xform2 W, float s, uint32_t seg) {
   const float* look = smgi_derived_of(ch->graph)->node_look + 4u * node;
   smgi_xform2 lk = {look[0], look[1], look[2]};
   smgi_xform2 end = smgi_xf_mul(W, lk);
-  float sp, th;
+  float sp;
   float d = track_error(ch, end.x, end.z, s + look[3], 0.5f * look[3], &seg,
-                        &sp, &th);
-  return d + HEADING_WEIGHT * fabsf(smgi_wrap_angle(end.h - th));
+                        &sp, NULL);
+  float ahead = look[3] > d ? look[3] : d;
+  if (ahead < 0.5f) ahead = 0.5f;
+  float px, pz, th;
+  smgi_path_eval(&ch->path, sp + ahead, &seg, &px, &pz, &th);
+  float dx = px - end.x, dz = pz - end.z;
+  float want = dx * dx + dz * dz > 1e-4f ? atan2f(dx, dz) : th;
+  return d + HEADING_WEIGHT * fabsf(smgi_wrap_angle(end.h - want));
 }
 
 /* Bounded look-ahead below a candidate edge. Baked graphs can have edges
@@ -161,8 +170,8 @@ static float look_value(const smg_character* ch, uint32_t node,
       float sp;
       float d = track_error(ch, end.x, end.z, s_t, 0.5f * e->arc_length, &sg,
                             &sp, NULL);
-      float pen =
-          pen_acc + 0.5f * edge_style_penalty(ch, e, s, s_t);
+      float pen = 0.5f * edge_style_penalty(ch, e, s, s_t);
+      if (pen_acc > pen) pen = pen_acc;
       float w = worst > d ? worst : d;
       if (w + pen >= best) continue; /* cannot beat what we have */
       float leaf = leaf_value(ch, e->to, end, sp, sg);
@@ -179,7 +188,11 @@ static float look_value(const smg_character* ch, uint32_t node,
     float d = track_error(ch, end.x, end.z, s_t, 0.5f * e->arc_length, &seg,
                           &sp, NULL);
     if (d > worst) worst = d;
-    pen_acc += 0.5f * edge_style_penalty(ch, e, s, s_t);
+    /* the worst style mismatch along the way, not a sum: a long stretch
+     * in the wrong style is no worse than a short one once the style
+     * cannot follow the path at all */
+    float pe = 0.5f * edge_style_penalty(ch, e, s, s_t);
+    if (pe > pen_acc) pen_acc = pe;
     W = end;
     s = sp;
     frames_left -= (float)e->frame_count;

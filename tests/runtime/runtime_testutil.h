@@ -64,21 +64,37 @@ static inline void rt_line(float* xz, uint32_t n, float length) {
   }
 }
 
-/* Straight `a` metres along +Z, then a 90-degree turn (left: towards +X,
- * which is the character's left when facing +Z with Y up) for `b` metres. */
-static inline uint32_t rt_turn(float* xz, float a, float b, int left) {
+/* Straight `a` metres along +Z, then a 90-degree turn of radius `r`
+ * (0: a sharp corner) towards +X when `left` (the character's left when
+ * facing +Z with Y up) or -X, then `b` metres straight. At most 61
+ * points. */
+static inline uint32_t rt_turn_r(float* xz, float a, float b, int left,
+                                 float r) {
   uint32_t n = 0;
+  float sg = left ? 1.0f : -1.0f;
   for (int i = 0; i <= 20; ++i) {
     xz[2 * n] = 0.0f;
     xz[2 * n + 1] = a * (float)i / 20.0f;
     ++n;
   }
+  if (r > 0.0f) {
+    for (int i = 1; i <= 20; ++i) {
+      float t = 1.5707963f * (float)i / 20.0f;
+      xz[2 * n] = sg * (r - r * cosf(t));
+      xz[2 * n + 1] = a + r * sinf(t);
+      ++n;
+    }
+  }
   for (int i = 1; i <= 20; ++i) {
-    xz[2 * n] = (left ? 1.0f : -1.0f) * b * (float)i / 20.0f;
-    xz[2 * n + 1] = a;
+    xz[2 * n] = sg * (r + b * (float)i / 20.0f);
+    xz[2 * n + 1] = a + r;
     ++n;
   }
   return n;
+}
+
+static inline uint32_t rt_turn(float* xz, float a, float b, int left) {
+  return rt_turn_r(xz, a, b, left, 0.0f);
 }
 
 /* Counting allocator. */
