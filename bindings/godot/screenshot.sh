@@ -20,7 +20,7 @@ while [ ! -e /tmp/.X11-unix/X$d ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); 
 OUTDIR=$(cd "$(dirname "$OUT")" && pwd)
 rm -f "$OUT"
 cd "$DEMO"
-DISPLAY=:$d SMG_GODOT_BIND="$OUTDIR${SMG_GODOT_BIND:+:$SMG_GODOT_BIND}" timeout 90 "$HERE/gd" \
+DISPLAY=:$d SMG_GODOT_BIND="$OUTDIR${SMG_GODOT_BIND:+:$SMG_GODOT_BIND}" timeout 240 "$HERE/gd" \
 	--path . --audio-driver Dummy --rendering-driver opengl3 --fixed-fps 30 --resolution 1280x720 \
 	-- --screenshot="$OUTDIR/$(basename "$OUT")" 2>&1 | grep -v '^$' | tail -20 || true
 [ -s "$OUT" ] || { echo "screenshot.sh: no image written to $OUT" >&2; exit 1; }

@@ -40,6 +40,9 @@ func _ready() -> void:
 		return
 	var skel := character.create_skeleton()
 	BoneMeshes.add_to(skel, graph)
+	# Apply the pose in the skeleton's modifier stage (Godot 4.3+ style);
+	# without it the character writes the bone poses itself.
+	skel.add_child(SmgSkeletonModifier.new())
 	character.style_changed.connect(func(_s, n): last_event = "style -> " + n)
 	character.action_changed.connect(func(_a, n): last_event = "action -> " + n)
 	character.path_end_reached.connect(func(): last_event = "path end reached")
@@ -233,7 +236,7 @@ func _screenshot(out: String) -> void:
 			_extend_path(pts[i - 1].lerp(pts[i], float(k) / n))
 	_add_marker("S", Vector3(0.5, 0, 4))
 	_add_marker("T", Vector3(5, 0, 6.5))
-	camera.transform = Transform3D(Basis(), Vector3(3.5, 6.5, 10.5)).looking_at(Vector3(3.5, 0, 3), Vector3.UP)
+	camera.transform = Transform3D(Basis(), Vector3(2.5, 3.2, 10.0)).looking_at(Vector3(2.5, 0.5, 3.5), Vector3.UP)
 	for i in 150:
 		await get_tree().process_frame
 	await RenderingServer.frame_post_draw
