@@ -14,7 +14,10 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <unistd.h>
+
 #include "bake_graph_helpers.h"
+#include "bake_manifest.h"
 #include "bake_math.h"
 
 static float seconds(void) { return bg_quick() ? 4.0f : 6.0f; }
@@ -325,6 +328,95 @@ static void test_bad_input(void** state) {
   bg_free(&s);
 }
 
+/* File-based input through a manifest: a missing clip is reported with the
+ * manifest's file and line, a truncated BVH with the BVH file and line, and
+ * a good manifest bakes. */
+static void test_manifest_and_files(void** state) {
+  char dir[] = "/tmp/smg-bake-test-XXXXXX", path[256], man[256];
+  bg_set s;
+  smgb_error err;
+  smgb_manifest m;
+  smg_bake_clip_desc descs[8];
+  smg_bake_desc d;
+  smg_bake_result res;
+  FILE* fp;
+  char* text;
+  long size;
+  (void)state;
+  assert_non_null(mkdtemp(dir));
+  memset(&s, 0, sizeof s);
+  bg_add(&s, SMGB_SYNTH_WALK, 3.0f, 0.0f, SMG_BAKE_ROLE_LOWER, "walk");
+  bg_add(&s, SMGB_SYNTH_RUN, 3.0f, 0.0f, SMG_BAKE_ROLE_LOWER, "run");
+  snprintf(path, sizeof path, "%s/walk.bvh", dir);
+  assert_int_equal(smgb_bvh_save(path, &s.clips[0], &err), SMG_OK);
+  snprintf(path, sizeof path, "%s/run.bvh", dir);
+  assert_int_equal(smgb_bvh_save(path, &s.clips[1], &err), SMG_OK);
+
+  /* missing file: manifest name and line */
+  snprintf(man, sizeof man, "%s/bad.manifest", dir);
+  fp = fopen(man, "w");
+  fprintf(fp, "root .\nunit 1\nlower walk walk.bvh\nlower run nothere.bvh\n");
+  fclose(fp);
+  assert_int_not_equal(smgb_manifest_load(man, NULL, &m, &err), SMG_OK);
+  assert_non_null(strstr(err.message, "bad.manifest:4"));
+  assert_non_null(strstr(err.message, "nothere.bvh"));
+
+  /* truncated BVH: the bake names the clip's manifest line and the file */
+  fp = fopen(path, "rb");
+  fseek(fp, 0, SEEK_END);
+  size = ftell(fp);
+  fseek(fp, 0, SEEK_SET);
+  text = malloc((size_t)size);
+  assert_int_equal(fread(text, 1, (size_t)size, fp), (size_t)size);
+  fclose(fp);
+  snprintf(path, sizeof path, "%s/cut.bvh", dir);
+  fp = fopen(path, "wb");
+  fwrite(text, 1, (size_t)size / 3, fp);
+  fclose(fp);
+  free(text);
+  snprintf(man, sizeof man, "%s/cut.manifest", dir);
+  fp = fopen(man, "w");
+  fprintf(fp, "root .\nunit 1\nmirror 0\nlower walk walk.bvh\nlower run cut.bvh\n");
+  fclose(fp);
+  assert_int_equal(smgb_manifest_load(man, NULL, &m, &err), SMG_OK);
+  assert_int_equal(smgb_manifest_descs(&m, descs, 8), SMG_OK);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.clips = descs;
+  d.clip_count = m.clip_count;
+  memset(&res, 0, sizeof res);
+  res.struct_size = sizeof res;
+  assert_int_not_equal(smg_bake_run(&d, &res), SMG_OK);
+  if (!strstr(res.error, "manifest line 5") || !strstr(res.error, "cut.bvh:"))
+    fail_msg("error '%s' does not name the line and file", res.error);
+  smgb_manifest_free(&m);
+
+  /* the good pair bakes from files */
+  snprintf(man, sizeof man, "%s/good.manifest", dir);
+  fp = fopen(man, "w");
+  fprintf(fp, "root .\nunit 1\nmirror 0\nlower walk walk.bvh\nlower run run.bvh\n");
+  fclose(fp);
+  assert_int_equal(smgb_manifest_load(man, NULL, &m, &err), SMG_OK);
+  assert_int_equal(smgb_manifest_descs(&m, descs, 8), SMG_OK);
+  d.clip_count = m.clip_count;
+  if (smg_bake_run(&d, &res) != SMG_OK) fail_msg("%s", res.error);
+  snprintf(path, sizeof path, "%s/out.smg", dir);
+  assert_int_equal(smg_bake_write_file(&res, path, NULL, 0), SMG_OK);
+  fp = fopen(path, "rb");
+  assert_non_null(fp);
+  fseek(fp, 0, SEEK_END);
+  assert_int_equal((size_t)ftell(fp), res.blob_size);
+  fclose(fp);
+  smg_bake_result_free(&res);
+  smgb_manifest_free(&m);
+  bg_free(&s);
+  {
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    assert_int_equal(system(cmd), 0);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_blob_round_trip),
@@ -335,6 +427,7 @@ int main(void) {
   };
   const struct CMUnitTest misuse[] = {
       cmocka_unit_test(test_bad_input),
+      cmocka_unit_test(test_manifest_and_files),
   };
   int fails = cmocka_run_group_tests(tests, setup, teardown);
   return fails + cmocka_run_group_tests(misuse, NULL, NULL);
