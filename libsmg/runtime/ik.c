@@ -1,9 +1,11 @@
 /*
  * ik.c - foot cleanup. When a foot's contact label (FRMI) begins, the
- * ankle's world position is recorded; while the contact lasts, cyclic
- * coordinate descent on hip and knee pulls the ankle back to that anchor,
- * the ankle keeping its animated world orientation so the sole stays as
- * recorded. The correction blends in and out over IK_BLEND seconds so
+ * toe's world position is recorded; while the contact lasts, cyclic
+ * coordinate descent on hip and knee moves the ankle to where the
+ * animation has it relative to the toe, placed at that anchor - so a flat
+ * foot stays put and a rolling foot pivots about its planted toe instead of
+ * dragging. The ankle keeps its animated world orientation, which puts the
+ * toe exactly on the anchor. The correction blends in and out over IK_BLEND seconds so
  * contact changes never pop. A contact whose anchor drifted implausibly far
  * (a re-plan moved the body) is released rather than stretched.
  */
@@ -13,7 +15,7 @@
 #include "character_internal.h"
 
 #define IK_BLEND 0.1f      /* seconds to blend in/out */
-#define IK_ITERATIONS 3u
+#define IK_ITERATIONS 8u
 #define IK_RELEASE 0.35f   /* fraction of leg length */
 
 /* Rotate world-space chain joints [from, 3) about joint `k` by dq. */
@@ -96,7 +98,9 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     smgi_foot* foot = &ch->feet[f];
     uint32_t ankle = legs[f][2];
     if (ankle >= ch->joint_count) continue;
-    const float* ap = ch->wpos + 3u * ankle;
+    /* the planted point: the toe when the skeleton has one */
+    uint32_t toe = legs[f][3] < ch->joint_count ? legs[f][3] : ankle;
+    const float* ap = ch->wpos + 3u * toe;
     int contact = (ch->contacts & bits[f]) != 0;
     if (contact && !foot->planted) {
       foot->planted = 1;
@@ -115,7 +119,12 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     foot->weight += foot->planted ? step : -step;
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
     if (foot->weight > 0.0f) {
-      solve_leg(ch, legs[f], foot->anchor, foot->weight);
+      /* ankle target: the animated ankle-from-toe offset at the anchor */
+      const float* an = ch->wpos + 3u * ankle;
+      float target[3] = {foot->anchor[0] + an[0] - ap[0],
+                         foot->anchor[1] + an[1] - ap[1],
+                         foot->anchor[2] + an[2] - ap[2]};
+      solve_leg(ch, legs[f], target, foot->weight);
       smgi_fk_masked(ch, (uint8_t)(1u << f)); /* keep the cache true */
     }
   }
