@@ -94,6 +94,37 @@ static void resolve_options(const smg_bake_options* in, smgb_options* o) {
   o->no_mirror = in->no_mirror;
 }
 
+/* Raw caller options: zero means default, anything else must be a finite,
+ * non-negative number in range. */
+static smg_result check_raw_options(smgb_bake* b, const smg_bake_options* in) {
+  const struct {
+    const char* name;
+    float v, max;
+  } f[] = {{"frame_rate", in->frame_rate, 1000.0f},
+           {"window_seconds", in->window_seconds, 10.0f},
+           {"transition_percentile", in->transition_percentile, 100.0f},
+           {"transition_threshold", in->transition_threshold, 100.0f},
+           {"max_edge_seconds", in->max_edge_seconds, 3600.0f},
+           {"splice_percentile", in->splice_percentile, 100.0f},
+           {"splice_region_seconds", in->splice_region_seconds, 3600.0f},
+           {"contact_height", in->contact_height, 10.0f},
+           {"contact_speed", in->contact_speed, 100.0f}};
+  size_t i;
+  if (in->struct_size == 0) return SMG_OK;
+  for (i = 0; i < sizeof f / sizeof f[0]; ++i)
+    if (!isfinite(f[i].v) || f[i].v < 0.0f || f[i].v > f[i].max) {
+      smgb_fail(b, "options.%s = %g: must be 0 (default) or in (0, %g]",
+                f[i].name, (double)f[i].v, (double)f[i].max);
+      return SMG_ERROR_INVALID_ARGUMENT;
+    }
+  if (in->splices_per_region > 1000u) {
+    smgb_fail(b, "options.splices_per_region = %u: at most 1000",
+              in->splices_per_region);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  return SMG_OK;
+}
+
 static smg_result validate_options(smgb_bake* b, const smgb_options* o) {
   if (!(o->frame_rate > 0.0f && o->frame_rate <= 1000.0f) ||
       !isfinite(o->window_seconds) || !isfinite(o->max_edge_seconds) ||
@@ -415,6 +446,7 @@ smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
   b->progress_user = desc->progress_user;
   snprintf(b->actions[0], SMGB_LABEL_MAX, "none");
   b->action_count = 1;
+  if ((r = check_raw_options(b, &desc->options)) != SMG_OK) goto done;
   if ((r = validate_options(b, &b->opt)) != SMG_OK) goto done;
 
   stage_begin(b, out, "import", &t0);

@@ -322,6 +322,19 @@ static void test_bad_input(void** state) {
   assert_int_equal(smg_bake_write_file(NULL, "x", NULL, 0),
                    SMG_ERROR_INVALID_ARGUMENT);
   smg_bake_result_free(NULL);
+  /* bad options */
+  {
+    smg_bake_options o;
+    memset(&o, 0, sizeof o);
+    o.struct_size = sizeof o;
+    o.window_seconds = NAN;
+    assert_int_equal(bg_bake(&s, &o, &res), SMG_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(res.error, "window_seconds"));
+    o.window_seconds = 0.0f;
+    o.transition_percentile = 150.0f;
+    assert_int_equal(bg_bake(&s, &o, &res), SMG_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(res.error, "transition_percentile"));
+  }
   /* NaN in an in-memory pose */
   s.clips[0].poses[5] = NAN;
   expect_error(&s, SMG_ERROR_INVALID_ARGUMENT, "not finite");
