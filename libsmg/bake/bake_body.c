@@ -69,6 +69,11 @@ smg_result smgb_body_init(smgb_bake* b) {
 
   memset(body, 0, sizeof *body);
   body->joint_count = J;
+  if (J > SMGB_MAX_JOINTS) {
+    smgb_fail(b, "skeleton: %u joints; at most %d are supported", J,
+              SMGB_MAX_JOINTS);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
   if (J < 2) {
     smgb_fail(b, "skeleton: %u joint(s); need a root, legs and a spine", J);
     return SMG_ERROR_INVALID_ARGUMENT;

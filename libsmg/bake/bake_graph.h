@@ -21,6 +21,7 @@
 #include "smg_format.h"
 
 #define SMGB_MAX_LABELS 64
+#define SMGB_MAX_JOINTS 256 /* skeletons larger than this are rejected */
 #define SMGB_LABEL_MAX 64
 
 /* Resolved options (defaults applied). */

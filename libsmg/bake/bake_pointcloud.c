@@ -51,7 +51,7 @@ typedef struct worker {
   int report_progress;
 } worker;
 
-static void window_sums(const smgb_cloud* c, uint32_t k, win_sums* s) {
+static int window_sums(const smgb_cloud* c, uint32_t k, win_sums* s) {
   uint32_t F = c->frames, P = c->points, f, p;
   double* fsq = s->sq;
   /* per-frame sums first (stored in place), then a sliding window */
@@ -72,7 +72,7 @@ static void window_sums(const smgb_cloud* c, uint32_t k, win_sums* s) {
   {
     double rs = 0, rx = 0, rz = 0;
     double* tsq = malloc(F * sizeof *tsq * 3u);
-    if (!tsq) return; /* caller checks via NaN guard below */
+    if (!tsq) return 0;
     memcpy(tsq, fsq, F * sizeof *tsq);
     memcpy(tsq + F, s->x, F * sizeof *tsq);
     memcpy(tsq + 2 * F, s->z, F * sizeof *tsq);
@@ -92,6 +92,7 @@ static void window_sums(const smgb_cloud* c, uint32_t k, win_sums* s) {
     }
     free(tsq);
   }
+  return 1;
 }
 
 /* Cross terms of row frame a against every column frame. */
@@ -344,8 +345,11 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
   sa.z = sa.x + A->frames;
   sb.x = sb.sq + B->frames;
   sb.z = sb.x + B->frames;
-  window_sums(A, job->window, &sa);
-  window_sums(B, job->window, &sb);
+  if (!window_sums(A, job->window, &sa) || !window_sums(B, job->window, &sb)) {
+    free(sa.sq);
+    free(sb.sq);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
   for (p = 0; p < A->points; ++p) wsum += A->weights[p];
   memset(ws, 0, sizeof ws);
   for (t = 0; t < nt; ++t) {

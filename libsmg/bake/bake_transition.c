@@ -43,14 +43,8 @@ void smgb_blend_pose(const smgb_bake* b, const smgb_edge* e, uint32_t t,
   uint32_t J = b->J, j, stride = b->stride, k = b->opt.window;
   const float* pa = b->poses + (size_t)(e->a + t) * stride;
   const float* pb0 = b->poses + (size_t)(e->b + t) * stride;
-  float pb[3 + 4 * 256];
+  float pb[3 + 4 * SMGB_MAX_JOINTS]; /* J <= SMGB_MAX_JOINTS (body init) */
   double alpha = smgb_blend_alpha(t, k), u = 1.0 - alpha;
-  float tmp_big[1];
-  (void)tmp_big;
-  if (J > 256) { /* the importers cap skeletons far below this */
-    memcpy(out, pa, stride * sizeof *out);
-    return;
-  }
   smgb_pose_transform(pb0, e->align, pb, stride);
   for (j = 0; j < 3; ++j) out[j] = (float)(alpha * pa[j] + u * pb[j]);
   for (j = 0; j < J; ++j) {
