@@ -220,6 +220,30 @@ static smg_result memory_clip(smgb_bake* b, const smg_bake_memory_clip* m,
       smgb_fail(b, "%s: pose value %u is not finite", name, j);
       return SMG_ERROR_INVALID_ARGUMENT;
     }
+  {
+    /* translations within 100 km, rotations near unit length (normalised
+     * here; a zero or wild quaternion is an error) */
+    uint32_t f, stride = SMGB_STRIDE(J);
+    for (f = 0; f < m->frame_count; ++f) {
+      float* p = out->poses + (size_t)f * stride;
+      if (fabsf(p[0]) > 1e5f || fabsf(p[1]) > 1e5f || fabsf(p[2]) > 1e5f) {
+        smgb_clip_free(out);
+        smgb_fail(b, "%s: frame %u root translation beyond 100 km", name, f);
+        return SMG_ERROR_INVALID_ARGUMENT;
+      }
+      for (j = 0; j < J; ++j) {
+        float* q = p + 3 + 4 * j;
+        float len = sqrtf(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!(len > 0.5f && len < 2.0f)) {
+          smgb_clip_free(out);
+          smgb_fail(b, "%s: frame %u joint %u rotation is not a unit "
+                       "quaternion (length %g)", name, f, j, (double)len);
+          return SMG_ERROR_INVALID_ARGUMENT;
+        }
+        q[0] /= len; q[1] /= len; q[2] /= len; q[3] /= len;
+      }
+    }
+  }
   out->frame_count = m->frame_count;
   out->frame_rate = m->frame_rate;
   return SMG_OK;

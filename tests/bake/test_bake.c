@@ -335,6 +335,18 @@ static void test_bad_input(void** state) {
     assert_int_equal(bg_bake(&s, &o, &res), SMG_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(res.error, "transition_percentile"));
   }
+  /* a zero quaternion and a huge translation */
+  {
+    float* q = s.clips[0].poses + 3 + 4 * 5;
+    float q0[4];
+    memcpy(q0, q, sizeof q0);
+    q[0] = q[1] = q[2] = q[3] = 0.0f;
+    expect_error(&s, SMG_ERROR_INVALID_ARGUMENT, "unit quaternion");
+    memcpy(q, q0, sizeof q0);
+    s.clips[0].poses[0] = 1e30f;
+    expect_error(&s, SMG_ERROR_INVALID_ARGUMENT, "100 km");
+    s.clips[0].poses[0] = 0.0f;
+  }
   /* NaN in an in-memory pose */
   s.clips[0].poses[5] = NAN;
   expect_error(&s, SMG_ERROR_INVALID_ARGUMENT, "not finite");
