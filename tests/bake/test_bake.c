@@ -20,7 +20,7 @@
 #include "bake_manifest.h"
 #include "bake_math.h"
 
-static float seconds(void) { return bg_quick() ? 4.0f : 6.0f; }
+static float seconds(void) { return bg_quick() ? 3.0f : 6.0f; }
 
 /* One bake shared by the tests (valgrind runs are slow). */
 static bg_set g_set;
