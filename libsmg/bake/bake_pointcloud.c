@@ -43,6 +43,7 @@ typedef struct worker {
   const smgb_grid_job* job;
   const win_sums* A;
   const win_sums* B;
+  const double* soa;         /* column cloud, point-major */
   double W;
   uint32_t r0, r1;           /* rows whose minima this worker reports */
   smgb_minimum* out;
@@ -95,26 +96,26 @@ static int window_sums(const smgb_cloud* c, uint32_t k, win_sums* s) {
   return 1;
 }
 
-/* Cross terms of row frame a against every column frame. */
-static void cross_row(const smgb_cloud* A, const smgb_cloud* B, uint32_t a,
-                      double* dot, double* crs, double* yy) {
-  uint32_t P = A->points, FB = B->frames, j, p;
+/* Cross terms of row frame a against every column frame. The columns are
+ * kept point-major (soa[(3p + axis) * FB + j]) so that the inner loop runs
+ * over contiguous frames and vectorises. */
+static void cross_row(const smgb_cloud* A, const double* soa, uint32_t FB,
+                      uint32_t a, double* dot, double* crs, double* yy) {
+  uint32_t P = A->points, j, p;
   const double* va = A->xyz + (size_t)a * P * 3u;
   const double* w = A->weights;
-  for (j = 0; j < FB; ++j) {
-    const double* vb = B->xyz + (size_t)j * P * 3u;
-    double d = 0, c = 0, y = 0;
-    for (p = 0; p < P; ++p) {
-      double xa = w[p] * va[3 * p], ya = w[p] * va[3 * p + 1],
-             za = w[p] * va[3 * p + 2];
-      double xb = vb[3 * p], yb = vb[3 * p + 1], zb = vb[3 * p + 2];
-      d += xa * xb + za * zb;
-      c += xa * zb - za * xb;
-      y += ya * yb;
+  for (j = 0; j < FB; ++j) dot[j] = crs[j] = yy[j] = 0.0;
+  for (p = 0; p < P; ++p) {
+    const double xa = w[p] * va[3 * p], ya = w[p] * va[3 * p + 1],
+                 za = w[p] * va[3 * p + 2];
+    const double* xb = soa + (size_t)(3u * p) * FB;
+    const double* yb = xb + FB;
+    const double* zb = yb + FB;
+    for (j = 0; j < FB; ++j) {
+      dot[j] += xa * xb[j] + za * zb[j];
+      crs[j] += xa * zb[j] - za * xb[j];
+      yy[j] += ya * yb[j];
     }
-    dot[j] = d;
-    crs[j] = c;
-    yy[j] = y;
   }
 }
 
@@ -244,7 +245,7 @@ static void* worker_run(void* arg) {
   for (t = 0; t < k; ++t) {
     double* c = CROW(lo + t);
     if (lo + t < FA)
-      cross_row(A, B, lo + t, c, c + FB, c + 2u * FB);
+      cross_row(A, w->soa, FB, lo + t, c, c + FB, c + 2u * FB);
     else
       memset(c, 0, 3u * FB * sizeof *c);
   }
@@ -257,7 +258,7 @@ static void* worker_run(void* arg) {
       double* cnew = CROW(i + k - 1);
       double* tmp;
       if (i + k - 1 < FA)
-        cross_row(A, B, i + k - 1, cnew, cnew + FB, cnew + 2u * FB);
+        cross_row(A, w->soa, FB, i + k - 1, cnew, cnew + FB, cnew + 2u * FB);
       else
         memset(cnew, 0, 3u * FB * sizeof *cnew);
       tmp = Sprev;
@@ -327,6 +328,7 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
   worker ws[8];
   pthread_t th[8];
   uint32_t nt = job->threads ? job->threads : 1, t, total = 0, p;
+  double* soa;
   double wsum = 0.0;
   smg_result res = SMG_OK;
   *out = NULL;
@@ -351,11 +353,26 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
     return SMG_ERROR_OUT_OF_MEMORY;
   }
   for (p = 0; p < A->points; ++p) wsum += A->weights[p];
+  soa = malloc((size_t)B->frames * B->points * 3u * sizeof *soa);
+  if (!soa) {
+    free(sa.sq);
+    free(sb.sq);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  {
+    uint32_t f, q, ax;
+    for (q = 0; q < B->points; ++q)
+      for (ax = 0; ax < 3; ++ax)
+        for (f = 0; f < B->frames; ++f)
+          soa[(size_t)(3u * q + ax) * B->frames + f] =
+              B->xyz[((size_t)f * B->points + q) * 3u + ax];
+  }
   memset(ws, 0, sizeof ws);
   for (t = 0; t < nt; ++t) {
     ws[t].job = job;
     ws[t].A = &sa;
     ws[t].B = &sb;
+    ws[t].soa = soa;
     ws[t].W = wsum * job->window;
     /* split at block boundaries (see SMGB_GRID_BLOCK) */
     uint32_t blocks = (A->frames + SMGB_GRID_BLOCK - 1) / SMGB_GRID_BLOCK;
@@ -365,6 +382,7 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
     ws[t].report_progress = t == 0;
   }
   if (!(ws[0].W > 0.0)) {
+    free(soa);
     free(sa.sq);
     free(sb.sq);
     return SMG_ERROR_INVALID_ARGUMENT;
@@ -399,6 +417,7 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
     *out_count = total;
   }
   for (t = 0; t < nt; ++t) free(ws[t].out);
+  free(soa);
   free(sa.sq);
   free(sb.sq);
   return res;
