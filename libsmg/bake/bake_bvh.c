@@ -961,10 +961,28 @@ smg_result smgb_bvh_save(const char* path, const smgb_clip* clip,
     smgb_imp_errorf(err, "%s: joint 0 must be the root", path);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  for (j = 1; j < J; ++j) {
-    if (clip->skeleton.parents[j] < 0 || clip->skeleton.parents[j] >= (int32_t)j) {
+  for (j = 0; j < J; ++j) {
+    const char* n = clip->skeleton.names[j];
+    size_t k, len = strnlen(n, SMGB_NAME_MAX);
+    if (j > 0 && (clip->skeleton.parents[j] < 0 ||
+                  clip->skeleton.parents[j] >= (int32_t)j)) {
       smgb_imp_errorf(err, "%s: joint %u's parent must precede it", path, j);
       return SMG_ERROR_INVALID_ARGUMENT;
+    }
+    /* A BVH name is one token: no whitespace, braces or empty names. */
+    if (len == 0 || len == SMGB_NAME_MAX) {
+      smgb_imp_errorf(err, "%s: joint %u has an empty or unterminated name",
+                      path, j);
+      return SMG_ERROR_INVALID_ARGUMENT;
+    }
+    for (k = 0; k < len; ++k) {
+      if (is_space(n[k]) || n[k] == '{' || n[k] == '}' ||
+          !isprint((unsigned char)n[k])) {
+        smgb_imp_errorf(err, "%s: joint name '%.63s' cannot be written to "
+                        "BVH (whitespace, brace or control character)",
+                        path, n);
+        return SMG_ERROR_INVALID_ARGUMENT;
+      }
     }
   }
   fp = fopen(path, "wb");

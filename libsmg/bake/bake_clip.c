@@ -165,6 +165,7 @@ smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
    * last one at or before the end (a small epsilon absorbs rounding so that
    * e.g. 121 frames at 120 Hz give exactly 31 frames at 30 Hz). */
   duration = (double)(src->frame_count - 1) / src->frame_rate;
+  if (duration * frame_rate + 1.0 > 1e8) return SMG_ERROR_CAPACITY;
   frames = (uint32_t)floor(duration * frame_rate + 1e-6) + 1u;
   r = clip_alloc_like(src, frames, &c);
   if (r != SMG_OK) return r;

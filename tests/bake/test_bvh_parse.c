@@ -255,6 +255,11 @@ static void test_round_trip(void** state) {
   assert_int_equal(smgb_bvh_save(NULL, &a, &err), SMG_ERROR_INVALID_ARGUMENT);
   snprintf(path, sizeof path, "%s/no/such/dir.bvh", dir);
   assert_int_equal(smgb_bvh_save(path, &a, &err), SMG_ERROR_IO);
+  /* Names that are not one BVH token are refused, not written broken. */
+  snprintf(a.skeleton.names[1], SMGB_NAME_MAX, "Left Up Leg");
+  snprintf(path, sizeof path, "%s/space.bvh", dir);
+  assert_int_equal(smgb_bvh_save(path, &a, &err), SMG_ERROR_INVALID_ARGUMENT);
+  assert_non_null(strstr(err.message, "Left Up Leg"));
   smgb_clip_free(&a);
   smgb_clip_free(&b);
   imp_rmdir(dir);
