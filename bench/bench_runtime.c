@@ -76,12 +76,13 @@ static void mat_mul(const float* a, const float* b, float* o) {
 
 typedef struct player {
   double t; /* frames */
+  uint32_t clip;
   float root[3], rot[4 * 64], mats[16 * 64];
 } player;
 
 /* One frame of plain playback of clip 0 (looping). */
 static void baseline_step(const smg_graph* g, player* p, float dt) {
-  const smgi_clip* clip = &g->data.clips[0];
+  const smgi_clip* clip = &g->data.clips[p->clip];
   const uint32_t J = g->data.joint_count;
   p->t += (double)dt * g->data.info->frame_rate;
   double len = clip->frame_count > 1 ? clip->frame_count - 1 : 1;
@@ -121,13 +122,24 @@ static double bench_baseline(const smg_graph* g, int frames) {
   return m;
 }
 
-/* Median per-player time of a frame of N plain players (different clip
- * times, each with its own buffers), the baseline at the same crowd size
- * so cache effects are compared like with like. */
+/* Median per-player time of a frame of N plain players (different clips
+ * and times, each with its own buffers), the baseline at the same crowd
+ * size so cache effects are compared like with like. */
 static double bench_baseline_crowd(const smg_graph* g, int n, int frames) {
   player* p = (player*)calloc((size_t)n, sizeof *p);
   double* v = (double*)malloc(sizeof(double) * (size_t)frames);
-  for (int i = 0; i < n; ++i) p[i].t = (double)(i % 97) * 0.37;
+  /* each player its own clip (among those with frames) and time, so the
+   * pose pool is touched as widely as by characters on a graph */
+  uint32_t nclips = 0;
+  for (uint32_t k = 0; k < g->data.clip_count; ++k)
+    if (g->data.clips[k].frame_count > 1) ++nclips;
+  for (int i = 0; i < n; ++i) {
+    p[i].t = (double)(i % 97) * 0.37;
+    uint32_t want = nclips ? (uint32_t)i % nclips : 0, k = 0;
+    for (; k < g->data.clip_count; ++k)
+      if (g->data.clips[k].frame_count > 1 && want-- == 0) break;
+    p[i].clip = k < g->data.clip_count ? k : 0;
+  }
   for (int f = 0; f < frames; ++f) {
     double t0 = now_us();
     for (int i = 0; i < n; ++i) baseline_step(g, &p[i], DT);
@@ -382,7 +394,7 @@ static void run_graph(const char* name, const void* blob, size_t size) {
   smg_graph_destroy(g);
 }
 
-int main(void) {
+int main(int argc, char** argv) {
   printf("libsmg runtime benchmark (one core, dt = 1/60 s, medians)\n");
   char path[1024];
   snprintf(path, sizeof path, "%s/default.smg", SMG_BUILD_DIR);
@@ -392,9 +404,17 @@ int main(void) {
     run_graph("build/default.smg (synthetic)", blob, size);
     free(blob);
   } else {
-    printf("(%s not found: run `make` to bake it; measuring the fixture "
-           "only)\n",
-           path);
+    printf("(%s not found: run `make` to bake it)\n", path);
+  }
+  /* further blobs named on the command line, e.g. a CMU bake */
+  for (int i = 1; i < argc; ++i) {
+    blob = read_file(argv[i], &size);
+    if (!blob) {
+      printf("(%s not readable, skipped)\n", argv[i]);
+      continue;
+    }
+    run_graph(argv[i], blob, size);
+    free(blob);
   }
   void* fb = NULL;
   size_t fsize = 0;

@@ -4,7 +4,10 @@
 #   build/smg-synth       offline driver: blob + path file -> BVH (+ CSV)
 #   make bench-runtime    step+pose cost per character vs plain clip
 #                         playback, edit-frame p99, blob load, memory,
-#                         characters per 60 Hz frame (part of `make bench`)
+#                         characters per 60 Hz frame (part of `make bench`);
+#                         measures build/default.smg, build/cmu.smg when a
+#                         CMU bake is there (make demo-cmu makes one), and
+#                         the test fixture
 #   make synth-example    smg-synth on the synthetic default blob
 
 SMG_SYNTH := $(BUILD)/smg-synth
@@ -25,7 +28,7 @@ $(BENCH_RUNTIME): bench/bench_runtime.c $(LIBSMG_A) $(LIB_HDR) tests/fixture_gra
 
 .PHONY: bench-runtime synth-example
 bench-runtime: $(BENCH_RUNTIME)
-	$(BENCH_RUNTIME)
+	$(BENCH_RUNTIME) $(wildcard $(BUILD)/cmu.smg)
 
 synth-example: $(SMG_SYNTH)
 	@mkdir -p $(BUILD)/synth

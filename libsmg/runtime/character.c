@@ -25,18 +25,15 @@ typedef struct layout {
       total;
 } layout;
 
+/* Hot data first: what every step touches (the struct, the pose and its
+ * world transforms, the queue head) sits in as few pages as possible -
+ * with thousands of characters, TLB and cache misses dominate the cost -
+ * and rarely used buffers (crossfade snapshot, constraints, the path) come
+ * after. */
 static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
                            layout* l) {
   size_t o = align16(sizeof(smg_character));
-  l->constraints = o;
-  o += align16(sizeof(smgi_constraint) * cons_cap);
-  l->queue = o;
-  o += align16(sizeof(smgi_qentry) * SMGI_QUEUE_CAP);
   l->rot = o;
-  o += align16(sizeof(float) * 4u * J);
-  l->tmp = o;
-  o += align16(sizeof(float) * 4u * J);
-  l->snap = o;
   o += align16(sizeof(float) * 4u * J);
   l->wpos = o;
   o += align16(sizeof(float) * 3u * J);
@@ -44,6 +41,14 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   o += align16(sizeof(float) * 4u * J);
   l->mask = o;
   o += align16(J);
+  l->queue = o;
+  o += align16(sizeof(smgi_qentry) * SMGI_QUEUE_CAP);
+  l->tmp = o;
+  o += align16(sizeof(float) * 4u * J);
+  l->snap = o;
+  o += align16(sizeof(float) * 4u * J);
+  l->constraints = o;
+  o += align16(sizeof(smgi_constraint) * cons_cap);
   l->xz = o;
   o += align16(sizeof(float) * 2u * (size_t)path_cap);
   l->cum = o;

@@ -54,10 +54,15 @@ static void solve_leg(smg_character* ch, const uint32_t* leg,
   }
   float ankle_world[4];
   memcpy(ankle_world, rotw[2], sizeof ankle_world);
+  float prev2 = INFINITY;
   for (uint32_t it = 0; it < IK_ITERATIONS; ++it) {
     float ex = target[0] - pos[2][0], ey = target[1] - pos[2][1],
           ez = target[2] - pos[2][2];
-    if (ex * ex + ey * ey + ez * ez < 4e-6f) break; /* within 2 mm */
+    float e2 = ex * ex + ey * ey + ez * ez;
+    if (e2 < 4e-6f) break; /* within 2 mm */
+    /* converged short of an unreachable target: more sweeps gain < 1 mm */
+    if (prev2 - e2 < 2e-3f * sqrtf(e2) + 1e-6f && it > 0) break;
+    prev2 = e2;
     for (int k = 1; k >= 0; --k) { /* knee, then hip */
       float v1[3] = {pos[2][0] - pos[k][0], pos[2][1] - pos[k][1],
                      pos[2][2] - pos[k][2]};
