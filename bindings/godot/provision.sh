@@ -23,9 +23,8 @@ ROOT=${SMG_GODOT_ROOT:-/var/cache/smg-godot/root}
 PACKAGES="godot,ca-certificates,libgl1,libglx-mesa0,libegl1,libegl-mesa0,libgl1-mesa-dri,libvulkan1,mesa-vulkan-drivers"
 STAMP="$ROOT/.smg-godot-stamp"
 
-if [ -x "$ROOT/usr/bin/godot" ] && [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$PACKAGES" ]; then
-	exit 0   # cached
-fi
+cached() { [ -x "$ROOT/usr/bin/godot" ] && [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$PACKAGES" ]; }
+cached && exit 0
 
 if [ "$(id -u)" != 0 ]; then
 	echo "provision.sh: building the Godot root at $ROOT needs root (mmdebstrap, chroot)." >&2
@@ -40,8 +39,13 @@ if ! command -v mmdebstrap >/dev/null 2>&1; then
 	apt-get install -y -qq --no-install-recommends mmdebstrap >/dev/null
 fi
 
-start=$(date +%s)
 mkdir -p "$(dirname "$ROOT")"
+# One builder at a time (parallel make runs, several checkouts): the others
+# wait and then find the cache ready.
+exec 9>"$ROOT.lock"
+flock 9
+cached && exit 0
+start=$(date +%s)
 NEW="$ROOT.new.$$"
 trap 'rm -rf "$NEW"' EXIT INT TERM
 echo "provision.sh: building a Debian sid root with Godot in $ROOT (about a minute, ~200 MB download)" >&2
