@@ -9,11 +9,12 @@
  *     transitions only between frames of the same action (actions connect
  *     through splicing, not through edges).
  *
- * Every local minimum of the window distance grid is a candidate; those
- * below transition_percentile of the candidates of the same (label, label)
- * pair are kept (per pair, so that walk->run and run->walk candidates are
- * judged against each other rather than against the far closer walk->walk
- * ones), then optionally cut at the absolute transition_threshold.
+ * Every local minimum of the window distance grid is a candidate (minus
+ * near-diagonal pairs and pairs that cannot lie on a cycle). Same-label
+ * candidates are ranked per (source clip, target clip) pair and capped at
+ * their label pair's median; label changes (walk <-> run) are chosen
+ * afterwards among candidates joining the labels' strongly connected cores;
+ * then redundant ones are thinned out (select_candidates explains why).
  * A transition from (A, i) to (B, j) blends A_i..A_i+k-1 with the aligned
  * B_j..B_j+k-1 and arrives at B_j+k. Nodes are the frames where
  * transitions leave or arrive; original motion between consecutive nodes
