@@ -89,9 +89,11 @@ typedef struct smg_bake_options {
                                 right turns both exist) */
   float frame_rate;          /* working frame rate; 0 = 30 */
   float window_seconds;      /* transition/splice window; 0 = 1/3 s */
-  float transition_percentile; /* keep local minima of the frame distance
-                                below this percentile of all local minima,
-                                per (label, label) pair; 0 = 30 */
+  float transition_percentile; /* transition candidates kept: this percent
+                                of the local minima of the frame distance,
+                                ranked per (source clip, target clip) pair
+                                for same-label transitions and per (label,
+                                label) pair for label changes; 0 = 30 */
   float transition_threshold;  /* absolute RMS distance cap (metres) on
                                 top of the percentile; 0 = none */
   float max_edge_seconds;    /* simplification cap on merged edges; 0 = 1 */
