@@ -16,7 +16,8 @@
 
 #define SMGI_QUEUE_CAP 64u        /* committed + planned lower edges */
 #define SMGI_MAX_CANDIDATES 64u   /* out-edges ranked per planning step */
-#define SMGI_PLAN_BUDGET 48u      /* candidate evaluations per step */
+#define SMGI_PLAN_BUDGET 256u     /* edge evaluations per step (look-ahead
+                                     included; ~25 us at most) */
 #define SMGI_LOOK_BUDGET 48u      /* look-ahead edge evaluations per candidate */
 #define SMGI_SEARCH_SECONDS 1.2f  /* look-ahead window below a candidate */
 #define SMGI_MAX_RANK 3u          /* backtracking tries per node */

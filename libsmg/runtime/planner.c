@@ -8,7 +8,8 @@
  * style term from the derived hop counts. The greedy best is taken; when its
  * distance error exceeds the threshold, the planner backs up to the
  * previous planned node and takes its next-best edge, and so on (bounded).
- * Work per call is bounded by a budget of candidate evaluations; only when
+ * Work per call is bounded by a budget of edge evaluations (look-ahead
+ * included); only when
  * the playhead would otherwise run out is the budget exceeded (by at most
  * the frames needed for this step).
  */
@@ -32,6 +33,7 @@ typedef struct cand {
   float score, err, s_end, pen;
   uint32_t seg_end;
   smgi_xform2 end; /* ground transform after the edge */
+  uint32_t work;    /* edge evaluations spent on it (look-ahead included) */
 } cand;
 
 static smgi_xform2 ground_of(const smg_graph* g, uint32_t frame) {
@@ -212,6 +214,7 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
   smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
   out->end = end;
   out->edge = edge_index;
+  out->work = 1u;
   out->seg_end = seg;
   out->s_end = s;
 
@@ -245,6 +248,7 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
                           SMGI_SEARCH_SECONDS * ch->fps -
                               (float)e->frame_count,
                           &budget);
+    out->work = 1u + (SMGI_LOOK_BUDGET - budget);
     err = e_end > e_mid ? e_end : e_mid;
     score = e_end + 0.5f * e_mid + la;
     out->s_end = sp;
@@ -294,6 +298,18 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
   fprintf(stderr, "\n");
 #endif
   return count;
+}
+
+/* Edge evaluations spent ranking n candidates: what the step budget
+ * counts, so an edit frame's re-planning stays bounded. */
+static uint32_t work_of(const cand* c, uint32_t n) {
+  uint32_t w = 0;
+  for (uint32_t i = 0; i < n; ++i) w += c[i].work;
+  return w;
+}
+
+static void spend(uint32_t* budget, uint32_t w) {
+  *budget = *budget > w ? *budget - w : 0u;
 }
 
 static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
@@ -360,7 +376,7 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
   uint32_t from = g->data.lower_edges[last.edge].from;
   uint32_t seg = smgi_q_at(ch, ch->q_count - 2u)->seg_end;
   uint32_t n = rank_node(ch, from, last.W, last.s_start, seg, c);
-  *budget = *budget > n ? *budget - n : 0;
+  spend(budget, work_of(c, n));
   uint32_t cur = last.rank < n ? last.rank : n - 1u;
   uint32_t limit = n < SMGI_MAX_RANK ? n : SMGI_MAX_RANK;
   cand child[SMGI_MAX_CANDIDATES];
@@ -370,7 +386,7 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
     if (r != cur && c[r].pen > c[cur].pen) continue;
     uint32_t to = g->data.lower_edges[c[r].edge].to;
     uint32_t m = rank_node(ch, to, c[r].end, c[r].s_end, c[r].seg_end, child);
-    *budget = *budget > m ? *budget - m : 0;
+    spend(budget, work_of(child, m));
     float v = c[r].err;
     if (m > 0 && child[0].err > v) v = child[0].err;
     if (v < best_v - 1e-4f || (r == cur && v <= best_v + 1e-4f)) {
@@ -399,7 +415,7 @@ void smgi_plan(smg_character* ch, uint32_t budget, float min_frames) {
     tail_state(ch, &node, &W, &s, &seg);
     uint32_t n = rank_node(ch, node, W, s, seg, c);
     if (n == 0) return; /* dead end: playback holds the last frame */
-    budget = budget > n ? budget - n : 0;
+    spend(&budget, work_of(c, n));
     /* Backtracking can only help when the planned state is itself on the
      * path: when the character is already off it (new path far away, or
      * unavoidable drift), no local choice fixes that and the greedy pick
