@@ -19,8 +19,9 @@ set -eu
 
 ROOT=${SMG_GODOT_ROOT:-/var/cache/smg-godot/root}
 # godot: the engine (4.6 in sid); ca-certificates silences a TLS warning;
-# the Mesa GL/EGL/Vulkan drivers let Godot render under Xvfb (screenshots).
-PACKAGES="godot,ca-certificates,libgl1,libglx-mesa0,libegl1,libegl-mesa0,libgl1-mesa-dri,libvulkan1,mesa-vulkan-drivers"
+# the Mesa GL/EGL drivers (llvmpipe) let Godot render with its OpenGL
+# renderer under Xvfb (screenshots); no Vulkan drivers (137 MB) are needed.
+PACKAGES="godot,ca-certificates,libgl1,libglx-mesa0,libegl1,libegl-mesa0,libgl1-mesa-dri"
 STAMP="$ROOT/.smg-godot-stamp"
 
 cached() { [ -x "$ROOT/usr/bin/godot" ] && [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$PACKAGES" ]; }
