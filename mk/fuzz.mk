@@ -21,9 +21,11 @@ FUZZ_CFLAGS := $(CFLAGS_TOOL) -Itests -Itests/fuzz
 
 TEST_TARGETS += test-fuzz
 
-$(BUILD)/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz_driver.c tests/fuzz/fuzz.h $(TEST_LIBS) $(LIB_HDR) $(wildcard tests/*.h)
+# (libraries named directly: tests.mk, which defines TEST_LIBS, is read later)
+FUZZ_LIBS := $(LIBSMG_A) $(LIBSMG_BAKE_A)
+$(BUILD)/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz_driver.c tests/fuzz/fuzz.h $(FUZZ_LIBS) $(LIB_HDR) $(wildcard tests/*.h)
 	@mkdir -p $(dir $@)
-	$(CC) $(FUZZ_CFLAGS) $< tests/fuzz/fuzz_driver.c -o $@ $(TEST_LIBS) $(BAKE_LDLIBS) -lpthread -lm
+	$(CC) $(FUZZ_CFLAGS) $< tests/fuzz/fuzz_driver.c -o $@ $(FUZZ_LIBS) $(BAKE_LDLIBS) -lpthread -lm
 
 .PHONY: test-fuzz
 test-fuzz: $(FUZZ_BIN)

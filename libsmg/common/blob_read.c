@@ -21,6 +21,15 @@
 #define MAX_SECTION_ALIGN 4096u
 /* How far from 1 a stored quaternion's length may be. */
 #define UNIT_TOLERANCE 1e-3f
+/* Magnitude limits. Finite is not enough: a heading of 1e30 rad or a
+ * position of 1e30 m is finite but meaningless (float spacing there is
+ * astronomically coarse) and makes angle wrapping or accumulation in the
+ * runtime degenerate. Real data stays far inside these bounds: 100 km of
+ * clip-space travel, 10^4 rad (1600 turns) of unwrapped heading, 1 km
+ * joint offsets. */
+#define MAX_POSITION 1e5f
+#define MAX_ANGLE 1e4f
+#define MAX_OFFSET 1e3f
 
 typedef struct reader {
   char* error;
@@ -45,8 +54,17 @@ static smg_result fail(reader* r, smg_result code, const char* fmt, ...) {
     if (!(cond)) return fail(r, (code), __VA_ARGS__);  \
   } while (0)
 
-static int finite3(const float* v) {
-  return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+/* finite and |v| <= limit (NaN fails every comparison) */
+static int within(float v, float limit) { return v >= -limit && v <= limit; }
+
+static int within3(const float* v, float limit) {
+  return within(v[0], limit) && within(v[1], limit) && within(v[2], limit);
+}
+
+/* A ground transform (x, z, heading). */
+static int ground_ok(const float* g) {
+  return within(g[0], MAX_POSITION) && within(g[1], MAX_POSITION) &&
+         within(g[2], MAX_ANGLE);
 }
 
 static int unit_quat(const float* q) {
@@ -264,14 +282,15 @@ static smg_result check_info(reader* r, const smgi_graph_data* g) {
           "INFO[0].right_leg[%u] %u >= joint count %u", (unsigned)i,
           (unsigned)in->right_leg[i], (unsigned)J);
   }
-  CHECK(isfinite(in->leg_length) && in->leg_length >= 0.0f,
-        SMG_ERROR_BLOB_VALUE, "INFO[0].leg_length %g is not finite and >= 0",
-        (double)in->leg_length);
-  CHECK(isfinite(in->ground_height), SMG_ERROR_BLOB_VALUE,
-        "INFO[0].ground_height is not finite");
-  CHECK(isfinite(in->window_seconds) && in->window_seconds >= 0.0f,
-        SMG_ERROR_BLOB_VALUE,
-        "INFO[0].window_seconds %g is not finite and >= 0",
+  CHECK(within(in->leg_length, MAX_OFFSET) && in->leg_length >= 0.0f,
+        SMG_ERROR_BLOB_VALUE, "INFO[0].leg_length %g not in [0, %g]",
+        (double)in->leg_length, (double)MAX_OFFSET);
+  CHECK(within(in->ground_height, MAX_POSITION), SMG_ERROR_BLOB_VALUE,
+        "INFO[0].ground_height %g not in [-%g, %g]",
+        (double)in->ground_height, (double)MAX_POSITION,
+        (double)MAX_POSITION);
+  CHECK(within(in->window_seconds, 1e3f) && in->window_seconds >= 0.0f,
+        SMG_ERROR_BLOB_VALUE, "INFO[0].window_seconds %g not in [0, 1000]",
         (double)in->window_seconds);
   return SMG_OK;
 }
@@ -296,8 +315,9 @@ static smg_result check_joints(reader* r, const smgi_graph_data* g) {
     CHECK(jt->mirror < J, SMG_ERROR_BLOB_INDEX,
           "JNTS[%u].mirror %u >= joint count %u", (unsigned)j,
           (unsigned)jt->mirror, (unsigned)J);
-    CHECK(finite3(jt->offset), SMG_ERROR_BLOB_VALUE,
-          "JNTS[%u].offset is not finite", (unsigned)j);
+    CHECK(within3(jt->offset, MAX_OFFSET), SMG_ERROR_BLOB_VALUE,
+          "JNTS[%u].offset is not finite within %g m", (unsigned)j,
+          (double)MAX_OFFSET);
     CHECK(isfinite(jt->mass_ratio) && jt->mass_ratio >= 0.0f &&
               jt->mass_ratio <= 1.0f,
           SMG_ERROR_BLOB_VALUE, "JNTS[%u].mass_ratio %g not in [0, 1]",
@@ -361,14 +381,16 @@ static smg_result check_poses(reader* r, const smgi_graph_data* g) {
   for (f = 0; f < g->frame_count; ++f) {
     const float* p = g->poses + (uint64_t)f * stride;
     const smgi_frame* fr = &g->frames[f];
-    CHECK(finite3(p), SMG_ERROR_BLOB_VALUE,
-          "POSE[%u] root translation is not finite", (unsigned)f);
+    CHECK(within3(p, MAX_POSITION), SMG_ERROR_BLOB_VALUE,
+          "POSE[%u] root translation is not finite within %g m",
+          (unsigned)f, (double)MAX_POSITION);
     for (j = 0; j < g->joint_count; ++j)
       CHECK(unit_quat(p + 3 + 4 * j), SMG_ERROR_BLOB_VALUE,
             "POSE[%u] joint %u rotation is not a finite unit quaternion",
             (unsigned)f, (unsigned)j);
-    CHECK(finite3(fr->root2d), SMG_ERROR_BLOB_VALUE,
-          "FRMI[%u].root2d is not finite", (unsigned)f);
+    CHECK(ground_ok(fr->root2d), SMG_ERROR_BLOB_VALUE,
+          "FRMI[%u].root2d is not finite within %g m / %g rad", (unsigned)f,
+          (double)MAX_POSITION, (double)MAX_ANGLE);
     CHECK(fr->clip < g->clip_count, SMG_ERROR_BLOB_INDEX,
           "FRMI[%u].clip %u >= clip count %u", (unsigned)f,
           (unsigned)fr->clip, (unsigned)g->clip_count);
@@ -428,11 +450,12 @@ static smg_result check_graph(reader* r, const smgi_graph_data* g,
           "%s[%u] frames [%u, +%u) beyond POSE frame count %u", esec,
           (unsigned)e, (unsigned)ed->first_frame, (unsigned)ed->frame_count,
           (unsigned)g->frame_count);
-    CHECK(finite3(ed->displacement), SMG_ERROR_BLOB_VALUE,
-          "%s[%u].displacement is not finite", esec, (unsigned)e);
-    CHECK(isfinite(ed->arc_length) && ed->arc_length >= 0.0f,
-          SMG_ERROR_BLOB_VALUE, "%s[%u].arc_length is not finite and >= 0",
-          esec, (unsigned)e);
+    CHECK(ground_ok(ed->displacement), SMG_ERROR_BLOB_VALUE,
+          "%s[%u].displacement is not finite within %g m / %g rad", esec,
+          (unsigned)e, (double)MAX_POSITION, (double)MAX_ANGLE);
+    CHECK(within(ed->arc_length, MAX_POSITION) && ed->arc_length >= 0.0f,
+          SMG_ERROR_BLOB_VALUE, "%s[%u].arc_length not in [0, %g]", esec,
+          (unsigned)e, (double)MAX_POSITION);
     CHECK(isfinite(ed->cost) && ed->cost >= 0.0f, SMG_ERROR_BLOB_VALUE,
           "%s[%u].cost is not finite and >= 0", esec, (unsigned)e);
     CHECK(ed->label < label_count, SMG_ERROR_BLOB_INDEX,

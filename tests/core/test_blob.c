@@ -736,6 +736,23 @@ static void test_planted_values(void** state) {
           SMG_ERROR_BLOB_VALUE, "FRMI[10].root2d"),
       P_F("frame phase", SMGI_SEC_FRMI, 11, smgi_frame, phase, nan,
           SMG_ERROR_BLOB_VALUE, "FRMI[11].phase"),
+      /* finite but absurd magnitudes (a 1e30 rad heading once hung the
+       * runtime's angle wrapping: found by make test-fuzz) */
+      P_F("frame heading huge", SMGI_SEC_FRMI, 12, smgi_frame, root2d[2],
+          -1.4e31f, SMG_ERROR_BLOB_VALUE, "FRMI[12].root2d"),
+      P_F("frame x huge", SMGI_SEC_FRMI, 12, smgi_frame, root2d[0], 2e5f,
+          SMG_ERROR_BLOB_VALUE, "FRMI[12].root2d"),
+      {"pose root huge", SMGI_SEC_POSE, 6, 8, F32, 0, 3e5f,
+       SMG_ERROR_BLOB_VALUE, "POSE[6] root"},
+      P_F("joint offset huge", SMGI_SEC_JNTS, 6, smgi_joint, offset[0], 5e3f,
+          SMG_ERROR_BLOB_VALUE, "JNTS[6].offset"),
+      P_F("edge dheading huge", SMGI_SEC_LEDG, 1, smgi_edge,
+          displacement[2], 1e20f, SMG_ERROR_BLOB_VALUE,
+          "LEDG[1].displacement"),
+      P_F("edge arc huge", SMGI_SEC_UEDG, 1, smgi_edge, arc_length, 1e9f,
+          SMG_ERROR_BLOB_VALUE, "UEDG[1].arc_length"),
+      P_F("ground height huge", SMGI_SEC_INFO, 0, smgi_info, ground_height,
+          -1e6f, SMG_ERROR_BLOB_VALUE, "ground_height"),
       /* LNOD / LEDG */
       P_U("node frame", SMGI_SEC_LNOD, 1, smgi_node, frame, FIXTURE_FRAMES,
           SMG_ERROR_BLOB_INDEX, "LNOD[1].frame"),

@@ -4,8 +4,9 @@
  * Random bytes almost never pass the checksum, so each input is tried
  * three ways: as given; with SMG_GRAPH_SKIP_CHECKSUM (so the structural
  * checks face the mutation directly); and, when that is accepted, through
- * smg_graph_load_memory (derived runtime tables) and the inspection API,
- * touching every record the runtime may read.
+ * smg_graph_load_memory (derived runtime tables), the inspection API and a
+ * character walking a short path with a splice and a transition: a graph
+ * the loader accepts must never crash the runtime, however odd it is.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +35,28 @@ static void touch_view(const smgi_graph_data* g) {
   g_sink = acc;
 }
 
+/* A short walk: path, one transition to the last style, one splice to the
+ * last action, a second of steps, then both pose getters. */
+static void exercise_character(smg_graph* graph, uint32_t joints,
+                               uint32_t styles, uint32_t actions) {
+  static const float path[] = {0, 0, 0, 2, 1, 4, 3, 5};
+  static float rotations[4 * 64], matrices[16 * 64];
+  smg_character* ch = NULL;
+  float root[3];
+  uint32_t id, i;
+  if (smg_character_create(graph, NULL, &ch) != SMG_OK) return;
+  smg_character_set_path(ch, path, 4);
+  smg_character_add_transition(ch, 1.0f, styles - 1, &id);
+  smg_character_add_splice(ch, 0.5f, actions - 1, &id);
+  for (i = 0; i < 30; ++i) smg_character_step(ch, 1.0f / 30.0f);
+  if (joints <= 64) {
+    smg_character_get_local_pose(ch, root, rotations, joints);
+    smg_character_get_model_matrices(ch, SMG_SPACE_WORLD, matrices, joints);
+    g_sink = root[0] + rotations[0] + matrices[12];
+  }
+  smg_character_destroy(ch);
+}
+
 static void exercise_graph(const void* data, size_t size) {
   smg_graph_desc desc;
   smg_graph* graph = NULL;
@@ -60,6 +83,8 @@ static void exercise_graph(const void* data, size_t size) {
     for (i = 0; i < info.action_count; ++i)
       if (smg_graph_get_action_name(graph, i, &name) == SMG_OK)
         smg_graph_find_action(graph, name, &idx);
+    exercise_character(graph, info.joint_count, info.style_count,
+                       info.action_count);
   }
   smg_graph_destroy(graph);
 }

@@ -5,22 +5,71 @@
  *   fuzz_x FILE...             run each file once (reproduce a crash)
  *   fuzz_x [-n N] [-s SEED]    run the seed input, then N mutants of it
  *   fuzz_x --write-seed FILE   write the target's seed input (corpus)
+ *   fuzz_x [-s SEED] --dump K FILE
+ *                              write mutant K (0-based) of that run to FILE
+ *                              instead of running anything: reproduce a
+ *                              smoke-run failure with `fuzz_x FILE`
  *
  * Mutants are deterministic for a given SEED: 1 to 4 stacked edits among
  * bit flips, byte overwrites with boundary values, aligned 32-bit
  * overwrites with boundary values (the blob's indices and counts are
  * 32-bit), truncation, chunk copies inside the input, chunk deletion and
  * insertion. Each mutant is handed to the target in a buffer of exactly
- * its size so valgrind/ASan see any read past the end.
+ * its size so valgrind/ASan see any read past the end. An input that runs
+ * longer than -t seconds (default 20) is reported as a hang with the
+ * command that reproduces it, and the run fails.
  */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "fuzz.h"
 
 static uint64_t g_rng;
+/* for the hang report (read in the signal handler) */
+static volatile long g_current = -1; /* mutant index, -1 = the seed/file */
+static unsigned long g_seed_arg = 1;
+static const char* g_argv0 = "fuzz";
+
+static void put_str(const char* s) {
+  ssize_t ignored = write(2, s, strlen(s));
+  (void)ignored;
+}
+
+static void put_ulong(unsigned long v) {
+  char buf[24];
+  int i = 23;
+  buf[i] = '\0';
+  do {
+    buf[--i] = (char)('0' + v % 10);
+    v /= 10;
+  } while (v && i > 0);
+  put_str(buf + i);
+}
+
+static void on_alarm(int sig) {
+  (void)sig;
+  put_str("fuzz: HANG: input ");
+  if (g_current < 0) {
+    put_str("(seed or file)");
+  } else {
+    put_ulong((unsigned long)g_current);
+    put_str(" did not finish; reproduce with:\n  ");
+    put_str(g_argv0);
+    put_str(" -s ");
+    put_ulong(g_seed_arg);
+    put_str(" --dump ");
+    put_ulong((unsigned long)g_current);
+    put_str(" hang.bin && ");
+    put_str(g_argv0);
+    put_str(" hang.bin");
+  }
+  put_str("\n");
+  _exit(1);
+}
 
 static uint64_t next_u64(void) { /* splitmix64: tiny, good enough */
   uint64_t z = (g_rng += 0x9e3779b97f4a7c15ull);
@@ -136,48 +185,64 @@ static int run_file(const char* path) {
   return 0;
 }
 
+static int write_bytes(const char* path, const uint8_t* data, size_t size) {
+  FILE* f = fopen(path, "wb");
+  if (!f || fwrite(data, 1, size, f) != size) {
+    fprintf(stderr, "fuzz: cannot write %s\n", path);
+    if (f) fclose(f);
+    return 1;
+  }
+  fclose(f);
+  return 0;
+}
+
 static int write_seed(const char* path) {
   uint8_t* seed = NULL;
   size_t size = 0;
-  FILE* f;
+  int rc;
   if (fuzz_seed(&seed, &size) != 0) {
     fprintf(stderr, "fuzz: the target could not make its seed\n");
     return 1;
   }
-  f = fopen(path, "wb");
-  if (!f || fwrite(seed, 1, size, f) != size) {
-    fprintf(stderr, "fuzz: cannot write %s\n", path);
-    if (f) fclose(f);
-    free(seed);
-    return 1;
-  }
-  fclose(f);
+  rc = write_bytes(path, seed, size);
   free(seed);
-  return 0;
+  return rc;
 }
 
 int main(int argc, char** argv) {
-  unsigned long n = 1000, s = 1, i;
+  unsigned long n = 1000, s = 1, i, dump_index = 0, timeout = 20;
+  const char* dump_path = NULL;
   uint8_t *seed = NULL, *buf;
   size_t seed_size = 0, cap;
   int argi, files = 0, rc = 0;
   clock_t t0 = clock();
+
+  g_argv0 = argv[0];
+  signal(SIGALRM, on_alarm);
 
   for (argi = 1; argi < argc; ++argi) {
     if (strcmp(argv[argi], "-n") == 0 && argi + 1 < argc) {
       n = strtoul(argv[++argi], NULL, 10);
     } else if (strcmp(argv[argi], "-s") == 0 && argi + 1 < argc) {
       s = strtoul(argv[++argi], NULL, 10);
+    } else if (strcmp(argv[argi], "-t") == 0 && argi + 1 < argc) {
+      timeout = strtoul(argv[++argi], NULL, 10);
     } else if (strcmp(argv[argi], "--write-seed") == 0 && argi + 1 < argc) {
       return write_seed(argv[++argi]);
+    } else if (strcmp(argv[argi], "--dump") == 0 && argi + 2 < argc) {
+      dump_index = strtoul(argv[++argi], NULL, 10);
+      dump_path = argv[++argi];
+      n = dump_index + 1;
     } else if (argv[argi][0] == '-') {
       fprintf(stderr,
-              "usage: %s [-n MUTATIONS] [-s SEED] | FILE... | "
-              "--write-seed FILE\n",
+              "usage: %s [-n MUTATIONS] [-s SEED] [-t SECONDS] | FILE... | "
+              "--write-seed FILE | [-s SEED] --dump K FILE\n",
               argv[0]);
       return 2;
     } else {
+      alarm((unsigned)timeout);
       rc |= run_file(argv[argi]);
+      alarm(0);
       ++files;
     }
   }
@@ -188,19 +253,33 @@ int main(int argc, char** argv) {
     return 1;
   }
   g_rng = 0x5eed0000ull + s;
+  g_seed_arg = s;
   cap = seed_size * 2 + 256;
   buf = (uint8_t*)malloc(cap);
   if (!buf) {
     free(seed);
     return 1;
   }
-  run_exact(seed, seed_size);
+  if (!dump_path) {
+    alarm((unsigned)timeout);
+    run_exact(seed, seed_size);
+  }
   for (i = 0; i < n; ++i) {
     size_t len = seed_size, k, edits = 1 + below(4);
     memcpy(buf, seed, seed_size);
     for (k = 0; k < edits; ++k) mutate_once(buf, &len, cap);
+    if (dump_path) {
+      if (i < dump_index) continue;
+      rc = write_bytes(dump_path, buf, len);
+      free(buf);
+      free(seed);
+      return rc;
+    }
+    g_current = (long)i;
+    alarm((unsigned)timeout); /* re-armed per input */
     run_exact(buf, len);
   }
+  alarm(0);
   printf("fuzz: %s: seed (%zu bytes) + %lu mutants (seed %lu) in %.2f s\n",
          argv[0], seed_size, n, s,
          (double)(clock() - t0) / CLOCKS_PER_SEC);
