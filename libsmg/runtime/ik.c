@@ -23,8 +23,7 @@ static void rotate_chain(float pos[3][3], float rotw[3][4], uint32_t k,
                          const float* dq) {
   for (uint32_t c = k; c < 3u; ++c) {
     float q[4];
-    smgi_q_mul(dq, rotw[c], q);
-    smgi_q_normalize(q);
+    smgi_q_mul(dq, rotw[c], q); /* unit * unit: renormalized at the end */
     memcpy(rotw[c], q, sizeof q);
     if (c > k) {
       float v[3] = {pos[c][0] - pos[k][0], pos[c][1] - pos[k][1],
@@ -73,6 +72,8 @@ static void solve_leg(smg_character* ch, const uint32_t* leg,
       rotate_chain(pos, rotw, (uint32_t)k, dq);
     }
   }
+  smgi_q_normalize(rotw[0]);
+  smgi_q_normalize(rotw[1]);
   /* back to local rotations, blended with the animation by w */
   float inv[4], local[4], out[4];
   smgi_q_conj(ch->wrot + 4u * (uint32_t)hp, inv);

@@ -128,25 +128,28 @@ static inline void smgi_q_rotate(const float* q, const float* v, float* o) {
   o[2] = z;
 }
 
-/* Shortest rotation taking unit-ish direction a to direction b. */
+/* Shortest rotation taking direction a to direction b. */
 static inline void smgi_q_from_to(const float* a, const float* b, float* o) {
   float cx = a[1] * b[2] - a[2] * b[1];
   float cy = a[2] * b[0] - a[0] * b[2];
   float cz = a[0] * b[1] - a[1] * b[0];
-  float la = sqrtf(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  float lb = sqrtf(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  float l2 = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) *
+             (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  float lab = sqrtf(l2);
   float d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  o[0] = cx;
-  o[1] = cy;
-  o[2] = cz;
-  o[3] = la * lb + d;
-  if (o[3] < 1e-6f * (la * lb + 1e-12f)) {
+  float w = lab + d;
+  if (!(w > 1e-6f * (lab + 1e-12f))) {
     /* opposite or degenerate: no well-defined shortest arc, do nothing */
     o[0] = o[1] = o[2] = 0.0f;
     o[3] = 1.0f;
     return;
   }
-  smgi_q_normalize(o);
+  /* |(c, w)|^2 = 2 lab w, so one sqrt normalizes */
+  float s = 1.0f / sqrtf(2.0f * lab * w);
+  o[0] = cx * s;
+  o[1] = cy * s;
+  o[2] = cz * s;
+  o[3] = w * s;
 }
 
 /* Deterministic xorshift32 (never 0 state). */
