@@ -15,9 +15,6 @@
  */
 #include <math.h>
 #include <string.h>
-#ifdef SMGI_DEBUG_PLAN
-#include <stdio.h>
-#endif
 
 #include "character_internal.h"
 
@@ -289,14 +286,6 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
     }
     c[i] = x;
   }
-#ifdef SMGI_DEBUG_PLAN
-  fprintf(stderr, "rank node %u W(%.2f %.2f %.2f) s %.2f:", node, W.x, W.z,
-          W.h, s);
-  for (uint32_t k = 0; k < count; ++k)
-    fprintf(stderr, " e%u sc %.2f err %.2f |", c[k].edge, c[k].score,
-            c[k].err);
-  fprintf(stderr, "\n");
-#endif
   return count;
 }
 
