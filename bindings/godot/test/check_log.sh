@@ -23,9 +23,9 @@ for msg in \
 		fail=1
 	fi
 done
-if grep -qE 'SCRIPT ERROR|Program crashed|handle_crash|Segmentation fault' "$LOG"; then
+if grep -qE 'SCRIPT ERROR|Program crashed|handle_crash|Segmentation fault|AddressSanitizer' "$LOG"; then
 	echo "test-godot: script error or crash in $LOG:" >&2
-	grep -E -A3 'SCRIPT ERROR|Program crashed|handle_crash|Segmentation fault' "$LOG" | head -20 >&2
+	grep -E -A3 'SCRIPT ERROR|Program crashed|handle_crash|Segmentation fault|AddressSanitizer' "$LOG" | head -20 >&2
 	fail=1
 fi
 [ $fail = 0 ] && echo "test-godot: passed ($planned checks)"
