@@ -11,8 +11,11 @@
  * and centimetre scale) are folded into the root's rotation, the root
  * translation and, as a uniform scale, every offset.
  *
+ * An unanimated root bone of a skinned mesh above the animated joints is
+ * part of the skeleton too.
  * Channels are sampled at the animation's own key spacing (the rate of its
- * densest rotation channel, e.g. 30 or 60 Hz; snapped to an integer rate),
+ * densest rotation channel, e.g. 30 or 60 Hz; snapped to an integer rate;
+ * at least 30 Hz for sparse keyframes),
  * with linear translation and slerp rotation between keys. As in the BVH
  * reader, only the root may translate over time: a joint whose translation
  * keys move is rejected with SMG_ERROR_UNSUPPORTED; constant ones become the
@@ -105,6 +108,7 @@ typedef struct node_info {
   const struct aiNode* node;
   int32_t parent;   /* index in the flat node list */
   int32_t channel;  /* channel in the animation, -1 if none */
+  int bone;         /* named as a bone by a skinned mesh */
   int keep;         /* a joint */
   int32_t joint;    /* joint index when kept */
 } node_info;
@@ -375,7 +379,25 @@ smg_result smgb_assimp_load(const char* path, float unit_scale,
       }
     }
   }
-  /* Skeleton root: the lowest common ancestor of all animated nodes. */
+  /* Bones of skinned meshes: an unanimated root bone above the animated
+   * joints still belongs to the skeleton (static leaf bones such as BVH end
+   * sites do not). */
+  for (c = 0; c < scene->mNumMeshes && scene->mMeshes; ++c) {
+    const struct aiMesh* mesh = scene->mMeshes[c];
+    unsigned b;
+    if (!mesh || !mesh->mBones) continue;
+    for (b = 0; b < mesh->mNumBones; ++b) {
+      if (!mesh->mBones[b]) continue;
+      for (i = 0; i < nodes.count; ++i) {
+        if (strcmp(nodes.v[i].node->mName.data, mesh->mBones[b]->mName.data) == 0) {
+          nodes.v[i].bone = 1;
+          break;
+        }
+      }
+    }
+  }
+  /* Skeleton root: the lowest common ancestor of all animated nodes,
+   * raised to the topmost bone above it. */
   for (i = 0; i < nodes.count; ++i) {
     int32_t a, b;
     if (nodes.v[i].channel < 0) continue;
@@ -397,10 +419,13 @@ smg_result smgb_assimp_load(const char* path, float unit_scale,
     smgb_imp_errorf(err, "%s: no animation channel matches a node", path);
     goto done;
   }
+  while (nodes.v[root].parent >= 0 && nodes.v[nodes.v[root].parent].bone)
+    root = nodes.v[root].parent;
   /* Keep animated nodes under the root and their ancestors up to it. */
   for (i = nodes.count; i-- > (uint32_t)root;) {
     int32_t p;
-    if (nodes.v[i].channel < 0 && !nodes.v[i].keep) continue;
+    if (nodes.v[i].channel < 0 && !nodes.v[i].keep && (int32_t)i != root)
+      continue;
     nodes.v[i].keep = 1;
     p = nodes.v[i].parent;
     if ((int32_t)i != root && p >= root) nodes.v[p].keep = 1;
@@ -519,6 +544,9 @@ smg_result smgb_assimp_load(const char* path, float unit_scale,
       rate = (ri >= 1.0 && fabs(r - ri) <= 1e-3 * ri) ? ri : r;
     }
   }
+  /* Sparse keyframes (hand animation: a few keys per second) are sampled
+   * at 30 Hz so the interpolation between keys is kept. */
+  if (rate < 24.0) rate = 30.0;
   if (!(rate >= 1.0) || rate > 1000.0) {
     smgb_imp_errorf(err, "%s: implausible key rate %.3g per second", path, rate);
     goto done;

@@ -4,7 +4,8 @@
  * .glb), and loaded back with smgb_assimp_load; skeleton and poses must
  * match the source within float tolerance. Bad inputs give clear errors.
  * (assimp 5.2's FBX and Collada exporters write files its own importers
- * reject, so FBX is covered by the same code path but not round-tripped.)
+ * reject, so FBX is not round-tripped; a real FBX from Debian's
+ * assimp-testmodels is loaded when that package is installed.)
  */
 #include <math.h>
 #include <setjmp.h>
@@ -115,6 +116,46 @@ static void test_gltf_round_trip(void** state) {
   export_and_load("gltf2", "clip.gltf");
 }
 
+/* A real FBX file (Blender export, Z-up armature) from Debian's
+ * assimp-testmodels, when installed: loads with its 10 bones, 40 frames at
+ * 25 Hz, unit quaternions and actual motion. */
+static void test_fbx_testmodel(void** state) {
+  static const char path[] = "/usr/share/assimp/models/FBX/huesitos.fbx";
+  FILE* fp = fopen(path, "rb");
+  smgb_clip c;
+  smgb_error err;
+  uint32_t f, j, S;
+  double moved = 0.0;
+  (void)state;
+  if (!fp) {
+    printf("SKIP: %s absent (apt-get install assimp-testmodels)\n", path);
+    skip();
+    return;
+  }
+  fclose(fp);
+  if (smgb_assimp_load(path, 1.0f, 0, &c, &err) != SMG_OK)
+    fail_msg("%s", err.message);
+  assert_int_equal(c.skeleton.joint_count, 10);
+  assert_string_equal(c.skeleton.names[0], "Armature");
+  assert_string_equal(c.skeleton.names[1], "Bone");
+  assert_int_equal(c.skeleton.parents[0], -1);
+  assert_int_equal(c.frame_count, 40);
+  assert_float_equal(c.frame_rate, 25.0f, 0.0f);
+  S = SMGB_STRIDE(10);
+  for (f = 0; f < c.frame_count; ++f) {
+    for (j = 0; j < 10; ++j) {
+      const float* q = c.poses + (size_t)f * S + 3 + 4 * j;
+      const float* q0 = c.poses + 3 + 4 * j;
+      double d = q[0] * q0[0] + q[1] * q0[1] + q[2] * q0[2] + q[3] * q0[3];
+      assert_float_equal(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3],
+                         1.0, 1e-5);
+      if (1.0 - fabs(d) > moved) moved = 1.0 - fabs(d);
+    }
+  }
+  assert_true(moved > 1e-3);
+  smgb_clip_free(&c);
+}
+
 static void test_bad_files(void** state) {
   char path[500];
   smgb_clip c;
@@ -150,6 +191,7 @@ int main(int argc, char** argv) {
       cmocka_unit_test(test_bvh_through_assimp),
       cmocka_unit_test(test_glb_round_trip),
       cmocka_unit_test(test_gltf_round_trip),
+      cmocka_unit_test(test_fbx_testmodel),
       cmocka_unit_test(test_bad_files),
   };
   if (argc == 5 && strcmp(argv[1], "--export") == 0)
