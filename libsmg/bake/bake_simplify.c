@@ -73,7 +73,8 @@ smg_result smgb_simplify(smgb_bake* b, smgb_graph* g) {
       prev_frame = fr;
     }
   }
-  qsort(ng.nodes, ng.node_count, sizeof *ng.nodes, node_cmp);
+  if (ng.node_count > 1)
+    qsort(ng.nodes, ng.node_count, sizeof *ng.nodes, node_cmp);
   /* map old kept nodes to new indices */
   {
     uint32_t j = 0;
