@@ -201,9 +201,19 @@ static int info(const char* path) {
     uint32_t is_lower = (c->flags & SMGI_CLIP_LOWER) != 0;
     const smgi_label* lab = is_lower ? g.styles : g.actions;
     uint32_t lc = is_lower ? g.style_count : g.action_count;
-    printf("  %2u %-28s %5u frames (%6.2f s) %-5s %-8s%s%s\n", i,
-           g.strings + c->name, c->frame_count,
-           c->frame_count / g.info->frame_rate, is_lower ? "lower" : "upper",
+    /* how much of the clip the pruned graph still plays */
+    const smgi_edge* edges = is_lower ? g.lower_edges : g.upper_edges;
+    uint32_t ne = is_lower ? g.lower_edge_count : g.upper_edge_count, e;
+    uint32_t used = 0;
+    for (e = 0; e < ne; ++e)
+      if (edges[e].first_frame >= c->first_frame &&
+          edges[e].first_frame < c->first_frame + c->frame_count)
+        used += edges[e].frame_count;
+    printf("  %2u %-28s %5u frames (%6.2f s) %3.0f%% on edges %-5s %-8s%s%s\n",
+           i, g.strings + c->name, c->frame_count,
+           c->frame_count / g.info->frame_rate,
+           c->frame_count ? 100.0 * used / c->frame_count : 0.0,
+           is_lower ? "lower" : "upper",
            (c->flags & SMGI_CLIP_BLEND) ? "-"
            : c->label < lc             ? g.strings + lab[c->label].name
                                        : "?",
