@@ -5,7 +5,8 @@
 # .godot/ into it) with the extension and the graph, runs test_smg.gd
 # headless at a fixed 30 fps and lets check_log.sh decide (Godot exits 0
 # even after script errors). With EDITOR_LOG it then opens the test scene in
-# the headless editor and fails on a crash or if the scene did not open.
+# the headless editor and fails on a crash or if the scene did not open, and
+# drives a copy of the demo project with synthetic input (demo_input.gd).
 #
 # Environment: GODOT_GD (the command running Godot, default ../gd),
 # GODOT_TIMEOUT (seconds per Godot run, default 300), GODOT_PRELOAD
@@ -42,6 +43,29 @@ grep -E '^(PASS|FAIL|godot:)' "$LOG_ABS" || true
 sh "$HERE/check_log.sh" "$LOG_ABS"
 
 [ -n "$EDITOR_LOG" ] || exit 0
+
+# The demo project driven by synthetic input (drag, keys, right click).
+DEMO_PROJ=$PROJ-demo
+DEMO_LOG=$(abs "$EDITOR_LOG" | sed 's/-editor\.log$//; s/\.log$//')-demo.log
+rm -rf "$DEMO_PROJ"
+mkdir -p "$DEMO_PROJ/bin" "$DEMO_PROJ/.godot"
+cp "$HERE/../demo/project.godot" "$HERE/../demo"/*.gd "$HERE/../demo"/*.tscn "$HERE/../demo/smg.gdextension" \
+	"$HERE/demo_input.gd" "$DEMO_PROJ/"
+cp "$EXT" "$DEMO_PROJ/bin/libsmg_godot.so"
+cp "$GRAPH" "$DEMO_PROJ/default.smg"
+echo 'res://smg.gdextension' > "$DEMO_PROJ/.godot/extension_list.cfg"
+echo "== godot demo input test ($DEMO_LOG)"
+set +e
+(cd "$DEMO_PROJ" && env ${GODOT_PRELOAD:+LD_PRELOAD=$GODOT_PRELOAD} timeout "$TMO" $GD --headless --fixed-fps 30 \
+	--audio-driver Dummy --path . --script res://demo_input.gd > "$DEMO_LOG" 2>&1)
+set -e
+grep -E '^(PASS|FAIL|demo:)' "$DEMO_LOG" || true
+planned=$(sed -n 's/^const PLANNED := \([0-9]*\).*/\1/p' "$HERE/demo_input.gd")
+if ! grep -qx "demo: $planned passed, 0 failed" "$DEMO_LOG" || grep -qE 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$DEMO_LOG"; then
+	echo "test-godot: demo input test failed, see $DEMO_LOG" >&2
+	grep -E -A3 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$DEMO_LOG" | head -20 >&2
+	exit 1
+fi
 ED_ABS=$(abs "$EDITOR_LOG")
 echo "== godot editor smoke test: open character.tscn in the headless editor ($EDITOR_LOG)"
 set +e
