@@ -40,13 +40,15 @@ GODOT_DEMO := $(GODOT_DIR)/demo
 
 TEST_TARGETS += test-godot test-godot-asan
 
-.PHONY: godot-provision godot-ext test-godot godot-demo godot-screenshot
+.PHONY: godot-provision godot-ext test-godot godot-demo godot-screenshot test-godot-asan
 
 godot-provision:
 	@SMG_GODOT_ROOT=$(SMG_GODOT_ROOT) sh $(GODOT_DIR)/provision.sh
 
-$(GODOT_BIN):
-	SMG_GODOT_ROOT=$(SMG_GODOT_ROOT) sh $(GODOT_DIR)/provision.sh
+# provision.sh returns at once when the cached root matches its package list,
+# so depending on the script re-provisions exactly when that list changed.
+$(GODOT_BIN): $(GODOT_DIR)/provision.sh
+	@SMG_GODOT_ROOT=$(SMG_GODOT_ROOT) sh $(GODOT_DIR)/provision.sh
 
 # Both files come from one Godot run in a scratch folder.
 $(GODOT_IFACE): $(GODOT_BIN)
@@ -100,7 +102,6 @@ $(GODOT_ASAN_SHIM): $(GODOT_DIR)/test/nodeepbind.c
 	$(CC) -shared -fPIC -O1 -o $@ $< -ldl
 	cp "$$($(CC) -print-file-name=libasan.so)" $(GODOT_ASAN)/libasan.so
 
-.PHONY: test-godot-asan
 test-godot-asan: $(GODOT_ASAN_EXT) $(GODOT_ASAN_SHIM) $(GODOT_DEFAULT_SMG)
 	@GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) \
 		GODOT_PRELOAD=$(abspath $(GODOT_ASAN_SHIM)):$(abspath $(GODOT_ASAN))/libasan.so \
