@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -134,7 +135,7 @@ bool open_window(App& app, std::string* error) {
   }
   Uint32 flags = SDL_WINDOW_OPENGL | (app.headless ? SDL_WINDOW_HIDDEN : (SDL_WINDOW_RESIZABLE | SDL_WINDOW_SHOWN));
   for (int attempt = 0; attempt < 2 && !app.window; ++attempt) {
-    bool msaa = attempt == 0 && !app.headless;  // offscreen has its own MSAA
+    bool msaa = attempt == 0 && !app.headless && !std::getenv("SMG_DEMO_NO_MSAA");  // offscreen has its own MSAA
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
@@ -271,6 +272,8 @@ int run_interactive(App& app) {
   double accumulator = 0.0;
   int status = 0;
   int shot_index = 0;
+  long rendered = 0;
+  double frame_ms_sum = 0.0, step_us_sum = 0.0;
   while (!app.quit) {
     SDL_Event e;
     while (SDL_PollEvent(&e)) {
@@ -311,7 +314,14 @@ int run_interactive(App& app) {
       SDL_Delay(16);  // minimised
     }
     if (app.options.frames >= 0 && app.frame >= app.options.frames) app.quit = true;
+    ++rendered;
+    frame_ms_sum += real * 1000.0;
+    step_us_sum += app.world.step_us_avg();
   }
+  if (rendered > 1)  // the first frame's time includes start-up
+    std::printf("smg-demo: %ld rendered frames, mean frame %.2f ms, %d characters, step+pose %.1f us/character\n",
+                rendered, frame_ms_sum / double(rendered), int(app.world.characters().size()),
+                step_us_sum / double(rendered));
   return status;
 }
 

@@ -159,7 +159,8 @@ GLint loc(unsigned program, const char* name) { return glGetUniformLocation(prog
 
 // Unit sphere (radius 1) as interleaved position+normal.
 void sphere_mesh(std::vector<float>* v, std::vector<unsigned>* idx) {
-  const int rings = 10, segments = 16;
+  // Small enough for Mesa's software rasteriser with 100 characters.
+  const int rings = 6, segments = 10;
   for (int r = 0; r <= rings; ++r) {
     float phi = float(M_PI) * float(r) / rings;
     for (int s = 0; s <= segments; ++s) {
@@ -177,7 +178,7 @@ void sphere_mesh(std::vector<float>* v, std::vector<unsigned>* idx) {
 
 // Open cylinder of radius 1 from y = 0 to y = 1 (spheres close the ends).
 void cylinder_mesh(std::vector<float>* v, std::vector<unsigned>* idx) {
-  const int segments = 16;
+  const int segments = 10;
   for (int s = 0; s <= segments; ++s) {
     float theta = 2.0f * float(M_PI) * float(s) / segments;
     float x = std::cos(theta), z = std::sin(theta);
@@ -302,14 +303,16 @@ void Renderer::begin(int width, int height, const OrbitCamera& camera) {
   eye_ = camera.eye();
   target_ = camera.target;
   spheres_.clear();
+  shadow_spheres_.clear();
   cylinders_.clear();
   decals_.clear();
 }
 
-void Renderer::sphere(glm::vec3 c, float r, glm::vec4 colour) {
+void Renderer::sphere(glm::vec3 c, float r, glm::vec4 colour, bool casts_shadow) {
   glm::mat4 m(r);
   m[3] = glm::vec4(c, 1.0f);
   spheres_.push_back({m, colour});
+  if (casts_shadow) shadow_spheres_.push_back({m, colour});
 }
 
 void Renderer::cylinder(glm::vec3 a, glm::vec3 b, float r, glm::vec4 colour) {
@@ -388,7 +391,7 @@ void Renderer::end() {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  draw_instances(sphere_, spheres_);
+  draw_instances(sphere_, shadow_spheres_);
   draw_instances(cylinder_, cylinders_);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_POLYGON_OFFSET_FILL);

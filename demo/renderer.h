@@ -29,7 +29,8 @@ class Renderer {
   // Starts a frame into the currently bound framebuffer of size w x h.
   void begin(int width, int height, const OrbitCamera& camera);
   // Queue geometry for this frame.
-  void sphere(glm::vec3 centre, float radius, glm::vec4 colour);
+  // Joint spheres inside a capsule's shadow need not cast their own.
+  void sphere(glm::vec3 centre, float radius, glm::vec4 colour, bool casts_shadow = true);
   void cylinder(glm::vec3 a, glm::vec3 b, float radius, glm::vec4 colour);
   // Ground decals: triangles lying on y ~ 0, drawn over the grid.
   std::vector<FlatVertex>& decals() { return decals_; }
@@ -50,7 +51,7 @@ class Renderer {
   Mesh sphere_, cylinder_;
   unsigned ground_vao_ = 0, ground_vbo_ = 0;
   unsigned flat_vao_ = 0, flat_vbo_ = 0;
-  std::vector<Instance> spheres_, cylinders_;
+  std::vector<Instance> spheres_, shadow_spheres_, cylinders_;
   std::vector<FlatVertex> decals_;
   glm::mat4 view_proj_{1.0f};
   glm::vec3 eye_{0.0f}, target_{0.0f};

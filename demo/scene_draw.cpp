@@ -90,7 +90,9 @@ void skeleton(Renderer& r, const World& world, const std::vector<glm::vec3>& pos
   }
   for (size_t j = 0; j < pos.size(); ++j) {
     int p = L.parent[j];
-    if (p < 0) continue;
+    if (p < 0 || L.skip[j]) continue;
+    // Zero-length helper bones (CMU LHipJoint, Neck, ...) draw nothing.
+    if (glm::length(pos[j] - pos[size_t(p)]) < 1e-3f) continue;
     float radius = L.radius[size_t(p)];
     glm::vec3 col = L.body_part[size_t(p)] == SMG_BODY_UPPER ? upper : lower;
     bool left_foot = int(p) == L.left_foot || int(p) == L.left_toe;
@@ -99,7 +101,7 @@ void skeleton(Renderer& r, const World& world, const std::vector<glm::vec3>& pos
         (right_foot && (contact_flags & SMG_STATE_RIGHT_CONTACT)))
       col = lighten(col, 0.75f);
     r.cylinder(pos[size_t(p)], pos[j], radius * 0.8f, glm::vec4(col, 1.0f));
-    r.sphere(pos[j], radius * 0.8f, glm::vec4(skin, 1.0f));
+    r.sphere(pos[j], radius * 0.8f, glm::vec4(skin, 1.0f), false);
   }
   if (!pos.empty()) r.sphere(pos[0], 0.085f, glm::vec4(lower, 1.0f));
   if (L.head >= 0) {
@@ -173,7 +175,7 @@ void draw_scene(Renderer& r, const World& world, const SceneView& view) {
   }
 
   // Strobe trail of character 0 (Fig. 4 of the paper).
-  for (const TrailPose& t : world.trail()) skeleton(r, world, t.joints, t.style, t.action, 0, 0.35f);
+  for (const TrailPose& t : world.trail()) skeleton(r, world, t.joints, t.style, t.action, 0, 0.45f);
 
   std::vector<glm::vec3> pos(world.joint_count());
   for (const Character& c : chars) {

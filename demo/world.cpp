@@ -144,6 +144,9 @@ void World::build_layout() {
     else if (n.find("neck") != std::string::npos) r = 0.05f;
     else if (n.find("hip") != std::string::npos || n.find("pelvis") != std::string::npos) r = 0.075f;
     layout_.radius.push_back(r);
+    bool finger = n.find("finger") != std::string::npos || n.find("thumb") != std::string::npos ||
+                  n.find("index") != std::string::npos;
+    layout_.skip.push_back(finger ? 1 : 0);
     if (n == "head") layout_.head = int(j);
     if (n == "neck1" || (n == "neck" && layout_.neck < 0)) layout_.neck = int(j);
     if (n == "leftfoot") layout_.left_foot = int(j);

@@ -53,6 +53,7 @@ struct JointLayout {
   std::vector<uint32_t> body_part;
   std::vector<std::string> name;
   std::vector<float> radius;   // capsule radius of the bone starting here
+  std::vector<uint8_t> skip;   // finger bones: too small to see, not drawn
   int head = -1, neck = -1;    // for the head sphere
   int left_foot = -1, left_toe = -1, right_foot = -1, right_toe = -1;
 };

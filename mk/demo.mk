@@ -80,7 +80,7 @@ test-demo: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_DEFAULT_BLOB)
 	@rm -f $(DEMO_TEST_DIR)/smoke.png $(DEMO_TEST_DIR)/smoke2.png $(DEMO_TEST_DIR)/hud.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_DEFAULT_BLOB) --script demo/scripts/smoke.txt \
 	  --frames 150 --no-hud --width 640 --height 360 --screenshot $(DEMO_TEST_DIR)/smoke.png
-	$(DEMO_PNGCHECK) $(DEMO_TEST_DIR)/smoke.png --size 640 360 --path 300 --character 300
+	$(DEMO_PNGCHECK) $(DEMO_TEST_DIR)/smoke.png --size 640 360 --path 300 --character 150
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_DEFAULT_BLOB) --script demo/scripts/smoke.txt \
 	  --frames 150 --no-hud --width 640 --height 360 --screenshot $(DEMO_TEST_DIR)/smoke2.png
 	cmp $(DEMO_TEST_DIR)/smoke.png $(DEMO_TEST_DIR)/smoke2.png
@@ -96,7 +96,7 @@ TEST_TARGETS += test-demo
 demo-pictures: $(DEMO_BIN) $(BUILD)/smg-bake
 	$(demo_bake_cmu)
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/walk-run-punch.txt \
-	  --frames 660 --width 1280 --height 720 --screenshot docs/img/demo-walk-run-punch.png
+	  --frames 480 --width 1280 --height 720 --screenshot docs/img/demo-walk-run-punch.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/s-curve.txt \
 	  --frames 900 --width 1280 --height 720 --screenshot docs/img/demo-s-curve.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/crowd.txt \
