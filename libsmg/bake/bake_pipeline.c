@@ -22,15 +22,6 @@
 #include "bake_math.h"
 #include "blob.h"
 
-/* The assimp importer (bake_assimp.c) is a separate part of the baker; a
- * weak reference keeps this file linkable while it is absent and gives a
- * clear error instead. */
-#if defined(__GNUC__)
-extern smg_result smgb_assimp_load(const char* path, float unit_scale,
-                                   uint32_t animation_index, smgb_clip* out,
-                                   smgb_error* err) __attribute__((weak));
-#endif
-
 void smgb_fail(smgb_bake* b, const char* fmt, ...) {
   va_list ap;
   if (b->error[0]) return; /* keep the first, most specific message */
@@ -136,16 +127,6 @@ static smg_result validate_options(smgb_bake* b, const smgb_options* o) {
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   return SMG_OK;
-}
-
-static int smgb_assimp_load_available(void) {
-#if defined(__GNUC__)
-  smg_result (*fn)(const char*, float, uint32_t, smgb_clip*, smgb_error*) =
-      smgb_assimp_load;
-  return fn != NULL;
-#else
-  return 1;
-#endif
 }
 
 static const char* base_name(const char* path) {
@@ -327,15 +308,9 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       if (has_ext(path, ".bvh"))
         r = smgb_bvh_load(path, d->unit_scale, d->skip_first_frame, &raw,
                           &err);
-      else if (smgb_assimp_load_available())
+      else /* glTF, GLB, FBX, ... through assimp */
         r = smgb_assimp_load(path, d->unit_scale, d->animation_index, &raw,
                              &err);
-      else {
-        snprintf(err.message, sizeof err.message,
-                 "%.400s: not a .bvh file and this build has no assimp importer",
-                 path);
-        r = SMG_ERROR_UNSUPPORTED;
-      }
       if (r != SMG_OK) {
         smgb_fail(b, "%s: %s", at, err.message[0] ? err.message : path);
         return r;
