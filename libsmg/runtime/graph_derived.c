@@ -5,6 +5,7 @@
  */
 #include "graph_derived.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "alloc.h"
@@ -210,6 +211,26 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   dv->style_first_node = style_first;
   dv->max_lower_degree = maxdeg;
   dv->node_look = node_look;
+  /* most agile style: heading change per metre travelled (curvature) of
+   * the natural continuations - what decides how tightly it can turn back
+   * to a path */
+  {
+    float best = -1.0f;
+    dv->agile_style = 0;
+    for (uint32_t st = 0; st < S; ++st) {
+      double turn = 0.0, arc = 0.0;
+      for (uint32_t n = 0; n < LN; ++n) {
+        if (d->lower_nodes[n].label != st) continue;
+        turn += fabs((double)node_look[4u * n + 2u]);
+        arc += (double)node_look[4u * n + 3u];
+      }
+      float mean = arc > 1e-6 ? (float)(turn / arc) : -1.0f;
+      if (mean > best) {
+        best = mean;
+        dv->agile_style = st;
+      }
+    }
+  }
   dv->natural_next = natural;
   g->derived = dv;
   return SMG_OK;

@@ -46,6 +46,10 @@ typedef struct smgi_derived {
    * motion (first_frame == the node's frame, not a transition), or
    * SMGI_NONE. */
   const uint32_t* natural_next;
+  /* The style whose motion turns most tightly (heading change per metre of
+   * its nodes' natural continuations): where a character that got far
+   * off its path goes to get back (CMU runs, for one, barely turn). */
+  uint32_t agile_style;
   /* Largest out-degree of any lower node (bounds planner work). */
   uint32_t max_lower_degree;
 } smgi_derived;

@@ -24,6 +24,9 @@
                                   style constraints dominate path error */
 #define END_SPEED_WEIGHT 0.5f  /* at the end prefer edges that travel less */
 #define PROGRESS_WEIGHT 1.0f   /* metres of error per metre of lost progress */
+#define LOST_DISTANCE 1.5f     /* off the path by more: style yields */
+#define HEADING_WEIGHT_LOST 2.0f /* metres per radian when lost */
+#define LOST_DISTANCE_WEIGHT 0.25f /* and distance counts less */
 
 typedef struct cand {
   uint32_t edge;
@@ -70,6 +73,15 @@ static float style_penalty(const smg_character* ch, const smgi_edge* e,
   return STYLE_WEIGHT * (1.0f + (float)h);
 }
 
+/* Distance of a planned ground position from the path point at s. */
+static float start_error(const smg_character* ch, smgi_xform2 W, float s,
+                         uint32_t seg) {
+  if (ch->path.count < 2u) return 0.0f;
+  float x, z;
+  smgi_path_eval(&ch->path, s, &seg, &x, &z, NULL);
+  return sqrtf((W.x - x) * (W.x - x) + (W.z - z) * (W.z - z));
+}
+
 /* An edge that spans arc lengths [s0, s1] is in style if its label is
  * wanted at either end: transition edges cross the point where the style
  * changes, and an edge ending exactly on a transition point is fine. */
@@ -78,6 +90,14 @@ static float edge_style_penalty(const smg_character* ch, const smgi_edge* e,
   uint32_t a = smgi_style_at(ch, s0), b = smgi_style_at(ch, s1);
   if (e->label == a || e->label == b) return 0.0f;
   return style_penalty(ch, e, b);
+}
+
+/* Lost (far off the path): the wanted style yields to the graph's most
+ * agile one until the path is rejoined - a style that cannot turn (CMU
+ * runs) would otherwise carry the character away for good. */
+static float lost_style_penalty(const smg_character* ch,
+                                const smgi_edge* e) {
+  return style_penalty(ch, e, smgi_derived_of(ch->graph)->agile_style);
 }
 
 /* How far a planned ground position is from following the path, given
@@ -119,20 +139,27 @@ static float track_error(const smg_character* ch, float x, float z,
  * the look-ahead's length): on the path this is the tangent, off it the
  * direction that rejoins it. */
 static float leaf_value(const smg_character* ch, uint32_t node,
-                        smgi_xform2 W, float s, uint32_t seg) {
+                        smgi_xform2 W, float s, uint32_t seg, float hw) {
   const float* look = smgi_derived_of(ch->graph)->node_look + 4u * node;
   smgi_xform2 lk = {look[0], look[1], look[2]};
   smgi_xform2 end = smgi_xf_mul(W, lk);
   float sp;
-  float d = track_error(ch, end.x, end.z, s + look[3], 0.5f * look[3], &seg,
-                        &sp, NULL);
+  /* lost: progress along the path means nothing until it is rejoined */
+  float slack = hw > HEADING_WEIGHT ? INFINITY : 0.5f * look[3];
+  float d = track_error(ch, end.x, end.z, s + look[3], slack, &seg, &sp,
+                        NULL);
   float ahead = look[3] > d ? look[3] : d;
   if (ahead < 0.5f) ahead = 0.5f;
   float px, pz, th;
   smgi_path_eval(&ch->path, sp + ahead, &seg, &px, &pz, &th);
   float dx = px - end.x, dz = pz - end.z;
   float want = dx * dx + dz * dz > 1e-4f ? atan2f(dx, dz) : th;
-  return d + HEADING_WEIGHT * fabsf(smgi_wrap_angle(end.h - want));
+  /* the further off the path, the more the way back matters */
+  float dh = fabsf(smgi_wrap_angle(end.h - want));
+  /* lost: options differ little in distance (all move away at running
+   * speed for the next second or two) but much in where they face */
+  if (hw > HEADING_WEIGHT) return LOST_DISTANCE_WEIGHT * d + hw * dh;
+  return d + hw * dh;
 }
 
 /* Bounded look-ahead below a candidate edge. Baked graphs can have edges
@@ -142,17 +169,24 @@ static float leaf_value(const smg_character* ch, uint32_t node,
  * `frames_left` frames and, at every branching node on the way, also
  * tries leaving it once (each exit judged by where its own natural
  * continuation leads, from the derived node_look table). The value is the
- * best, over these sequences, of the worst distance error along it plus
- * the end's heading error and style penalties. Cost: about one edge
+ * best, over these sequences, of the leaf's distance and heading error
+ * plus how much further off the path the sequence gets on the way, plus
+ * style penalties. Cost: about one edge
  * evaluation per natural edge plus two per alternative exit, capped by
  * *budget; deviations near the start are tried first, where they matter
  * most. */
 static float look_value(const smg_character* ch, uint32_t node,
                         smgi_xform2 W, float s, uint32_t seg,
-                        float frames_left, uint32_t* budget) {
+                        float frames_left, uint32_t* budget, float base) {
   const smg_graph* g = ch->graph;
   const smgi_derived* dv = smgi_derived_of(g);
-  float best = INFINITY, worst = 0.0f, pen_acc = 0.0f;
+  /* `worst` starts at the error the sequence starts from: only getting
+   * further off the path counts, so a character that is already off it
+   * (new path far away, a style that cannot turn) still compares its
+   * options by where they lead instead of all scoring the same */
+  float best = INFINITY, worst = base, pen_acc = 0.0f;
+  /* lost: which way the character faces decides how soon it is back */
+  const float hw = base > 0.0f ? HEADING_WEIGHT_LOST : HEADING_WEIGHT;
   for (uint32_t hop = 0; hop < 64u; ++hop) {
     const smgi_node* n = &g->data.lower_nodes[node];
     uint32_t nat = dv->natural_next[node];
@@ -167,14 +201,16 @@ static float look_value(const smg_character* ch, uint32_t node,
       float s_t = s + e->arc_length;
       uint32_t sg = seg;
       float sp;
-      float d = track_error(ch, end.x, end.z, s_t, 0.5f * e->arc_length, &sg,
+      float d = track_error(ch, end.x, end.z, s_t,
+                            base > 0.0f ? INFINITY : 0.5f * e->arc_length, &sg,
                             &sp, NULL);
-      float pen = 0.5f * edge_style_penalty(ch, e, s, s_t);
+      float pen = 0.5f * (base > 0.0f ? lost_style_penalty(ch, e)
+                                      : edge_style_penalty(ch, e, s, s_t));
       if (pen_acc > pen) pen = pen_acc;
-      float w = worst > d ? worst : d;
-      if (w + pen >= best) continue; /* cannot beat what we have */
-      float leaf = leaf_value(ch, e->to, end, sp, sg);
-      float v = (w > leaf ? w : leaf) + pen;
+      float excess = (worst > d ? worst : d) - base;
+      if (excess + pen >= best) continue; /* cannot beat what we have */
+      float lv = leaf_value(ch, e->to, end, sp, sg, hw);
+      float v = (lv > excess ? lv : excess) + pen;
       if (v < best) best = v;
     }
     if (nat == SMGI_NONE) break;
@@ -184,22 +220,24 @@ static float look_value(const smg_character* ch, uint32_t node,
     smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
     float s_t = s + e->arc_length;
     float sp;
-    float d = track_error(ch, end.x, end.z, s_t, 0.5f * e->arc_length, &seg,
+    float d = track_error(ch, end.x, end.z, s_t,
+                          base > 0.0f ? INFINITY : 0.5f * e->arc_length, &seg,
                           &sp, NULL);
     if (d > worst) worst = d;
     /* the worst style mismatch along the way, not a sum: a long stretch
      * in the wrong style is no worse than a short one once the style
      * cannot follow the path at all */
-    float pe = 0.5f * edge_style_penalty(ch, e, s, s_t);
+    float pe = 0.5f * (base > 0.0f ? lost_style_penalty(ch, e)
+                                   : edge_style_penalty(ch, e, s, s_t));
     if (pe > pen_acc) pen_acc = pe;
     W = end;
     s = sp;
     frames_left -= (float)e->frame_count;
     node = e->to;
-    if (worst + pen_acc >= best) return best; /* only gets worse */
+    if (worst - base + pen_acc >= best) return best; /* only worse */
   }
-  float leaf = leaf_value(ch, node, W, s, seg);
-  float v = (worst > leaf ? worst : leaf) + pen_acc;
+  float lv = leaf_value(ch, node, W, s, seg, hw);
+  float v = (lv > worst - base ? lv : worst - base) + pen_acc;
   return v < best ? v : best;
 }
 
@@ -239,18 +277,26 @@ static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
     uint32_t sm = seg;
     float e_mid = track_error(ch, mx, mz, s + 0.5f * arc, 0.5f * arc, &sm,
                               &spm, NULL);
-    /* where this edge can lead within the look-ahead window */
+    /* where this edge can lead within the look-ahead window. On the path
+     * a sequence is worth the worse of its leaf and its largest error on
+     * the way; when the character is lost (far off the path) errors are
+     * counted from where the candidate leaves it, so the options still
+     * compare by where they lead back. */
+    float lost = start_error(ch, W, s, seg);
     uint32_t budget = SMGI_LOOK_BUDGET;
     float la = look_value(ch, e->to, end, sp, sg,
                           SMGI_SEARCH_SECONDS * ch->fps -
                               (float)e->frame_count,
-                          &budget);
+                          &budget, lost > LOST_DISTANCE ? e_end : 0.0f);
     out->work = 1u + (SMGI_LOOK_BUDGET - budget);
     err = e_end > e_mid ? e_end : e_mid;
-    score = e_end + 0.5f * e_mid + la;
+    /* lost: candidates last different times, so their own end errors are
+     * not comparable; the look-ahead ends all sequences at the same time */
+    score = lost > LOST_DISTANCE ? la : e_end + 0.5f * e_mid + la;
     out->s_end = sp;
     out->seg_end = sg;
-    out->pen = edge_style_penalty(ch, e, s, s_t);
+    out->pen = lost > LOST_DISTANCE ? lost_style_penalty(ch, e)
+                                    : edge_style_penalty(ch, e, s, s_t);
     score += out->pen;
   } else {
     float tx, tz;
@@ -329,15 +375,6 @@ static void tail_state(const smg_character* ch, uint32_t* node,
   *W = smgi_xf_mul(q->W, disp_of(e));
   *s = q->s_end;
   *seg = q->seg_end;
-}
-
-/* Distance of a planned ground position from the path point at s. */
-static float start_error(const smg_character* ch, smgi_xform2 W, float s,
-                         uint32_t seg) {
-  if (ch->path.count < 2u) return 0.0f;
-  float x, z;
-  smgi_path_eval(&ch->path, s, &seg, &x, &z, NULL);
-  return sqrtf((W.x - x) * (W.x - x) + (W.z - z) * (W.z - z));
 }
 
 float smgi_frames_ahead(const smg_character* ch) {
