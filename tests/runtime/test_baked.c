@@ -293,6 +293,51 @@ static void test_transition_and_splice(void** state) {
   smg_character_destroy(ch);
 }
 
+/* The evaluation's hardest case: run requested in the middle of a 4 m
+ * turn. CMU runs barely turn, so the character cannot hold the path while
+ * running; it must not run away either - it falls back to the most agile
+ * style until it is back (this used to drift 150+ m). */
+static void run_on_turn(ctx* c, int left) {
+  smg_character* ch = make(c, 0);
+  float xz[2 * 64];
+  uint32_t n = rt_turn_r(xz, 8.0f, 10.0f, left, 4.0f);
+  float len;
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+  smg_character_get_path_length(ch, &len);
+  assert_int_equal(smg_character_add_splice(ch, 0.15f * len, c->action, NULL),
+                   SMG_OK);
+  assert_int_equal(smg_character_add_transition(ch, 0.35f * len, c->run, NULL),
+                   SMG_OK);
+  assert_int_equal(smg_character_add_splice(ch, 0.55f * len, 0, NULL), SMG_OK);
+  assert_int_equal(smg_character_add_transition(ch, 0.75f * len, c->walk, NULL),
+                   SMG_OK);
+  float max_err = 0, mean = 0;
+  int frames = 0, reached = 0;
+  for (int i = 0; i < 60 * 60 && !reached; ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    smg_character_state s = get_state(ch);
+    if (s.path_error > max_err) max_err = s.path_error;
+    mean += s.path_error;
+    ++frames;
+    reached = (s.flags & SMG_STATE_PATH_END_REACHED) != 0;
+  }
+  mean /= (float)frames;
+  print_message("%s run on a %s turn: max err %.2f m, mean %.2f m, end "
+                "reached %s after %.1f s\n",
+                c->name, left ? "left" : "right", max_err, mean,
+                reached ? "yes" : "NO", (double)frames * DT);
+  assert_true(reached);
+  assert_true(max_err < 12.0f);
+  assert_true(mean < 4.0f);
+  smg_character_destroy(ch);
+}
+
+static void test_run_on_turn(void** state) {
+  ctx* c = need(state);
+  run_on_turn(c, 1);
+  run_on_turn(c, 0);
+}
+
 static void test_edits_every_frame(void** state) {
   ctx* c = need(state);
   smg_character* ch = make(c, 0);
@@ -376,6 +421,7 @@ int main(void) {
       cmocka_unit_test(test_turn_left),
       cmocka_unit_test(test_turn_right),
       cmocka_unit_test(test_transition_and_splice),
+      cmocka_unit_test(test_run_on_turn),
       cmocka_unit_test(test_edits_every_frame),
       cmocka_unit_test(test_threads),
   };
