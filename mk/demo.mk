@@ -96,8 +96,8 @@ TEST_TARGETS += test-demo
 demo-pictures: $(DEMO_BIN) $(BUILD)/smg-bake
 	$(demo_bake_cmu)
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/walk-run-punch.txt \
-	  --frames 480 --width 1280 --height 720 --screenshot docs/img/demo-walk-run-punch.png
+	  --frames 515 --width 1280 --height 720 --screenshot docs/img/demo-walk-run-punch.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/s-curve.txt \
-	  --frames 900 --width 1280 --height 720 --screenshot docs/img/demo-s-curve.png
+	  --frames 960 --width 1280 --height 720 --screenshot docs/img/demo-s-curve.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/crowd.txt \
-	  --characters 100 --frames 600 --width 1280 --height 720 --screenshot docs/img/demo-crowd.png
+	  --characters 100 --frames 540 --width 1280 --height 720 --screenshot docs/img/demo-crowd.png
