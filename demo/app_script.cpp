@@ -2,6 +2,7 @@
 #include "app.h"
 
 #include <cstdio>
+#include <cstring>
 
 namespace {
 
@@ -110,6 +111,39 @@ std::string apply(App& app, const ScriptCommand& c, bool* shot, std::string* sho
     uint32_t v = 0;
     if (!find_action(w, a[0], &v)) return "unknown action '" + a[0] + "' (this graph has: " + names(w, false) + ")";
     w.set_action_now(v);
+  } else if (c.verb == "mouse" || c.verb == "wheel" || c.verb == "key") {
+    // Synthetic input through the same handler as real SDL events, so
+    // scripts (and the smoke test) exercise drawing and picking by mouse.
+    SDL_Event e;
+    std::memset(&e, 0, sizeof e);
+    if (c.verb == "mouse") {
+      float x = 0, y = 0;
+      size_t at = a[0] == "move" ? 1 : 2;
+      parse_float(a[at], &x);
+      parse_float(a[at + 1], &y);
+      if (a[0] == "move") {
+        e.type = SDL_MOUSEMOTION;
+        e.motion.x = int(x);
+        e.motion.y = int(y);
+        e.motion.xrel = int(x - app.mouse.x);
+        e.motion.yrel = int(y - app.mouse.y);
+      } else {
+        e.type = a[0] == "down" ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+        e.button.button = Uint8(a[1] == "left" ? SDL_BUTTON_LEFT : a[1] == "right" ? SDL_BUTTON_RIGHT : SDL_BUTTON_MIDDLE);
+        e.button.x = int(x);
+        e.button.y = int(y);
+      }
+    } else if (c.verb == "wheel") {
+      parse_float(a[0], &f);
+      e.type = SDL_MOUSEWHEEL;
+      e.wheel.y = int(f);
+    } else {
+      e.type = SDL_KEYDOWN;
+      const std::string& k = a[0];
+      e.key.keysym.sym = k == "delete" ? SDLK_DELETE : k == "1" ? SDLK_1 : k == "2" ? SDLK_2 : k == "3" ? SDLK_3
+                         : k == "f" ? SDLK_f : k == "h" ? SDLK_h : SDLK_SPACE;
+    }
+    handle_event(app, e);
   } else if (c.verb == "screenshot") {
     *shot = true;
     *shot_path = a[0];

@@ -257,6 +257,15 @@ int run_headless(App& app) {
                 app.options.screenshot.c_str(), app.options.width, app.options.height, app.frame,
                 double(app.options.dt), int(app.world.characters().size()), app.step_us_avg);
   }
+  // What the drawing ended as: lets tests check scripted mouse edits.
+  std::printf("smg-demo: path %zu points, %.2f m; markers:", app.world.path().size(),
+              double(app.world.path().length()));
+  for (const Marker& m : app.world.markers()) {
+    bool t = m.kind == MarkerKind::Transition;
+    std::printf(" #%d %s %s @%.2f", m.uid, t ? "transition" : "splice",
+                t ? app.world.style_name(m.value) : app.world.action_name(m.value), double(m.arc_length));
+  }
+  std::printf("%s\n", app.world.markers().empty() ? " none" : "");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   target.destroy();
   if (app.world.error_count() > 0) {

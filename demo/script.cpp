@@ -72,6 +72,19 @@ std::string check(const ScriptCommand& c) {
   } else if (v == "tool") {
     if (a.size() != 1 || (a[0] != "draw" && a[0] != "transition" && a[0] != "splice"))
       return "tool needs draw, transition or splice";
+  } else if (v == "mouse") {
+    // mouse down|up left|right|middle X Y   /   mouse move X Y
+    bool button = a.size() == 4 && (a[0] == "down" || a[0] == "up") &&
+                  (a[1] == "left" || a[1] == "right" || a[1] == "middle") && all_floats(a, 2);
+    bool move = a.size() == 3 && a[0] == "move" && all_floats(a, 1);
+    if (!button && !move) return "mouse needs 'down|up left|right|middle X Y' or 'move X Y' (pixels)";
+  } else if (v == "wheel") {
+    if (a.size() != 1 || !parse_float(a[0], &f)) return "wheel needs a number of steps";
+  } else if (v == "key") {
+    static const char* keys[] = {"delete", "1", "2", "3", "f", "h", "space"};
+    bool known = false;
+    for (const char* k : keys) known = known || (a.size() == 1 && a[0] == k);
+    if (!known) return "key needs one of delete 1 2 3 f h space";
   } else if (v == "style" || v == "action" || v == "screenshot") {
     if (a.size() != 1) return v + " needs one argument";
   } else {

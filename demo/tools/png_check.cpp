@@ -4,7 +4,8 @@
 // path or the character fails. Prints what it counted.
 //
 // usage: smg-demo-pngcheck FILE --size W H [--path MIN] [--character MIN]
-//                          [--dark x0 y0 x1 y1 MAXMEAN]
+//                          [--colour R G B MIN]... [--dark x0 y0 x1 y1 MAXMEAN]
+// --colour counts pixels within 12 (sum of channel differences) of R G B.
 #include <stb_image.h>
 
 #include <cmath>
@@ -13,19 +14,27 @@
 #include <cstring>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace {
 
 // The flat (unlit) path colours of demo/palette.cpp: walk blue, run red.
 const int kPathColours[][3] = {{41, 107, 230}, {224, 41, 36}};
 
+bool near(const unsigned char* p, const int* c) {
+  return std::abs(p[0] - c[0]) + std::abs(p[1] - c[1]) + std::abs(p[2] - c[2]) <= 12;
+}
+
 bool is_path(const unsigned char* p) {
-  for (const auto& c : kPathColours) {
-    int d = std::abs(p[0] - c[0]) + std::abs(p[1] - c[1]) + std::abs(p[2] - c[2]);
-    if (d <= 12) return true;
-  }
+  for (const auto& c : kPathColours)
+    if (near(p, c)) return true;
   return false;
 }
+
+struct ColourRule {
+  int rgb[3];
+  long min = 0, count = 0;
+};
 
 // kSkinColour (0.93, 0.80, 0.62) under any white-light intensity keeps its
 // channel ratios; nothing else in the scene has them.
@@ -50,6 +59,7 @@ int main(int argc, char** argv) {
   }
   int want_w = -1, want_h = -1, min_path = -1, min_char = -1;
   int dark[5] = {-1, 0, 0, 0, 0};
+  std::vector<ColourRule> rules;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--size" && i + 2 < argc) {
@@ -59,6 +69,11 @@ int main(int argc, char** argv) {
       min_path = std::atoi(argv[++i]);
     } else if (a == "--character" && i + 1 < argc) {
       min_char = std::atoi(argv[++i]);
+    } else if (a == "--colour" && i + 4 < argc) {
+      ColourRule r;
+      for (int k = 0; k < 3; ++k) r.rgb[k] = std::atoi(argv[++i]);
+      r.min = std::atol(argv[++i]);
+      rules.push_back(r);
     } else if (a == "--dark" && i + 5 < argc) {
       for (int k = 0; k < 5; ++k) dark[k] = std::atoi(argv[++i]);
     } else {
@@ -84,6 +99,7 @@ int main(int argc, char** argv) {
     const unsigned char* p = px + i * 3;
     path += is_path(p);
     skin += is_skin(p);
+    for (ColourRule& r : rules) r.count += near(p, r.rgb);
     for (int c = 0; c < 3; ++c) {
       sum[c] += p[c];
       sum2[c] += double(p[c]) * p[c];
@@ -105,7 +121,10 @@ int main(int argc, char** argv) {
     std::printf(" dark_mean=%.1f", m);
     if (m > dark[4]) status = fail("the HUD region is not dark (ImGui panel missing?)");
   }
+  for (const ColourRule& r : rules) std::printf(" rgb(%d,%d,%d)=%ld", r.rgb[0], r.rgb[1], r.rgb[2], r.count);
   std::printf("\n");
+  for (const ColourRule& r : rules)
+    if (r.count < r.min) status = fail("too few pixels of a required colour");
   if (colours.size() < 50 || spread < 5.0) status = fail("picture is blank");
   if (min_path >= 0 && path < min_path) status = fail("too few path pixels: the path is not visible");
   if (min_char >= 0 && skin < min_char) status = fail("too few character pixels: the character is not visible");
