@@ -203,6 +203,46 @@ static void test_splice(void** state) {
   smg_character_destroy(plain);
 }
 
+/* Synchronization: the fixture's punch clip walks with a 30-frame gait
+ * cycle. Under walking (30-frame cycle) it plays at rate 1; under running
+ * (20-frame cycle) the time warp must play it 1.5 times faster so its
+ * support phases stay with the legs. */
+static void test_sync_rate(void** state) {
+  ctx* c = (ctx*)*state;
+  for (uint32_t style = 0; style < 2; ++style) {
+    smg_character_desc d;
+    smg_character* ch = NULL;
+    memset(&d, 0, sizeof d);
+    d.struct_size = sizeof d;
+    d.initial_style = style;
+    d.initial_action = 1;
+    assert_int_equal(smg_character_create(c->g, &d, &ch), SMG_OK);
+    float xz[2 * 61];
+    rt_line(xz, 61, 100.0f);
+    assert_int_equal(smg_character_set_path(ch, xz, 61), SMG_OK);
+    double sum = 0;
+    int n = 0;
+    for (int i = 0; i < 600; ++i) {
+      assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+      smg_character_state s = get_state(ch);
+      assert_int_equal(s.action, 1);
+      if (i >= 120) {
+        sum += s.sync_rate;
+        ++n;
+      }
+    }
+    double mean = sum / n;
+    print_message("%s with the walking punch: mean sync rate %.3f\n",
+                  style ? "running" : "walking", mean);
+    if (style == 0) {
+      assert_true(fabs(mean - 1.0) < 0.05);
+    } else {
+      assert_true(fabs(mean - 1.5) < 0.1);
+    }
+    smg_character_destroy(ch);
+  }
+}
+
 /* A path that changes every frame: a wobbling line ahead of the character,
  * alternately replaced and appended to, with a constraint moved around. */
 static void edit_frame(smg_character* ch, int i, float* xz) {
@@ -439,6 +479,7 @@ int main(void) {
       cmocka_unit_test(test_turn_right),
       cmocka_unit_test(test_transition),
       cmocka_unit_test(test_splice),
+      cmocka_unit_test(test_sync_rate),
       cmocka_unit_test(test_edit_every_frame),
       cmocka_unit_test(test_determinism),
       cmocka_unit_test(test_no_allocation_in_step),
