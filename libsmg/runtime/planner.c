@@ -1,17 +1,26 @@
 /*
- * planner.c - the paper's search (III.C.2), made incremental. From the last
- * planned node, every out-edge is scored by how well its precomputed motion
- * follows the path from the planned progress: the edge's ground
- * displacement (and a mid-edge root sample from FRMI, placed without any
- * forward kinematics) is compared with the path point the character should
- * reach after walking the edge's arc length, plus the heading error and a
- * style term from the derived hop counts. The greedy best is taken; when its
- * distance error exceeds the threshold, the planner backs up to the
- * previous planned node and takes its next-best edge, and so on (bounded).
+ * planner.c - the paper's search (III.C.2), made incremental.
+ *
+ * From the node where the plan ends, every out-edge is scored by how well
+ * its precomputed motion follows the path from the planned progress s:
+ *  - its end (the edge's ground displacement) and a mid-edge root sample
+ *    (FRMI root2d, placed without forward kinematics) against the path
+ *    near the arc length they should have reached (track_error: distance
+ *    by projection, plus a penalty for falling short in progress);
+ *  - a bounded look-ahead below it (look_value): the natural continuation
+ *    for SMGI_SEARCH_SECONDS, trying at every branch to leave it once,
+ *    leaves valued by the derived node_look table plus a heading error
+ *    towards a pursuit point on the path;
+ *  - a style term from the derived hop counts (edges in the wanted style
+ *    are free, others pay per hop still needed).
+ * The greedy best is taken; when its distance error exceeds the threshold
+ * the planner backs up to the previous planned node and tries its
+ * next-best edges, keeping an alternative only if it does better (bounded).
+ * A character far off the path ("lost") lets the wanted style yield to the
+ * most agile one and compares options by where they face and lead.
  * Work per call is bounded by a budget of edge evaluations (look-ahead
- * included); only when
- * the playhead would otherwise run out is the budget exceeded (by at most
- * the frames needed for this step).
+ * included); only when the playhead would otherwise run out is the budget
+ * exceeded (by at most the edges needed for this step).
  */
 #include <math.h>
 #include <string.h>
@@ -487,7 +496,6 @@ void smgi_replan(smg_character* ch) {
 
 smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
   const smg_graph* g = ch->graph;
-  const smgi_derived* dv = smgi_derived_of(g);
   uint32_t LN = g->data.lower_node_count;
   /* a node of the initial style with out-edges, chosen by the seed */
   uint32_t matches = 0;
@@ -512,7 +520,6 @@ smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
     for (uint32_t n = 0; n < LN && node == SMGI_NONE; ++n)
       if (g->data.lower_nodes[n].edge_count > 0) node = n;
   }
-  (void)dv;
   if (node == SMGI_NONE) return SMG_ERROR_BLOB_VALUE; /* no edges at all */
   cand c[SMGI_MAX_CANDIDATES];
   smgi_xform2 W = {x, z, smgi_wrap_angle(h)};
