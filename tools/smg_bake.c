@@ -4,6 +4,7 @@
  *   smg-bake -m MANIFEST -o OUT.smg [options]
  *   smg-bake --lower walk a.bvh --upper punch b.bvh -o OUT.smg [options]
  *   smg-bake --info FILE.smg
+ *   smg-bake --analyze FILE [--unit M] [--skip-tpose] [-v]
  *
  * The manifest format is docs/manifest.md; the stages are docs/baker.md.
  * Progress goes to stderr (a bar when stderr is a terminal, otherwise one
@@ -15,6 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "bake_analyze.h"
 #include "bake_manifest.h"
 #include "blob.h"
 #include "smg_bake.h"
@@ -25,6 +27,9 @@ static void usage(FILE* fp) {
       "usage: smg-bake -m MANIFEST -o OUT.smg [options]\n"
       "       smg-bake --lower STYLE FILE [--upper ACTION FILE ...] -o OUT.smg\n"
       "       smg-bake --info FILE.smg\n"
+      "       smg-bake --analyze CLIP [--unit M] [--skip-tpose] [-v]\n"
+      "                (foot strikes, stride period, forward/backward/\n"
+      "                sideways frame ranges for manifest frames=A-B)\n"
       "\n"
       "input:\n"
       "  -m, --manifest FILE    clip list (docs/manifest.md)\n"
@@ -291,6 +296,8 @@ int main(int argc, char** argv) {
     const char* file;
   } extra[256];
   uint32_t nextra = 0;
+  const char* analyze = NULL;
+  int verbose = 0;
 
   memset(&desc, 0, sizeof desc);
   memset(&ps, 0, sizeof ps);
@@ -310,6 +317,10 @@ int main(int argc, char** argv) {
     } else if (!strcmp(a, "--info")) {
       NEED(1);
       return info(v);
+    } else if (!strcmp(a, "--analyze")) {
+      NEED(1); analyze = v; ++i;
+    } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
+      verbose = 1;
     } else if (!strcmp(a, "-m") || !strcmp(a, "--manifest")) {
       NEED(1); manifest = v; ++i;
     } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
@@ -369,6 +380,15 @@ int main(int argc, char** argv) {
       return 2;
     }
 #undef NEED
+  }
+  if (analyze) {
+    err.message[0] = '\0';
+    r = smgb_analyze_file(analyze, unit, skip, frame_rate, verbose, stdout,
+                          &err);
+    if (r != SMG_OK)
+      fprintf(stderr, "smg-bake: %s\n", err.message[0] ? err.message
+                                                       : smg_result_string(r));
+    return r == SMG_OK ? 0 : 1;
   }
   if ((!manifest && nextra == 0) || !output) {
     usage(stderr);
