@@ -141,7 +141,7 @@ std::string apply(App& app, const ScriptCommand& c, bool* shot, std::string* sho
       e.type = SDL_KEYDOWN;
       const std::string& k = a[0];
       e.key.keysym.sym = k == "delete" ? SDLK_DELETE : k == "1" ? SDLK_1 : k == "2" ? SDLK_2 : k == "3" ? SDLK_3
-                         : k == "f" ? SDLK_f : k == "h" ? SDLK_h : SDLK_SPACE;
+                         : k == "f" ? SDLK_f : k == "h" ? SDLK_h : k == "f12" ? SDLK_F12 : SDLK_SPACE;
     }
     handle_event(app, e);
   } else if (c.verb == "screenshot") {

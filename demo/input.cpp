@@ -24,6 +24,7 @@ int pick_marker(const App& app, glm::vec2 mouse) {
   int best = 0;
   float best_d = 14.0f;
   int w = app.viewport_width(), h = app.viewport_height();
+  if (app.world.path().size() < 2) return 0;  // markers are not drawn then
   for (const Marker& m : app.world.markers()) {
     glm::vec3 base = marker_base(app.world, m), top = marker_top(m, base);
     glm::vec2 sa, sb;

@@ -163,7 +163,8 @@ void draw_scene(Renderer& r, const World& world, const SceneView& view) {
 
   // Markers: transitions are short poles in the new style's colour,
   // splices taller poles with a ball in the action's colour.
-  for (const Marker& m : world.markers()) {
+  // Markers live on the path; with no path (cleared) they wait unseen.
+  for (const Marker& m : world.path().size() < 2 ? std::vector<Marker>() : world.markers()) {
     glm::vec3 base = marker_base(world, m), top = marker_top(m, base);
     glm::vec3 col = m.kind == MarkerKind::Transition ? world.style_colour_of(m.value) : world.action_colour_of(m.value);
     bool sel = m.uid == view.selected_marker, hov = m.uid == view.hovered_marker;

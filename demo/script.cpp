@@ -81,10 +81,10 @@ std::string check(const ScriptCommand& c) {
   } else if (v == "wheel") {
     if (a.size() != 1 || !parse_float(a[0], &f)) return "wheel needs a number of steps";
   } else if (v == "key") {
-    static const char* keys[] = {"delete", "1", "2", "3", "f", "h", "space"};
+    static const char* keys[] = {"delete", "1", "2", "3", "f", "h", "space", "f12"};
     bool known = false;
     for (const char* k : keys) known = known || (a.size() == 1 && a[0] == k);
-    if (!known) return "key needs one of delete 1 2 3 f h space";
+    if (!known) return "key needs one of delete 1 2 3 f h space f12";
   } else if (v == "style" || v == "action" || v == "screenshot") {
     if (a.size() != 1) return v + " needs one argument";
   } else {
