@@ -39,7 +39,7 @@ test-fuzz: $(FUZZ_BIN)
 $(BUILD)/libfuzzer/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_SRC) $(BAKE_SRC) $(LIB_HDR) $(BAKE_HDR)
 	@command -v $(CLANG) >/dev/null || { echo "make fuzz-$*: needs clang (apt-get install clang); the standalone smoke run is make test-fuzz" >&2; exit 1; }
 	@mkdir -p $(dir $@)
-	$(CLANG) -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined $(CPPFLAGS_COMMON) -Ilibsmg/runtime -Ilibsmg/bake -Itests -Itests/fuzz \
+	$(CLANG) -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(CPPFLAGS_COMMON) -Ilibsmg/runtime -Ilibsmg/bake -Itests -Itests/fuzz \
 	  $< $(LIB_SRC) $(if $(filter fuzz_blob,fuzz_$*),,$(BAKE_SRC) $(BAKE_LDLIBS) -lpthread) -lm -o $@
 
 fuzz-%: $(BUILD)/libfuzzer/fuzz_% $(BUILD)/fuzz/fuzz_%
