@@ -59,6 +59,8 @@ struct App {
   // Timing shown in the HUD.
   double frame_ms = 0.0;         // wall-clock time per rendered frame (EMA)
   double step_us_avg = 0.0, step_us_max = 0.0;  // per character (EMA)
+  double step_us_sum = 0.0, step_us_worst = 0.0;  // over the whole run
+  long step_frames = 0;
   std::string status;            // last message for the user
 
   int viewport_width() const;
