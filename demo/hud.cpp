@@ -150,8 +150,18 @@ void draw_hud(App& app) {
         "Drag a marker to move it; right click or Delete removes it. Right drag: orbit, middle drag: pan, "
         "wheel: zoom. F: follow, Space: pause, H: hide this panel, F12: screenshot.");
   }
-  std::string err = app.world.last_error();
   if (!app.status.empty()) ImGui::TextWrapped("%s", app.status.c_str());
-  if (!err.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "runtime: %s", err.c_str());
+  // A runtime error stays on screen for a few seconds, then is cleared.
+  static std::string shown;
+  static double shown_since = 0.0;
+  const std::string& err = app.world.last_error();
+  if (err != shown) {
+    shown = err;
+    shown_since = ImGui::GetTime();
+  }
+  if (!err.empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "runtime: %s", err.c_str());
+    if (!app.headless && ImGui::GetTime() - shown_since > 6.0) app.world.clear_error();
+  }
   ImGui::End();
 }

@@ -325,7 +325,8 @@ bool World::move_marker(int uid, float s) {
     if (m.uid != uid) continue;
     m.arc_length = s;
     for (size_t i = 0; i < characters_.size() && i < m.ids.size(); ++i)
-      check(smg_character_move_constraint(characters_[i].handle, m.ids[i], clamp_to_path(characters_[i].handle, s)),
+      if (m.ids[i])  // 0: the runtime refused it for this character (respawn on a shorter path)
+        check(smg_character_move_constraint(characters_[i].handle, m.ids[i], clamp_to_path(characters_[i].handle, s)),
             "smg_character_move_constraint");
     return true;
   }
@@ -337,7 +338,8 @@ bool World::remove_marker(int uid) {
   for (size_t k = 0; k < markers_.size(); ++k) {
     if (markers_[k].uid != uid) continue;
     for (size_t i = 0; i < characters_.size() && i < markers_[k].ids.size(); ++i)
-      check(smg_character_remove_constraint(characters_[i].handle, markers_[k].ids[i]),
+      if (markers_[k].ids[i])
+        check(smg_character_remove_constraint(characters_[i].handle, markers_[k].ids[i]),
             "smg_character_remove_constraint");
     markers_.erase(markers_.begin() + long(k));
     return true;
