@@ -4,7 +4,7 @@
  *   smg-bake -m MANIFEST -o OUT.smg [options]
  *   smg-bake --lower walk a.bvh --upper punch b.bvh -o OUT.smg [options]
  *   smg-bake --info FILE.smg
- *   smg-bake --analyze FILE [--unit M] [--skip-tpose] [-v]
+ *   smg-bake --analyze FILE [--reference FILE] [--unit M] [--skip-tpose] [-v]
  *
  * The manifest format is docs/manifest.md; the stages are docs/baker.md.
  * Progress goes to stderr (a bar when stderr is a terminal, otherwise one
@@ -27,9 +27,11 @@ static void usage(FILE* fp) {
       "usage: smg-bake -m MANIFEST -o OUT.smg [options]\n"
       "       smg-bake --lower STYLE FILE [--upper ACTION FILE ...] -o OUT.smg\n"
       "       smg-bake --info FILE.smg\n"
-      "       smg-bake --analyze CLIP [--unit M] [--skip-tpose] [-v]\n"
-      "                (foot strikes, stride period, forward/backward/\n"
-      "                sideways frame ranges for manifest frames=A-B)\n"
+      "       smg-bake --analyze CLIP [--reference CLIP] [--unit M]\n"
+      "                [--skip-tpose] [-v]\n"
+      "                (foot strikes, stride period, planted-foot speed,\n"
+      "                forward/backward/sideways frame ranges for manifest\n"
+      "                frames=A-B; --reference retargets as a bake would)\n"
       "\n"
       "input:\n"
       "  -m, --manifest FILE    clip list (docs/manifest.md)\n"
@@ -296,7 +298,7 @@ int main(int argc, char** argv) {
     const char* file;
   } extra[256];
   uint32_t nextra = 0;
-  const char* analyze = NULL;
+  const char *analyze = NULL, *reference = NULL;
   int verbose = 0;
 
   memset(&desc, 0, sizeof desc);
@@ -319,6 +321,8 @@ int main(int argc, char** argv) {
       return info(v);
     } else if (!strcmp(a, "--analyze")) {
       NEED(1); analyze = v; ++i;
+    } else if (!strcmp(a, "--reference")) {
+      NEED(1); reference = v; ++i;
     } else if (!strcmp(a, "-v") || !strcmp(a, "--verbose")) {
       verbose = 1;
     } else if (!strcmp(a, "-m") || !strcmp(a, "--manifest")) {
@@ -383,8 +387,8 @@ int main(int argc, char** argv) {
   }
   if (analyze) {
     err.message[0] = '\0';
-    r = smgb_analyze_file(analyze, unit, skip, frame_rate, verbose, stdout,
-                          &err);
+    r = smgb_analyze_file(analyze, reference, unit, skip, frame_rate, verbose,
+                          stdout, &err);
     if (r != SMG_OK)
       fprintf(stderr, "smg-bake: %s\n", err.message[0] ? err.message
                                                        : smg_result_string(r));

@@ -31,6 +31,7 @@ void smgb_analysis_free(smgb_analysis* a) {
   free(a->speed);
   free(a->angle);
   free(a->dir);
+  free(a->heading);
   free(a->foot);
   memset(a, 0, sizeof *a);
 }
@@ -161,8 +162,9 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
   out->angle = calloc(n, sizeof *out->angle);
   out->dir = calloc(n, 1);
   out->foot = calloc((size_t)n * 4u, sizeof *out->foot);
+  out->heading = calloc(n, sizeof *out->heading);
   if (!out->contact || !out->phase || !out->speed || !out->angle ||
-      !out->dir || !out->foot) {
+      !out->dir || !out->foot || !out->heading) {
     smgb_analysis_free(out);
     r = SMG_ERROR_OUT_OF_MEMORY;
     goto done;
@@ -174,6 +176,10 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
                                 ((fr->flags & SMGI_FRAME_RIGHT_CONTACT) ? 2u
                                                                       : 0u));
     out->phase[f] = fr->phase;
+    out->heading[f] =
+        f ? out->heading[f - 1] +
+                (float)wrap_pi(fr->root2d[2] - (fr - 1)->root2d[2])
+          : fr->root2d[2];
   }
   feet(b, &b->clips[0], out);
   directions(b, &b->clips[0], max_angle, min_speed, out);
@@ -237,7 +243,31 @@ uint32_t smgb_analysis_ranges(const smgb_analysis* a, uint8_t dir,
   return n < cap ? n : cap;
 }
 
+double smgb_analysis_planted_speed(const smgb_analysis* a) {
+  double sum = 0.0;
+  uint32_t f, n = 0, s;
+  for (s = 0; s < 2; ++s)
+    for (f = 1; f + 1 < a->frame_count; ++f) {
+      uint8_t bit = s ? 2u : 1u;
+      if (!(a->contact[f - 1] & bit) || !(a->contact[f] & bit) ||
+          !(a->contact[f + 1] & bit))
+        continue;
+      sum += a->foot[(size_t)f * 4u + 2u * s + 1u];
+      ++n;
+    }
+  return n ? sum / (double)n : 0.0;
+}
+
 /* ---- report (smg-bake --analyze) ------------------------------------------ */
+
+static smg_result load_any(const char* path, float unit_scale, uint32_t skip,
+                           smgb_clip* out, smgb_error* err) {
+  size_t len = strlen(path);
+  if (len >= 4 && (strcmp(path + len - 4, ".bvh") == 0 ||
+                   strcmp(path + len - 4, ".BVH") == 0))
+    return smgb_bvh_load(path, unit_scale, skip, out, err);
+  return smgb_assimp_load(path, unit_scale, 0, out, err);
+}
 
 static int cmp_u32(const void* x, const void* y) {
   uint32_t a = *(const uint32_t*)x, b = *(const uint32_t*)y;
@@ -283,24 +313,37 @@ static uint32_t alternation_breaks(const uint32_t* l, uint32_t nl,
   return breaks;
 }
 
-smg_result smgb_analyze_file(const char* path, float unit_scale,
-                             uint32_t skip_first_frame, float frame_rate,
-                             int verbose, FILE* fp, smgb_error* err) {
+smg_result smgb_analyze_file(const char* path, const char* reference,
+                             float unit_scale, uint32_t skip_first_frame,
+                             float frame_rate, int verbose, FILE* fp,
+                             smgb_error* err) {
   static const char* const dir_names[4] = {"still", "forward", "backward",
                                            "sideways"};
   smgb_clip clip;
   smgb_analysis a;
   smg_result r;
   uint32_t *ls = NULL, *rs = NULL, nl, nr, f;
-  size_t len = strlen(path);
   uint8_t d;
   memset(&clip, 0, sizeof clip);
-  if (len >= 4 && (strcmp(path + len - 4, ".bvh") == 0 ||
-                   strcmp(path + len - 4, ".BVH") == 0))
-    r = smgb_bvh_load(path, unit_scale, skip_first_frame, &clip, err);
-  else
-    r = smgb_assimp_load(path, unit_scale, 0, &clip, err);
+  r = load_any(path, unit_scale, skip_first_frame, &clip, err);
   if (r != SMG_OK) return r;
+  if (reference) {
+    smgb_clip ref;
+    memset(&ref, 0, sizeof ref);
+    r = load_any(reference, unit_scale, skip_first_frame, &ref, err);
+    if (r == SMG_OK) {
+      fprintf(fp, "retargeted to the skeleton of %s (leg length %.3f m; "
+                  "the clip's own %.3f m)\n", reference,
+              (double)smgb_skeleton_leg_length(&ref.skeleton),
+              (double)smgb_skeleton_leg_length(&clip.skeleton));
+      r = smgb_clip_retarget(&clip, &ref.skeleton, err);
+    }
+    smgb_clip_free(&ref);
+    if (r != SMG_OK) {
+      smgb_clip_free(&clip);
+      return r;
+    }
+  }
   if (!(frame_rate > 0.0f)) frame_rate = 30.0f;
   r = smgb_analyze_clip(&clip, frame_rate, skip_first_frame ? 1u : 0u, 0.0f,
                         0.0f, &a, err);
@@ -327,6 +370,8 @@ smg_result smgb_analyze_file(const char* path, float unit_scale,
               "%.2f s, right %.2f s; left/right alternation breaks: %u\n",
           median_period(ls, nl, frame_rate), median_period(rs, nr, frame_rate),
           alternation_breaks(ls, nl, rs, nr));
+  fprintf(fp, "  planted-foot speed (mean over contact frames): %.3f m/s\n",
+          smgb_analysis_planted_speed(&a));
   fprintf(fp, "direction of travel (root ground velocity vs facing over +-0.3 "
               "s; forward < 35 deg, backward > 145 deg, moving > 0.3 m/s), "
               "runs >= 1 s:\n");
@@ -337,11 +382,14 @@ smg_result smgb_analyze_file(const char* path, float unit_scale,
       double v = 0.0;
       for (f = ranges[i][0]; f <= ranges[i][1]; ++f) v += a.speed[f];
       v /= (double)(ranges[i][1] - ranges[i][0] + 1);
-      fprintf(fp, "  %-8s frames=%u-%u  (working %u-%u, %.1f s, %.2f m/s)\n",
+      fprintf(fp, "  %-8s frames=%u-%u  (working %u-%u, %.1f s, %.2f m/s, "
+                  "turns %+.0f deg)\n",
               dir_names[d], smgb_analysis_file_frame(&a, ranges[i][0]),
               smgb_analysis_file_frame(&a, ranges[i][1]), ranges[i][0],
               ranges[i][1],
-              (ranges[i][1] - ranges[i][0] + 1) / (double)frame_rate, v);
+              (ranges[i][1] - ranges[i][0] + 1) / (double)frame_rate, v,
+              (a.heading[ranges[i][1]] - a.heading[ranges[i][0]]) * 180.0 /
+                  PI);
     }
   }
   if (verbose) {

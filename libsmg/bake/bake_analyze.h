@@ -32,6 +32,7 @@ typedef struct smgb_analysis {
   float* angle;          /* travel direction minus facing, radians, 0 =
                             forward, +-pi = backward, + = to the left */
   uint8_t* dir;          /* SMGB_DIR_* per frame */
+  float* heading;        /* root heading, radians, unwrapped over the clip */
   float* foot;           /* per frame, left then right: height of the lower
                             of ankle/toe above the clip's lowest, metres,
                             and that joint's horizontal speed, m/s */
@@ -62,11 +63,19 @@ uint32_t smgb_analysis_ranges(const smgb_analysis* a, uint8_t dir,
                               float min_seconds, uint32_t (*out)[2],
                               uint32_t cap);
 
-/* Load a clip file (BVH, else assimp), analyse it at frame_rate (0 = 30)
- * and print strikes, stride periods, alternation and direction ranges in
+/* Mean horizontal speed (m/s) of the planted feet (lower of ankle/toe)
+ * over frames labelled as contact on both sides of the step: foot skate as
+ * the labels see it. */
+double smgb_analysis_planted_speed(const smgb_analysis* a);
+
+/* Load a clip file (BVH, else assimp), optionally retarget it to the
+ * skeleton of `reference` (another clip file, same options; NULL = none)
+ * as a bake would, analyse it at frame_rate (0 = 30) and print strikes,
+ * stride periods, alternation, planted-foot speed and direction ranges in
  * file frames to fp; verbose adds a per-frame table. */
-smg_result smgb_analyze_file(const char* path, float unit_scale,
-                             uint32_t skip_first_frame, float frame_rate,
-                             int verbose, FILE* fp, smgb_error* err);
+smg_result smgb_analyze_file(const char* path, const char* reference,
+                             float unit_scale, uint32_t skip_first_frame,
+                             float frame_rate, int verbose, FILE* fp,
+                             smgb_error* err);
 
 #endif /* BAKE_ANALYZE_H */

@@ -11,13 +11,13 @@
  *  - Height of a joint is measured from its "ground", the 2nd percentile of
  *    its height over the clip (a robust minimum: one glitch frame cannot
  *    move it).
- *  - Speed is horizontal and one-sided: the smaller of the backward and
- *    forward differences, so the frame where a foot lands or lifts still
- *    counts as slow on its planted side, and a sampling step across the
- *    swing does not smear speed into the contact.
- *  - Speed limit scaled to the clip: contact_speed for fast locomotion,
- *    down to half of it for a clip that barely moves (in-place stepping),
- *    from the median root ground speed.
+ *  - Speed is horizontal, central difference. (The smaller one-sided
+ *    difference was tried: it keeps runners' landing frames but lengthens
+ *    every contact by a frame at each end; on the synthetic clips'
+ *    exact contacts it agreed on 90 % of foot-frames, central on 97 %.)
+ *  - Speed limit scaled to the motion: contact_speed where the root moves
+ *    at 1.5 m/s or faster, down to half of it where it stands (stepping in
+ *    place), from the root's ground speed over +-0.5 s.
  *  - Height limit from the clip's own distribution: the 75th percentile of
  *    the joint's height over its clearly slow frames (the planted band:
  *    heel or toe roll, marker noise) plus 1.5 cm, kept within
@@ -60,24 +60,17 @@ static double quantile(double* v, uint32_t n, double p) {
   return v[i < n ? i : n - 1];
 }
 
-/* Horizontal one-sided speed of joint j at clip frame f (m/s). */
+/* Horizontal speed of joint j at clip frame f (m/s), central difference
+ * (one-sided at the clip's ends). */
 static double joint_speed(const smgb_bake* b, const smgb_pool_clip* c,
                           uint32_t f, uint32_t j) {
-  double best = 1e30;
-  int side;
-  for (side = 0; side < 2; ++side) {
-    uint32_t g = side ? f + 1 : f - 1;
-    const float *a, *d;
-    double dx, dz, v;
-    if (side ? g >= c->first + c->count : f == c->first) continue;
-    a = jpos(b, f, j);
-    d = jpos(b, g, j);
-    dx = d[0] - a[0];
-    dz = d[2] - a[2];
-    v = sqrt(dx * dx + dz * dz) * b->opt.frame_rate;
-    if (v < best) best = v;
-  }
-  return best < 1e30 ? best : 0.0;
+  uint32_t f0 = f > c->first ? f - 1 : f;
+  uint32_t f1 = f + 1 < c->first + c->count ? f + 1 : f;
+  const float* a = jpos(b, f0, j);
+  const float* d = jpos(b, f1, j);
+  double dx = d[0] - a[0], dz = d[2] - a[2];
+  if (f1 == f0) return 0.0;
+  return sqrt(dx * dx + dz * dz) * b->opt.frame_rate / (double)(f1 - f0);
 }
 
 /* Speed limit per clip frame: half of contact_speed where the root stands
