@@ -1,11 +1,12 @@
 /* smg_gd_entry.c - the GDExtension entry point of libsmg_godot.so: loads the
- * interface and registers SmgGraph, SmgCharacter and SmgSkeletonModifier at the
- * SCENE level. */
+ * interface and registers SmgGraph, SmgCharacter, SmgSkeletonModifier and the .smg
+ * resource loader (SmgGraphLoader) at the SCENE level. */
 #include <stdio.h>
 
 #include "gd_api.h"
 #include "smg_gd_character.h"
 #include "smg_gd_graph.h"
+#include "smg_gd_loader.h"
 #include "smg_gd_modifier.h"
 
 static bool registered;
@@ -21,13 +22,15 @@ static void initialize(void *ud, GDExtensionInitializationLevel level) {
 	smg_gd_graph_register();
 	smg_gd_character_register();
 	smg_gd_modifier_register();
+	smg_gd_loader_register();
 	registered = true;
 }
 
 static void deinitialize(void *ud, GDExtensionInitializationLevel level) {
 	(void)ud;
 	if (level != GDEXTENSION_INITIALIZATION_SCENE || !registered) return;
-	smg_gd_modifier_unregister(); /* users of other classes first */
+	smg_gd_loader_unregister(); /* users of other classes first */
+	smg_gd_modifier_unregister();
 	smg_gd_character_unregister();
 	smg_gd_graph_unregister();
 	gd_api_deinit_scene();

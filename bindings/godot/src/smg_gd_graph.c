@@ -118,7 +118,7 @@ static int64_t load_blob(const char *path, smg_gd_blob **out) {
 /* Loads `path`; on failure the resource is left empty (not the old graph),
  * so what the inspector shows is what is loaded. Characters notice the
  * change on their next frame and rebuild on the new graph. */
-static int64_t graph_load(smg_gd_graph *self, const char *path) {
+int64_t smg_gd_graph_load(smg_gd_graph *self, const char *path) {
 	smg_gd_blob *nb = NULL;
 	int64_t err;
 	char *p = dup_cstr(path);
@@ -164,7 +164,7 @@ static void m_load(void *vself, const gd_value *a, gd_value *r) {
 		r->i = GD_ERR_INVALID_PARAMETER;
 		return;
 	}
-	r->i = graph_load(self, path);
+	r->i = smg_gd_graph_load(self, path);
 }
 
 static void m_set_blob_path(void *vself, const gd_value *a, gd_value *r) {
@@ -176,7 +176,7 @@ static void m_set_blob_path(void *vself, const gd_value *a, gd_value *r) {
 		return;
 	}
 	if (self->blob_path && !strcmp(self->blob_path, path) && (self->blob || !path[0])) return;
-	graph_load(self, path);
+	smg_gd_graph_load(self, path);
 }
 
 static void m_get_blob_path(void *vself, const gd_value *a, gd_value *r) {

@@ -31,6 +31,9 @@ smg_gd_graph *smg_gd_graph_from_object(GDExtensionObjectPtr obj);
 /* The graph currently loaded (borrowed; NULL when nothing is loaded). */
 smg_gd_blob *smg_gd_graph_blob(const smg_gd_graph *g);
 
+/* Loads path into g (see SmgGraph.load); returns a Godot Error code. */
+int64_t smg_gd_graph_load(smg_gd_graph *g, const char *path);
+
 /* A new Skeleton3D matching the graph's joints (names, parents, rest
  * offsets), or NULL with a Godot error. The caller owns the node. */
 GDExtensionObjectPtr smg_gd_graph_build_skeleton(smg_gd_graph *g);

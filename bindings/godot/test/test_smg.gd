@@ -9,7 +9,7 @@
 # to the number of checks planned here, plus the expected error messages.
 extends SceneTree
 
-const PLANNED := 52
+const PLANNED := 54
 const MAX_FRAMES := 600             # 20 s at 30 fps, the end comes well before
 # Metres between the root's ground projection and the path while following
 # it: the character is ~0.5 m wide and running turns wide.
@@ -106,6 +106,9 @@ func run() -> void:
 	check(nj > 1 and g.get_style_count() >= 1 and g.get_action_count() >= 1 and g.get_action_name(0) != "",
 		"graph info: %d joints, styles %s, actions %s" % [nj, g.get_style_names(), g.get_action_names()])
 	check(g.find_style(g.get_style_name(0)) == 0 and g.find_style("no such style") == -1, "find_style")
+	var as_res = load("res://default.smg")   # through SmgGraphLoader
+	check(as_res is SmgGraph and as_res.is_loaded() and as_res.get_joint_count() == nj
+		and ResourceLoader.exists("res://default.smg", "SmgGraph"), ".smg files load as SmgGraph resources")
 
 	# --- calls before a graph is set --------------------------------------
 	var lonely := SmgCharacter.new()
@@ -121,6 +124,9 @@ func run() -> void:
 	root.add_child(scene)
 	var c: SmgCharacter = scene.get_node("Character")
 	check(c.graph != null and c.graph.is_loaded() and is_equal_approx(c.error_threshold, 0.3), "scene properties loaded")
+	var fc: SmgCharacter = scene.get_node("FileGraphCharacter")
+	check(fc.graph != null and fc.graph.is_loaded() and fc.graph.resource_path == "res://default.smg",
+		"scene refers to a .smg file as an ext_resource")
 	c.graph = g                             # the same graph, shared with later characters
 	var sk: Skeleton3D = c.create_skeleton()
 	var names_ok := sk != null and sk.get_bone_count() == nj
