@@ -185,6 +185,20 @@ float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
   az = p->xz[2u * (from + k) - 1u];
   float best2 = INFINITY, best = INFINITY, s_best = 0.0f;
   uint32_t best_seg = 0;
+  if (!project) {
+    /* appending: copy and accumulate only (kept apart so this loop has no
+     * branch at all) */
+    for (; k < count; ++k) {
+      float bx = xz[2u * k], bz = xz[2u * k + 1u];
+      dst[2u * k] = bx;
+      dst[2u * k + 1u] = bz;
+      float dx = bx - ax, dz = bz - az;
+      acc += (double)sqrtf(dx * dx + dz * dz);
+      cum[k] = (float)acc;
+      ax = bx;
+      az = bz;
+    }
+  }
   for (; k < count; ++k) {
     float bx = xz[2u * k], bz = xz[2u * k + 1u];
     dst[2u * k] = bx;
@@ -193,19 +207,17 @@ float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
     float len = sqrtf(dx * dx + dz * dz);
     acc += (double)len;
     cum[k] = (float)acc;
-    if (project) {
-      float qx = px - ax, qz = pz - az;
-      float h = best + len;
-      if (qx * qx + qz * qz < h * h) {
-        float sd;
-        uint32_t sgi = from + k - 1u;
-        float d2 = seg_dist2(p, sgi, px, pz, &sd);
-        if (d2 < best2) {
-          best2 = d2;
-          best = sqrtf(d2);
-          s_best = sd;
-          best_seg = sgi;
-        }
+    float qx = px - ax, qz = pz - az;
+    float h = best + len;
+    if (qx * qx + qz * qz < h * h) {
+      float sd;
+      uint32_t sgi = from + k - 1u;
+      float d2 = seg_dist2(p, sgi, px, pz, &sd);
+      if (d2 < best2) {
+        best2 = d2;
+        best = sqrtf(d2);
+        s_best = sd;
+        best_seg = sgi;
       }
     }
     ax = bx;
