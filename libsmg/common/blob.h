@@ -12,8 +12,9 @@
 #include "smg.h"
 #include "smg_format.h"
 
-/* FNV-1a 64-bit hash (the payload checksum). */
-uint64_t smgi_fnv1a64(const void* data, size_t size);
+/* The payload checksum (SMG-WH64: FNV-1a steps on 64-bit little-endian
+ * words in four lanes; see checksum.c and docs/blob-format.md). */
+uint64_t smgi_blob_checksum(const void* data, size_t size);
 
 /* Serialise `graph` into one freshly allocated, 16-byte aligned buffer
  * (through `allocator`, NULL = malloc). Same input -> byte-identical output

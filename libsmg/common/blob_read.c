@@ -161,7 +161,7 @@ static smg_result read_header(reader* r, const unsigned char* base,
         "section table (%u entries) extends past the end of the blob",
         (unsigned)h->section_count);
   if (!(flags & SMG_GRAPH_SKIP_CHECKSUM)) {
-    uint64_t sum = smgi_fnv1a64(base + h->header_size,
+    uint64_t sum = smgi_blob_checksum(base + h->header_size,
                                 (size_t)(h->total_size - h->header_size));
     CHECK(sum == h->checksum, SMG_ERROR_BLOB_CHECKSUM,
           "payload checksum is 0x%016llx, header says 0x%016llx",

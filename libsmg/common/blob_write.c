@@ -126,7 +126,7 @@ smg_result smgi_blob_write(const smgi_graph_data* g,
   h.total_size = total;
   h.header_size = sizeof(smgi_blob_header);
   h.section_count = n;
-  h.checksum = smgi_fnv1a64(buf + sizeof h, (size_t)(total - sizeof h));
+  h.checksum = smgi_blob_checksum(buf + sizeof h, (size_t)(total - sizeof h));
   memcpy(buf, &h, sizeof h);
 
   res = smgi_blob_read(buf, (size_t)total, 0, &check, error, error_size);

@@ -38,7 +38,7 @@ typedef struct smgi_blob_header {
   uint64_t total_size;       /* whole blob, bytes, multiple of 16 */
   uint32_t header_size;      /* sizeof(smgi_blob_header) = 64 */
   uint32_t section_count;    /* entries in the table after the header */
-  uint64_t checksum;         /* FNV-1a 64 of bytes [header_size, total) */
+  uint64_t checksum;         /* SMG-WH64 of bytes [header_size, total) */
   uint32_t flags;            /* 0 */
   uint32_t reserved[5];      /* 0 */
 } smgi_blob_header;          /* 64 bytes */

@@ -54,7 +54,7 @@ static inline void* test_section_data(unsigned char* blob, uint32_t tag) {
 /* Recompute the payload checksum after an edit. */
 static inline void test_reseal(unsigned char* blob) {
   smgi_blob_header* h = test_header(blob);
-  h->checksum = smgi_fnv1a64(blob + h->header_size,
+  h->checksum = smgi_blob_checksum(blob + h->header_size,
                              (size_t)(h->total_size - h->header_size));
 }
 

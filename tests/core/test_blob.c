@@ -81,7 +81,7 @@ static void test_write_is_deterministic_and_aligned(void** state) {
   assert_int_equal(h->total_size, f->size);
   assert_int_equal(h->section_count, 13);
   assert_true(h->checksum ==
-              smgi_fnv1a64(f->blob + 64, f->size - 64));
+              smgi_blob_checksum(f->blob + 64, f->size - 64));
   /* every section 16-aligned, padding after it zero */
   for (i = 0; i < h->section_count; ++i) {
     const smgi_blob_section* s = &test_table(f->blob)[i];
@@ -92,12 +92,45 @@ static void test_write_is_deterministic_and_aligned(void** state) {
   }
 }
 
-static void test_fnv1a64_known_values(void** state) {
+/* Pinned values: a change here changes the blob format (bump the version). */
+static void test_checksum_known_values(void** state) {
+  unsigned char b[100];
+  int i;
   (void)state;
-  /* reference values of the FNV-1a 64 specification */
-  assert_true(smgi_fnv1a64("", 0) == 0xcbf29ce484222325ull);
-  assert_true(smgi_fnv1a64("a", 1) == 0xaf63dc4c8601ec8cull);
-  assert_true(smgi_fnv1a64("foobar", 6) == 0x85944171f73967e8ull);
+  for (i = 0; i < 100; ++i) b[i] = (unsigned char)(i * 37 + 11);
+  assert_true(smgi_blob_checksum("", 0) == 0x0c08816e3151c1c5ull);
+  assert_true(smgi_blob_checksum("a", 1) == 0xff51ede1e455281dull);
+  assert_true(smgi_blob_checksum("foobar", 6) == 0xb470d18c68c7d17aull);
+  assert_true(smgi_blob_checksum(b, 100) == 0x621af5f632fb9dedull);
+}
+
+/* Every single-bit flip changes the checksum, whichever path (32-byte
+ * blocks, 8-byte tail words, trailing bytes) hashes the flipped byte; so
+ * does swapping two words of different lanes or appending a zero byte. */
+static void test_checksum_detects_flips(void** state) {
+  unsigned char b[101];
+  uint64_t ref;
+  int i, bit;
+  (void)state;
+  for (i = 0; i < 101; ++i) b[i] = (unsigned char)(i * 91 + 7);
+  ref = smgi_blob_checksum(b, 101);
+  for (i = 0; i < 101; ++i)
+    for (bit = 0; bit < 8; ++bit) {
+      b[i] ^= (unsigned char)(1u << bit);
+      assert_true(smgi_blob_checksum(b, 101) != ref);
+      b[i] ^= (unsigned char)(1u << bit);
+    }
+  {
+    unsigned char w[64];
+    memcpy(w, b, 64);
+    memcpy(w, b + 8, 8);
+    memcpy(w + 8, b, 8);
+    assert_true(smgi_blob_checksum(w, 64) != smgi_blob_checksum(b, 64));
+  }
+  assert_true(smgi_blob_checksum(b, 64) != smgi_blob_checksum(b, 65) ||
+              b[64] != 0);
+  b[64] = 0;
+  assert_true(smgi_blob_checksum(b, 64) != smgi_blob_checksum(b, 65));
 }
 
 /* Blob contents equal the arrays they were written from, and writing the
@@ -844,7 +877,8 @@ static void test_planted_values(void** state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_fnv1a64_known_values),
+      cmocka_unit_test(test_checksum_known_values),
+      cmocka_unit_test(test_checksum_detects_flips),
       cmocka_unit_test_setup_teardown(test_write_is_deterministic_and_aligned,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_round_trip, setup, teardown),
