@@ -17,7 +17,9 @@
  *    evaluation does) has a baker strike within 4 frames (except in the
  *    last two frames, where a landing foot's speed is not known yet), and
  *    vice versa;
- *    the forward range of 09_12 is the one data/cmu.manifest uses.
+ *    the forward range of 09_12 is the one data/cmu.manifest uses; the
+ *    other subjects' walks it adds keep their feet planted after
+ *    retargeting to 09_12's skeleton.
  * Under SMG_TEST_QUICK (valgrind) only a few CMU clips are read.
  */
 #include <math.h>
@@ -337,6 +339,48 @@ static void test_cmu_06_10_matches_independent(void** state) {
   smgb_analysis_free(&a);
 }
 
+/* The straight walks data/cmu.manifest adds from other subjects survive the
+ * retargeting to 09_12's skeleton: the planted feet move no more than 25 %
+ * faster than in the clip's own skeleton (root translation scaled by leg
+ * length, rotations kept). */
+static void test_cmu_retargeted_walks_keep_feet_planted(void** state) {
+  static const char* const files[] = {"06_01.bvh", "02_01.bvh"};
+  const char* dir = bg_cmu_dir();
+  char path[1200];
+  smgb_clip ref;
+  smgb_error err;
+  uint32_t i;
+  (void)state;
+  if (!dir) {
+    skip();
+    return;
+  }
+  snprintf(path, sizeof path, "%s/09_12.bvh", dir);
+  assert_int_equal(smgb_bvh_load(path, CMU_UNIT, 1, &ref, &err), SMG_OK);
+  for (i = 0; i < sizeof files / sizeof files[0]; ++i) {
+    smgb_clip clip;
+    smgb_analysis own, re;
+    double v_own, v_re;
+    if (bg_quick() && i > 0) break;
+    snprintf(path, sizeof path, "%s/%s", dir, files[i]);
+    assert_int_equal(smgb_bvh_load(path, CMU_UNIT, 1, &clip, &err), SMG_OK);
+    assert_int_equal(smgb_analyze_clip(&clip, 30.0f, 1, 0.0f, 0.0f, &own, &err),
+                     SMG_OK);
+    assert_int_equal(smgb_clip_retarget(&clip, &ref.skeleton, &err), SMG_OK);
+    assert_int_equal(smgb_analyze_clip(&clip, 30.0f, 1, 0.0f, 0.0f, &re, &err),
+                     SMG_OK);
+    v_own = smgb_analysis_planted_speed(&own);
+    v_re = smgb_analysis_planted_speed(&re);
+    printf("%s: planted-foot speed %.3f m/s own skeleton, %.3f m/s on "
+           "09_12's\n", files[i], v_own, v_re);
+    assert_true(v_re < 1.25 * v_own && v_re < 0.15);
+    smgb_analysis_free(&own);
+    smgb_analysis_free(&re);
+    smgb_clip_free(&clip);
+  }
+  smgb_clip_free(&ref);
+}
+
 /* data/cmu.manifest's 09_12 range is what the analysis reports. */
 static void test_cmu_09_12_forward_range(void** state) {
   const char* dir = bg_cmu_dir();
@@ -365,6 +409,7 @@ int main(void) {
       cmocka_unit_test(test_synthetic_truth),
       cmocka_unit_test(test_cmu_strikes_alternate_and_periods),
       cmocka_unit_test(test_cmu_06_10_matches_independent),
+      cmocka_unit_test(test_cmu_retargeted_walks_keep_feet_planted),
       cmocka_unit_test(test_cmu_09_12_forward_range),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
