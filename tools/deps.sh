@@ -24,7 +24,9 @@ libgl1-mesa-dri   # software OpenGL (llvmpipe) for headless demo tests
 libglx-mesa0      # GLX for the above
 xvfb              # headless X server for demo/Godot tests
 xauth             # xvfb-run
-mmdebstrap        # building a bare Debian root to test .ci/run
+mmdebstrap        # Godot binding: builds the cached Debian sid root with Godot 4.6
+python3           # Godot binding: generates method-bind hashes from extension_api.json
+assimp-testmodels # baker tests: real FBX/glTF files (tests skip without it)
 '
 
 set -eu
