@@ -17,10 +17,13 @@ typedef struct smgi_xform2 {
 } smgi_xform2;
 
 static inline float smgi_wrap_angle(float a) {
-  /* into (-pi, pi]; inputs are small multiples of pi in practice */
-  while (a > SMGI_PI) a -= 2.0f * SMGI_PI;
-  while (a <= -SMGI_PI) a += 2.0f * SMGI_PI;
-  return a;
+  /* into (-pi, pi] in O(1): a loop subtracting 2 pi would take forever on
+   * a huge finite angle (a corrupt blob, a far-away path), and fmodf is
+   * exact. Non-finite input gives NaN, which callers' finite checks see. */
+  if (a > -SMGI_PI && a <= SMGI_PI) return a; /* the common case */
+  a = fmodf(a + SMGI_PI, 2.0f * SMGI_PI); /* (-2 pi, 2 pi) */
+  if (a <= 0.0f) a += 2.0f * SMGI_PI;     /* (0, 2 pi] */
+  return a - SMGI_PI;
 }
 
 /* Rotate a ground vector (x, z) by heading h: local +Z maps to forward. */

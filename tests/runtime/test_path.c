@@ -127,12 +127,38 @@ static void test_finite(void** state) {
   assert_true(smgi_all_finite(v, 0));
 }
 
+/* smgi_wrap_angle is O(1): huge finite angles (the blob fuzzer found a
+ * loop that never ended on them) come back in (-pi, pi] and equal to the
+ * input modulo 2 pi; small ones are unchanged. */
+static void test_wrap_angle(void** state) {
+  (void)state;
+  assert_true(smgi_wrap_angle(0.5f) == 0.5f);
+  assert_true(smgi_wrap_angle(SMGI_PI) == SMGI_PI);
+  assert_true(fabsf(smgi_wrap_angle(-SMGI_PI) - SMGI_PI) < 1e-5f);
+  assert_true(fabsf(smgi_wrap_angle(3.0f * SMGI_PI) - SMGI_PI) < 1e-5f);
+  assert_true(fabsf(smgi_wrap_angle(7.0f) - (7.0f - 2.0f * SMGI_PI)) < 1e-5f);
+  assert_true(fabsf(smgi_wrap_angle(-7.0f) + (7.0f - 2.0f * SMGI_PI)) < 1e-5f);
+  const float huge[] = {1e30f, -1e30f, 3.4e38f, -3.4e38f, 123456.7f, 1e9f};
+  for (size_t i = 0; i < sizeof huge / sizeof huge[0]; ++i) {
+    float w = smgi_wrap_angle(huge[i]);
+    assert_true(w > -SMGI_PI - 1e-6f && w <= SMGI_PI + 1e-6f);
+    /* same direction as the input (sin/cos agree up to float rounding of
+     * the input itself, which for 1e30 is already many turns) */
+    if (fabsf(huge[i]) < 1e6f) {
+      assert_true(fabsf(sinf(w) - sinf(huge[i])) < 1e-2f);
+      assert_true(fabsf(cosf(w) - cosf(huge[i])) < 1e-2f);
+    }
+  }
+  assert_true(isnan(smgi_wrap_angle(NAN)));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_lengths_and_eval),
       cmocka_unit_test(test_projection_matches_brute_force),
       cmocka_unit_test(test_local_projection),
       cmocka_unit_test(test_finite),
+      cmocka_unit_test(test_wrap_angle),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
