@@ -239,9 +239,13 @@ static void test_project_manifests(void** state) {
   if (cmu) {
     if (smgb_manifest_load("data/cmu.manifest", cmu, &m, &err) != SMG_OK)
       fail_msg("%s", err.message);
-    assert_int_equal(m.clip_count, 12);
+    /* 09_12 forward part (file frames 1-861), 06_01, 02_01, ten runs,
+     * punch */
+    assert_int_equal(m.clip_count, 14);
     assert_float_equal(m.frame_rate, 30.0f, 0.0f);
-    assert_int_equal(m.clips[11].role, SMG_BAKE_ROLE_UPPER);
+    assert_int_equal(m.clips[0].first_frame, 0);
+    assert_int_equal(m.clips[0].frame_count, 861);
+    assert_int_equal(m.clips[13].role, SMG_BAKE_ROLE_UPPER);
     smgb_manifest_free(&m);
     if (smgb_manifest_load("data/cmu-all.manifest", cmu, &m, &err) != SMG_OK)
       fail_msg("%s", err.message);
