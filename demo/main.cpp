@@ -9,7 +9,12 @@
 #include <SDL.h>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
+// Dear ImGui 1.88 renamed the SDL2 backend header; Debian 12 ships 1.86.
+#if __has_include(<imgui_impl_sdl2.h>)
+#include <imgui_impl_sdl2.h>
+#else
 #include <imgui_impl_sdl.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
