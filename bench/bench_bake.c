@@ -2,8 +2,8 @@
  * bench_bake.c - baker figures (make bench-bake). Prints, never fails on
  * time.
  *
- *  1. The paper-size CMU set (data/cmu.manifest: 09_12 walk forward and
- *     backward, the subject-09 runs, 02_05 punch; mirrored) baked end to
+ *  1. The paper-size CMU set (data/cmu.manifest: the forward part of 09_12
+ *     plus 06_01/02_01 walks, the subject-09 runs, 02_05 punch; mirrored) baked end to
  *     end, median of several runs, per stage beside the paper's single-core
  *     preprocessing times (lower graph 70 min, upper graph 10 min, splice
  *     search 30 min, internodal data 3 h), with wall and CPU time, peak
