@@ -109,4 +109,4 @@ demo-pictures: $(DEMO_BIN) $(BUILD)/smg-bake
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/s-curve.txt \
 	  --frames 960 --width 1280 --height 720 --screenshot docs/img/demo-s-curve.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/crowd.txt \
-	  --characters 100 --frames 540 --width 1280 --height 720 --screenshot docs/img/demo-crowd.png
+	  --characters 100 --frames 600 --width 1280 --height 720 --screenshot docs/img/demo-crowd.png
