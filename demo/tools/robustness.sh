@@ -1,7 +1,8 @@
 #!/bin/sh
 # robustness.sh - the demo must fail cleanly (clear message, non-zero exit,
 # never a crash) on a missing or corrupt graph, a zero-size window, no
-# OpenGL 3.3, and bad scripts. Part of `make test-demo`.
+# OpenGL 3.3, and bad scripts. Part of `make test-demo` (test_demo.sh runs
+# it with DISPLAY set to its Xvfb server).
 # usage: robustness.sh SMG_DEMO GOOD_BLOB SCRATCH_DIR
 set -u
 demo=$1
@@ -39,9 +40,8 @@ expect "zero width" 2 "width must be" "$demo" --graph "$blob" --width 0 $shot
 expect "zero height" 2 "height must be" "$demo" --graph "$blob" --height 0 $shot
 expect "bad script" 2 "bad-syntax.txt:1:" "$demo" --graph "$blob" --script "$dir/bad-syntax.txt"
 expect "unknown style" 1 "unknown style 'no-such-style'" \
-  xvfb-run -a "$demo" --graph "$blob" --script "$dir/bad-style.txt" --frames 3 --screenshot "$dir/robust.png"
-expect "no OpenGL 3.3" 1 "OpenGL 3.3" \
-  env MESA_GL_VERSION_OVERRIDE=3.0 xvfb-run -a "$demo" --graph "$blob" $shot
+  "$demo" --graph "$blob" --script "$dir/bad-style.txt" --frames 3 --screenshot "$dir/robust.png"
+expect "no OpenGL 3.3" 1 "OpenGL 3.3" env MESA_GL_VERSION_OVERRIDE=3.0 "$demo" --graph "$blob" $shot
 rm -f "$dir/garbage.smg" "$dir/truncated.smg" "$dir/bad-syntax.txt" "$dir/bad-style.txt" "$dir/robust.out" \
   "$dir/robust.err" "$dir/robust.png"
 [ "$failures" -eq 0 ] || { echo "robustness: $failures failure(s)"; exit 1; }
