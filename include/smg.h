@@ -281,7 +281,12 @@ SMG_API smg_result smg_character_clear_path(smg_character* character);
 SMG_API smg_result smg_character_get_path_length(
     const smg_character* character, float* out_length);
 
-/* --- Constraints at arc lengths along the path (ids are > 0). --- */
+/* --- Constraints at arc lengths along the path (ids are > 0). ---
+ * arc_length is metres from the path's first point and must lie within the
+ * current path, [0, smg_character_get_path_length()]; beyond the end, add
+ * and move return SMG_ERROR_OUT_OF_RANGE (place points along a path that is
+ * still being drawn once it has grown past them). Style/action indices not
+ * in the graph give SMG_ERROR_UNKNOWN_STYLE / SMG_ERROR_UNKNOWN_ACTION. */
 
 /* From `arc_length` on, the lower body uses locomotion `style`. */
 SMG_API smg_result smg_character_add_transition(smg_character* character,
