@@ -115,6 +115,77 @@ static void build_look(const smgi_graph_data* d, uint32_t* natural,
   }
 }
 
+/* The natural continuation of every node sampled every
+ * SMGI_TRAIL_STEP_SECONDS for SMGI_TRAIL_SAMPLES steps. */
+static void build_trail(const smgi_graph_data* d, const uint32_t* natural,
+                        float* trail, float* trail_frames,
+                        uint32_t* trail_edge) {
+  const uint32_t LN = d->lower_node_count, K = SMGI_TRAIL_SAMPLES;
+  const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
+  const float step = SMGI_TRAIL_STEP_SECONDS * fps;
+  for (uint32_t n = 0; n < LN; ++n) {
+    smgi_xform2 acc = {0.0f, 0.0f, 0.0f};
+    float arc = 0.0f, frames = 0.0f;
+    uint32_t cur = n, last = natural[n];
+    uint32_t e = natural[cur];
+    for (uint32_t k = 0; k < K; ++k) {
+      float want = step * (float)(k + 1u);
+      for (uint32_t hop = 0; hop < 1024u && frames < want; ++hop) {
+        e = natural[cur];
+        if (e == SMGI_NONE) break;
+        const smgi_edge* E = &d->lower_edges[e];
+        smgi_xform2 st = {E->displacement[0], E->displacement[1],
+                          E->displacement[2]};
+        acc = smgi_xf_mul(acc, st);
+        arc += E->arc_length;
+        frames += (float)E->frame_count;
+        cur = E->to;
+        last = e;
+      }
+      float* o = trail + 4u * ((size_t)n * K + k);
+      o[0] = acc.x;
+      o[1] = acc.z;
+      o[2] = acc.h;
+      o[3] = arc;
+      trail_frames[(size_t)n * K + k] = frames;
+      trail_edge[(size_t)n * K + k] = last;
+    }
+  }
+}
+
+/* node_turn by dynamic programming over frames: best[t][n] = the largest
+ * cumulative heading change (in direction `dir`) reached within t frames
+ * from n, 0 included (not turning yet). An edge longer than the time left
+ * counts in proportion. `scratch` holds (T + 1) * LN floats. */
+static void build_turn(const smgi_graph_data* d, float* scratch,
+                       float* node_turn) {
+  const uint32_t LN = d->lower_node_count;
+  const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
+  const uint32_t T = (uint32_t)(SMGI_TURN_SECONDS * fps + 0.5f);
+  for (uint32_t dir = 0; dir < 2u; ++dir) {
+    const float sg = dir == 0 ? 1.0f : -1.0f;
+    for (uint32_t n = 0; n < LN; ++n) scratch[n] = 0.0f;
+    for (uint32_t t = 1; t <= T; ++t) {
+      float* cur = scratch + (size_t)t * LN;
+      for (uint32_t n = 0; n < LN; ++n) {
+        const smgi_node* node = &d->lower_nodes[n];
+        float b = 0.0f;
+        for (uint32_t k = 0; k < node->edge_count; ++k) {
+          const smgi_edge* e = &d->lower_edges[node->first_edge + k];
+          float dh = sg * e->displacement[2];
+          float v = e->frame_count <= t
+                        ? dh + scratch[(size_t)(t - e->frame_count) * LN + e->to]
+                        : dh * (float)t / (float)e->frame_count;
+          if (v > b) b = v;
+        }
+        cur[n] = b;
+      }
+    }
+    for (uint32_t n = 0; n < LN; ++n)
+      node_turn[2u * n + dir] = scratch[(size_t)T * LN + n];
+  }
+}
+
 smg_result smgi_graph_derived_build(smg_graph* g) {
   if (!g) return SMG_ERROR_INVALID_ARGUMENT;
   const smgi_graph_data* d = &g->data;
@@ -130,7 +201,12 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_sn = off_af + align16(sizeof(uint32_t) * (size_t)A);
   size_t off_nl = off_sn + align16(sizeof(uint32_t) * (size_t)S);
   size_t off_nn = off_nl + align16(sizeof(float) * 4u * (size_t)LN);
-  size_t total = off_nn + align16(sizeof(uint32_t) * (size_t)LN);
+  const size_t TK = (size_t)LN * SMGI_TRAIL_SAMPLES;
+  size_t off_tr = off_nn + align16(sizeof(uint32_t) * (size_t)LN);
+  size_t off_tf = off_tr + align16(sizeof(float) * 4u * TK);
+  size_t off_te = off_tf + align16(sizeof(float) * TK);
+  size_t off_nt = off_te + align16(sizeof(uint32_t) * TK);
+  size_t total = off_nt + align16(sizeof(float) * 2u * (size_t)LN);
   size_t block = align16(sizeof(smgi_derived));
 
   uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 16);
@@ -146,6 +222,10 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* style_first = (uint32_t*)(base + off_sn);
   float* node_look = (float*)(base + off_nl);
   uint32_t* natural = (uint32_t*)(base + off_nn);
+  float* trail = (float*)(base + off_tr);
+  float* trail_frames = (float*)(base + off_tf);
+  uint32_t* trail_edge = (uint32_t*)(base + off_te);
+  float* node_turn = (float*)(base + off_nt);
 
   /* Scratch for the BFS: reverse adjacency of the larger graph. */
   uint32_t maxn = LN > UN ? LN : UN;
@@ -202,6 +282,23 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
       maxdeg = d->lower_nodes[n].edge_count;
 
   build_look(d, natural, node_look);
+  build_trail(d, natural, trail, trail_frames, trail_edge);
+  {
+    const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
+    size_t frames = (size_t)(SMGI_TURN_SECONDS * fps + 0.5f) + 1u;
+    float* tscr = (float*)smgi_alloc(&g->allocator,
+                                     sizeof(float) * frames * (LN ? LN : 1u), 16);
+    if (!tscr) {
+      smgi_free(&g->allocator, mem);
+      return SMG_ERROR_OUT_OF_MEMORY;
+    }
+    build_turn(d, tscr, node_turn);
+    smgi_free(&g->allocator, tscr);
+  }
+  dv->node_turn = node_turn;
+  dv->node_trail = trail;
+  dv->node_trail_frames = trail_frames;
+  dv->node_trail_edge = trail_edge;
 
   dv->lower_hops = lower_hops;
   dv->upper_hops = upper_hops;

@@ -15,6 +15,9 @@
 
 #define SMGI_HOPS_UNREACHABLE 255u
 #define SMGI_LOOK_SECONDS 0.7f
+#define SMGI_TRAIL_SAMPLES 4u      /* samples of a node's natural future */
+#define SMGI_TRAIL_STEP_SECONDS 0.5f
+#define SMGI_TURN_SECONDS 3.0f     /* horizon of node_turn */
 
 typedef struct smgi_derived {
   /* lower_hops[node * style_count + style]: number of edges to traverse
@@ -46,6 +49,22 @@ typedef struct smgi_derived {
    * motion (first_frame == the node's frame, not a transition), or
    * SMGI_NONE. */
   const uint32_t* natural_next;
+  /* node_trail[(node * SMGI_TRAIL_SAMPLES + k) * 4]: the natural
+   * continuation sampled every SMGI_TRAIL_STEP_SECONDS (at the first edge
+   * end past each step): dx, dz, dheading in the node's ground frame and
+   * the arc length; node_trail_frames the frames elapsed there (equal to
+   * the previous sample's when the continuation ended) and
+   * node_trail_edge the edge playing then. The planner's sequence search
+   * values what follows its last choice from this in O(1) per sample. */
+  const float* node_trail;
+  const float* node_trail_frames;
+  const uint32_t* node_trail_edge;
+  /* node_turn[2 * node]: the largest heading change to the left (+) and
+   * to the right (magnitude) that any edge sequence from the node reaches
+   * within SMGI_TURN_SECONDS - whether a turn is possible soon, beyond
+   * what the planner searches (a straight walking loop whose exits to
+   * turning clips are far away looks as good as any other until then). */
+  const float* node_turn;
   /* The style whose motion turns most tightly (heading change per metre of
    * its nodes' natural continuations): where a character that got far
    * off its path goes to get back (CMU runs, for one, barely turn). */

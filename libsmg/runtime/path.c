@@ -85,6 +85,8 @@ void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
   if (heading) *heading = segment_heading(p, i);
 }
 
+#define PROJECT_TIE 0.02f /* metres: nearer passes within this are ties */
+
 /* Squared distance from (x, z) to segment i and the arc length there. */
 static float seg_dist2(const smgi_path* p, uint32_t i, float x, float z,
                        float* s) {
@@ -213,7 +215,11 @@ float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
       float sd;
       uint32_t sgi = from + k - 1u;
       float d2 = seg_dist2(p, sgi, px, pz, &sd);
-      if (d2 < best2) {
+      /* a later segment must be nearer by more than PROJECT_TIE: where
+       * the path passes the character twice (a closed loop starts where
+       * it ends) progress is the earliest pass, not float noise's pick */
+      float t = best - PROJECT_TIE;
+      if (d2 < best2 && (best2 == INFINITY || (t > 0.0f && d2 < t * t))) {
         best2 = d2;
         best = sqrtf(d2);
         s_best = sd;

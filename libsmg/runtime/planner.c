@@ -28,14 +28,40 @@
 #include "character_internal.h"
 
 #define END_EPS 0.3f           /* metres from the end that count as there */
+#ifndef HEADING_WEIGHT
 #define HEADING_WEIGHT 0.4f    /* metres of error per radian */
+#endif
 #define STYLE_WEIGHT 3.0f      /* metres of penalty per hop to the style:
                                   style constraints dominate path error */
 #define END_SPEED_WEIGHT 0.5f  /* at the end prefer edges that travel less */
-#define PROGRESS_WEIGHT 1.0f   /* metres of error per metre of lost progress */
 #define LOST_DISTANCE 1.5f     /* off the path by more: style yields */
-#define HEADING_WEIGHT_LOST 2.0f /* metres per radian when lost */
-#define LOST_DISTANCE_WEIGHT 0.25f /* and distance counts less */
+#ifndef TRAVEL_WEIGHT
+#define TRAVEL_WEIGHT 0.3f     /* metres per radian of travel vs facing */
+#endif
+#ifndef PURSUIT_M
+#define PURSUIT_M 1.0f         /* heading aims this far ahead on the path */
+#endif
+#ifndef SEQ_SECONDS
+#define SEQ_SECONDS 2.0f       /* motion a candidate sequence covers */
+#endif
+#ifndef SEQ_BUDGET
+#define SEQ_BUDGET 256u        /* edge evaluations per ranking */
+#endif
+#ifndef SEQ_BRANCHES
+#define SEQ_BRANCHES 6u        /* choices searched below a candidate */
+#endif
+#ifndef TURN_WEIGHT
+#define TURN_WEIGHT 1.0f /* metres per radian of turn out of reach */
+#endif
+#define SEQ_MAX_DEPTH 48u
+#define SEQ_MAX_KIDS 8u
+#define SEQ_PATH_CAP 64u
+#ifndef SEQ_COMMIT_FRAMES
+#define SEQ_COMMIT_FRAMES 8.0f /* frames of the best sequence committed at once */
+#endif
+#ifndef SEQ_NO_BT
+#define SEQ_NO_BT 0
+#endif
 
 typedef struct cand {
   uint32_t edge;
@@ -109,230 +135,392 @@ static float lost_style_penalty(const smg_character* ch,
   return style_penalty(ch, e, smgi_derived_of(ch->graph)->agile_style);
 }
 
-/* How far a planned ground position is from following the path, given
- * that it should have progressed to arc length s_exp: its distance from
- * the path (nearest point near s_exp) plus a penalty when its progress
- * falls short of s_exp by more than a slack (looping, walking backwards).
- * Projection rather than "distance to the point at s_exp" lets a wide
- * turn cut a corner instead of being punished for it. Writes the
- * projected arc length and segment, and the tangent heading there. */
-static float track_error(const smg_character* ch, float x, float z,
-                         float s_exp, float slack, uint32_t* seg,
-                         float* s_proj, float* tangent) {
-  const smgi_path* p = &ch->path;
-  float px, pz, d;
-  smgi_path_eval(p, s_exp, seg, &px, &pz, NULL);
-  float sp = smgi_path_project_local(p, x, z, seg, &d);
-  float shortfall = s_exp - sp - slack;
-  if (shortfall > 0.0f) d += PROGRESS_WEIGHT * shortfall;
-  /* beyond the end: the overshoot counts as distance too */
-  if (s_exp > p->length) {
-    float ex = p->xz[2u * (p->count - 1u)] - x;
-    float ez = p->xz[2u * (p->count - 1u) + 1u] - z;
-    float de = sqrtf(ex * ex + ez * ez);
-    if (de > d) d = de;
+/* ---- sequence search (Kovar et al. 2002 path synthesis) ----------------
+ *
+ * A candidate is judged by the best sequence of edges starting with it
+ * that covers SEQ_SECONDS of motion. The error of a sequence is the mean,
+ * over root samples along it, of the distance between the motion's root
+ * after travelling arc length u and the path point at s0 + u, plus a
+ * heading term (facing vs the direction towards the path point a little
+ * further on, which is the tangent on the path and the way back off it)
+ * and a forward-walking term (direction of travel vs facing). Roots come
+ * from FRMI root2d placed with the edge's start transform (no FK). The
+ * tree of out-edge sequences is searched depth first with branch and
+ * bound under an edge-evaluation budget; every candidate first gets a
+ * dive along its natural continuation, so all have a complete value even
+ * when the budget ends the search early. */
+
+typedef struct seq_ctx {
+  const smg_character* ch;
+  float s0;          /* path arc length where the sequences start */
+  float T;           /* frames a sequence covers */
+  int following;     /* a path to follow from s0 on (else: stay near tx,tz) */
+  int lost;          /* far off the path: the agile style is wanted */
+  float tx, tz;      /* where to stay when not following */
+  uint32_t budget;   /* edge evaluations left */
+  uint32_t path[SEQ_PATH_CAP];      /* edges of the sequence being built */
+  uint32_t best_path[SEQ_PATH_CAP]; /* and of the best one so far */
+  uint32_t best_len;
+} seq_ctx;
+
+typedef struct seq_state {
+  uint32_t node;
+  smgi_xform2 W;     /* ground transform at the node */
+  float u;           /* arc length travelled since s0 */
+  float f;           /* frames covered */
+  float cost;        /* accumulated error (mean over the window) */
+  float pen;         /* worst style penalty on the way */
+  uint32_t seg;      /* path segment hint near s0 + u */
+} seq_state;
+
+/* Error of one root sample at (x, z) facing h, after arc u, having moved
+ * (mx, mz) since the previous sample over w frames. */
+static float sample_cost(const seq_ctx* c, float x, float z, float h,
+                         float u, float mx, float mz, float w,
+                         uint32_t* seg, float* dist) {
+  const smgi_path* p = &c->ch->path;
+  float m2 = mx * mx + mz * mz;
+  if (!c->following) {
+    float dx = x - c->tx, dz = z - c->tz;
+    float d = sqrtf(dx * dx + dz * dz);
+    *dist = d;
+    /* at the end prefer motion that travels least and, there being no
+     * idle clips, turns back towards the end point (circles around it
+     * instead of walking off) */
+    float sc = d + END_SPEED_WEIGHT * sqrtf(m2) * c->ch->fps /
+                       (w > 1.0f ? w : 1.0f);
+    if (d > END_EPS)
+      sc += HEADING_WEIGHT * fabsf(smgi_wrap_angle(h - atan2f(-dx, -dz)));
+    return sc;
   }
-  *s_proj = sp;
-  if (tangent) {
-    float tx, tz;
+  float sr = c->s0 + u, rx, rz;
+  smgi_path_eval(p, sr, seg, &rx, &rz, NULL);
+  float dx = x - rx, dz = z - rz;
+  float d = sqrtf(dx * dx + dz * dz);
+  *dist = d;
+  float sc = d;
+  if (sr < p->length) {
+    float qx, qz;
     uint32_t sg = *seg;
-    smgi_path_eval(p, sp, &sg, &tx, &tz, tangent);
+    smgi_path_eval(p, sr + PURSUIT_M + d, &sg, &qx, &qz, NULL);
+    float ax = qx - x, az = qz - z;
+    if (ax * ax + az * az > 1e-4f)
+      sc += HEADING_WEIGHT * fabsf(smgi_wrap_angle(h - atan2f(ax, az)));
   }
-  return d;
+  if (m2 > 1e-4f) sc += TRAVEL_WEIGHT * fabsf(smgi_wrap_angle(atan2f(mx, mz) - h));
+  return sc;
 }
 
-/* Value of standing at `node` with ground transform W and progress s:
- * where the node's natural continuation leads (derived node_look) against
- * the path further on, plus a heading error towards a pursuit point on
- * the path ahead (as far ahead as the character is off the path, at least
- * the look-ahead's length): on the path this is the tangent, off it the
- * direction that rejoins it. */
-static float leaf_value(const smg_character* ch, uint32_t node,
-                        smgi_xform2 W, float s, uint32_t seg, float hw) {
-  const float* look = smgi_derived_of(ch->graph)->node_look + 4u * node;
-  smgi_xform2 lk = {look[0], look[1], look[2]};
-  smgi_xform2 end = smgi_xf_mul(W, lk);
-  float sp;
-  /* lost: progress along the path means nothing until it is rejoined */
-  float slack = hw > HEADING_WEIGHT ? INFINITY : 0.5f * look[3];
-  float d = track_error(ch, end.x, end.z, s + look[3], slack, &seg, &sp,
-                        NULL);
-  float ahead = look[3] > d ? look[3] : d;
-  if (ahead < 0.5f) ahead = 0.5f;
-  float px, pz, th;
-  smgi_path_eval(&ch->path, sp + ahead, &seg, &px, &pz, &th);
-  float dx = px - end.x, dz = pz - end.z;
-  float want = dx * dx + dz * dz > 1e-4f ? atan2f(dx, dz) : th;
-  /* the further off the path, the more the way back matters */
-  float dh = fabsf(smgi_wrap_angle(end.h - want));
-  /* lost: options differ little in distance (all move away at running
-   * speed for the next second or two) but much in where they face */
-  if (hw > HEADING_WEIGHT) return LOST_DISTANCE_WEIGHT * d + hw * dh;
-  return d + hw * dh;
+/* Style penalty of an edge at arc lengths [a, b] of the path. */
+static float seq_pen(const seq_ctx* c, const smgi_edge* e, float a, float b) {
+  if (!c->following)
+    return 10.0f * style_penalty(c->ch, e, smgi_style_at(c->ch, c->s0));
+  if (c->lost) return lost_style_penalty(c->ch, e);
+  return edge_style_penalty(c->ch, e, a, b);
 }
 
-/* Bounded look-ahead below a candidate edge. Baked graphs can have edges
- * of two frames and nodes with one or two exits, so a one-edge greedy
- * choice cannot see that a turn becomes possible three edges later. This
- * walks the natural continuation (the original motion) for the next
- * `frames_left` frames and, at every branching node on the way, also
- * tries leaving it once (each exit judged by where its own natural
- * continuation leads, from the derived node_look table). The value is the
- * best, over these sequences, of the leaf's distance and heading error
- * plus how much further off the path the sequence gets on the way, plus
- * style penalties. Cost: about one edge
- * evaluation per natural edge plus two per alternative exit, capped by
- * *budget; deviations near the start are tried first, where they matter
- * most. */
-static float look_value(const smg_character* ch, uint32_t node,
-                        smgi_xform2 W, float s, uint32_t seg,
-                        float frames_left, uint32_t* budget, float base) {
-  const smg_graph* g = ch->graph;
-  const smgi_derived* dv = smgi_derived_of(g);
-  /* `worst` starts at the error the sequence starts from: only getting
-   * further off the path counts, so a character that is already off it
-   * (new path far away, a style that cannot turn) still compares its
-   * options by where they lead instead of all scoring the same */
-  float best = INFINITY, worst = base, pen_acc = 0.0f;
-  /* lost: which way the character faces decides how soon it is back */
-  const float hw = base > 0.0f ? HEADING_WEIGHT_LOST : HEADING_WEIGHT;
-  for (uint32_t hop = 0; hop < 64u; ++hop) {
-    const smgi_node* n = &g->data.lower_nodes[node];
-    uint32_t nat = dv->natural_next[node];
-    if (frames_left <= 0.0f || *budget == 0 || n->edge_count == 0) break;
-    /* leave the natural motion here */
-    for (uint32_t k = 0; k < n->edge_count && *budget > 0; ++k) {
-      uint32_t ei = n->first_edge + k;
-      if (ei == nat) continue;
-      *budget = *budget > 2u ? *budget - 2u : 0u;
-      const smgi_edge* e = &g->data.lower_edges[ei];
-      smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
-      float s_t = s + e->arc_length;
-      uint32_t sg = seg;
-      float sp;
-      float d = track_error(ch, end.x, end.z, s_t,
-                            base > 0.0f ? INFINITY : 0.5f * e->arc_length, &sg,
-                            &sp, NULL);
-      float pen = 0.5f * (base > 0.0f ? lost_style_penalty(ch, e)
-                                      : edge_style_penalty(ch, e, s, s_t));
-      if (pen_acc > pen) pen = pen_acc;
-      float excess = (worst > d ? worst : d) - base;
-      if (excess + pen >= best) continue; /* cannot beat what we have */
-      float lv = leaf_value(ch, e->to, end, sp, sg, hw);
-      float v = (lv > excess ? lv : excess) + pen;
-      if (v < best) best = v;
+/* Append edge `ei` to the sequence in `in`: root samples at the edge's
+ * middle (edges of 4+ frames) and end, each weighted by the frames it
+ * stands for inside the window. *maxd gets the largest sample distance. */
+static void seq_step(seq_ctx* c, const seq_state* in, uint32_t ei,
+                     float pen_scale, seq_state* out, float* maxd) {
+  const smg_graph* g = c->ch->graph;
+  const smgi_edge* e = &g->data.lower_edges[ei];
+  smgi_xform2 M = smgi_xf_mul(
+      in->W, smgi_xf_inv(ground_of(g, g->data.lower_nodes[e->from].frame)));
+  out->W = smgi_xf_mul(in->W, disp_of(e));
+  out->node = e->to;
+  out->seg = in->seg;
+  out->cost = in->cost;
+  const uint32_t fc = e->frame_count;
+  uint32_t ks[2];
+  uint32_t nk = 0;
+  if (fc >= 4u) ks[nk++] = fc / 2u;
+  ks[nk++] = fc;
+  float px = in->W.x, pz = in->W.z, kprev = 0.0f, md = 0.0f;
+  float room = c->T - in->f; /* frames left in the window */
+  for (uint32_t i = 0; i < nk; ++i) {
+    float k = (float)ks[i];
+    float w = (k < room ? k : room) - (kprev < room ? kprev : room);
+    if (w <= 0.0f) break;
+    float x, z, h;
+    if (ks[i] == fc) {
+      x = out->W.x;
+      z = out->W.z;
+      h = out->W.h;
+    } else {
+      const float* r = g->data.frames[e->first_frame + ks[i]].root2d;
+      smgi_xf_point(M, r[0], r[1], &x, &z);
+      h = M.h + r[2];
     }
-    if (nat == SMGI_NONE) break;
-    /* follow the natural motion one edge */
-    (*budget)--;
-    const smgi_edge* e = &g->data.lower_edges[nat];
-    smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
-    float s_t = s + e->arc_length;
-    float sp;
-    float d = track_error(ch, end.x, end.z, s_t,
-                          base > 0.0f ? INFINITY : 0.5f * e->arc_length, &seg,
-                          &sp, NULL);
-    if (d > worst) worst = d;
-    /* the worst style mismatch along the way, not a sum: a long stretch
-     * in the wrong style is no worse than a short one once the style
-     * cannot follow the path at all */
-    float pe = 0.5f * (base > 0.0f ? lost_style_penalty(ch, e)
-                                   : edge_style_penalty(ch, e, s, s_t));
-    if (pe > pen_acc) pen_acc = pe;
-    W = end;
-    s = sp;
-    frames_left -= (float)e->frame_count;
-    node = e->to;
-    if (worst - base + pen_acc >= best) return best; /* only worse */
+    float d;
+    float sc = sample_cost(c, x, z, h, in->u + e->arc_length * k / (float)fc,
+                           x - px, z - pz, k - kprev, &out->seg, &d);
+    out->cost += sc * w / c->T;
+    if (d > md) md = d;
+    px = x;
+    pz = z;
+    kprev = k;
   }
-  float lv = leaf_value(ch, node, W, s, seg, hw);
-  float v = (lv > worst - base ? lv : worst - base) + pen_acc;
-  return v < best ? v : best;
+  *maxd = md;
+  out->u = in->u + e->arc_length;
+  out->f = in->f + (float)fc;
+  float pe = pen_scale * seq_pen(c, e, c->s0 + in->u, c->s0 + out->u);
+  out->pen = in->pen > pe ? in->pen : pe;
+  if (!isfinite(out->cost)) out->cost = INFINITY;
 }
 
-static void evaluate(const smg_character* ch, smgi_xform2 W, float s,
-                     uint32_t seg, uint32_t edge_index, cand* out) {
-  const smg_graph* g = ch->graph;
-  const smgi_edge* e = &g->data.lower_edges[edge_index];
-  const smgi_path* p = &ch->path;
-  smgi_xform2 end = smgi_xf_mul(W, disp_of(e));
-  out->end = end;
-  out->edge = edge_index;
-  out->work = 1u;
-  out->seg_end = seg;
-  out->s_end = s;
+/* Value of a finished (or budget-cut) sequence: an unfinished one is
+ * extrapolated at its mean so far. */
+static float seq_value(const seq_ctx* c, const seq_state* st) {
+  float v = st->cost;
+  if (st->f < c->T && st->f > 0.0f) v *= c->T / st->f;
+  return v + st->pen;
+}
 
-  /* where the edge's natural continuation leads: judges an edge by the
-   * next SMGI_LOOK_SECONDS of motion, not only its own frames */
-  const float* look = smgi_derived_of(g)->node_look + 4u * e->to;
-  smgi_xform2 lk = {look[0], look[1], look[2]};
-  smgi_xform2 end2 = smgi_xf_mul(end, lk);
-  int following = p->count >= 2u && s < p->length - END_EPS;
-  float score, err;
-  if (following) {
-    float arc = e->arc_length;
-    float s_t = s + arc;
-    uint32_t sg = seg;
-    float sp;
-    float e_end = track_error(ch, end.x, end.z, s_t, 0.5f * arc, &sg, &sp,
-                              NULL);
-    /* mid-edge root sample, placed from FRMI without FK */
-    const smgi_node* from = &g->data.lower_nodes[e->from];
-    smgi_xform2 M = smgi_xf_mul(W, smgi_xf_inv(ground_of(g, from->frame)));
-    const float* r = g->data.frames[e->first_frame + e->frame_count / 2u]
-                         .root2d;
-    float mx, mz, spm;
-    smgi_xf_point(M, r[0], r[1], &mx, &mz);
-    uint32_t sm = seg;
-    float e_mid = track_error(ch, mx, mz, s + 0.5f * arc, 0.5f * arc, &sm,
-                              &spm, NULL);
-    /* where this edge can lead within the look-ahead window. On the path
-     * a sequence is worth the worse of its leaf and its largest error on
-     * the way; when the character is lost (far off the path) errors are
-     * counted from where the candidate leaves it, so the options still
-     * compare by where they lead back. */
-    float lost = start_error(ch, W, s, seg);
-    uint32_t budget = SMGI_LOOK_BUDGET;
-    float la = look_value(ch, e->to, end, sp, sg,
-                          SMGI_SEARCH_SECONDS * ch->fps -
-                              (float)e->frame_count,
-                          &budget, lost > LOST_DISTANCE ? e_end : 0.0f);
-    out->work = 1u + (SMGI_LOOK_BUDGET - budget);
-    err = e_end > e_mid ? e_end : e_mid;
-    /* lost: candidates last different times, so their own end errors are
-     * not comparable; the look-ahead ends all sequences at the same time */
-    score = lost > LOST_DISTANCE ? la : e_end + 0.5f * e_mid + la;
-    out->s_end = sp;
-    out->seg_end = sg;
-    out->pen = lost > LOST_DISTANCE ? lost_style_penalty(ch, e)
-                                    : edge_style_penalty(ch, e, s, s_t);
-    score += out->pen;
-  } else {
-    float tx, tz;
-    end_target(ch, &tx, &tz);
-    float dx = end.x - tx, dz = end.z - tz;
-    float lx = end2.x - tx, lz = end2.z - tz;
-    err = 0.0f; /* nothing to follow: never backtrack */
-    score = sqrtf(dx * dx + dz * dz) + sqrtf(lx * lx + lz * lz) +
-            END_SPEED_WEIGHT * (e->arc_length + look[3]);
-    /* nothing to follow: the asked-for style matters most */
-    out->pen = 10.0f * style_penalty(ch, e, smgi_style_at(ch, s));
-    score += out->pen;
+/* Value of a sequence that stops choosing at `st`: the node's natural
+ * continuation (derived node_trail, a few samples looked up, no edge
+ * walk) stands for the rest of the window, style included. */
+static float seq_leaf(seq_ctx* c, seq_state st) {
+  const smg_graph* g = c->ch->graph;
+  const smgi_derived* dv = smgi_derived_of(g);
+  const float* tr = dv->node_trail + 4u * (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const float* tf = dv->node_trail_frames + (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const uint32_t* te = dv->node_trail_edge + (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const float f0 = st.f, u0 = st.u;
+  float pf = 0.0f, pu = 0.0f, px = st.W.x, pz = st.W.z;
+  /* beyond the window: can the motion turn towards the path soon? The
+   * heading still missing once the node's best reachable turn (derived
+   * node_turn) is spent costs like a heading error */
+  if (c->following) {
+    const smgi_path* p = &c->ch->path;
+    float sr = c->s0 + st.u, rx, rz, qx, qz;
+    uint32_t sg = st.seg;
+    smgi_path_eval(p, sr, &sg, &rx, &rz, NULL);
+    float d = sqrtf((rx - st.W.x) * (rx - st.W.x) + (rz - st.W.z) * (rz - st.W.z));
+    smgi_path_eval(p, sr + PURSUIT_M + d, &sg, &qx, &qz, NULL);
+    float ax = qx - st.W.x, az = qz - st.W.z;
+    if (ax * ax + az * az > 1e-4f) {
+      float need = smgi_wrap_angle(atan2f(ax, az) - st.W.h);
+      const float* cap = dv->node_turn + 2u * st.node;
+      float rest = fabsf(need) - (need > 0.0f ? cap[0] : cap[1]);
+      if (rest > 0.0f) st.pen += TURN_WEIGHT * rest;
+    }
   }
-  out->score = isfinite(score) ? score : INFINITY;
-  out->err = err;
+  for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES && st.f < c->T; ++k) {
+    float fk = tf[k];
+    if (fk <= pf) break; /* the continuation ended */
+    float room = c->T - f0;
+    float w = (fk < room ? fk : room) - pf;
+    smgi_xform2 lk = {tr[4u * k], tr[4u * k + 1u], tr[4u * k + 2u]};
+    smgi_xform2 end = smgi_xf_mul(st.W, lk);
+    float d;
+    float sc = sample_cost(c, end.x, end.z, end.h, u0 + tr[4u * k + 3u],
+                           end.x - px, end.z - pz, fk - pf, &st.seg, &d);
+    st.cost += sc * w / c->T;
+    st.f = f0 + (fk < room ? fk : room);
+    if (te[k] != SMGI_NONE) {
+      const smgi_edge* e = &g->data.lower_edges[te[k]];
+      float pe = 0.5f * seq_pen(c, e, c->s0 + u0 + pu,
+                                c->s0 + u0 + tr[4u * k + 3u]);
+      if (pe > st.pen) st.pen = pe;
+    }
+    pf = fk;
+    pu = tr[4u * k + 3u];
+    px = end.x;
+    pz = end.z;
+  }
+  return seq_value(c, &st);
+}
+
+/* Depth-first branch and bound below `st`; *best is the bound. Branches
+ * at the next `branches` nodes with several exits (the early choices
+ * matter most; a node of one exit is no choice), then follows the natural
+ * continuation to the end of the window (seq_leaf values what is left
+ * when the graph or the budget ends first). */
+static void seq_dfs(seq_ctx* c, seq_state st, uint32_t branches,
+                    uint32_t depth, float* best) {
+  const smg_graph* g = c->ch->graph;
+  const smgi_derived* dv = smgi_derived_of(g);
+  for (uint32_t d = 0; d < SEQ_MAX_DEPTH && depth < SEQ_PATH_CAP; ++d) {
+    const smgi_node* n = &g->data.lower_nodes[st.node];
+    if (st.f >= c->T || n->edge_count == 0 || c->budget == 0) break;
+    uint32_t nat = dv->natural_next[st.node];
+    if (n->edge_count > 1u) {
+      if (branches == 0) break;
+      /* children cheapest first: good bounds early prune the most */
+      seq_state kids[SEQ_MAX_KIDS];
+      uint32_t kid_edge[SEQ_MAX_KIDS], nk = 0;
+      uint32_t cnt = n->edge_count < SEQ_MAX_KIDS ? n->edge_count : SEQ_MAX_KIDS;
+      for (uint32_t k = 0; k < cnt && c->budget > 0; ++k) {
+        uint32_t ei = n->first_edge + k;
+        seq_state nx;
+        float md;
+        c->budget--;
+        seq_step(c, &st, ei, 0.5f, &nx, &md);
+        if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
+        uint32_t i = nk++;
+        while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >
+                            nx.cost + nx.pen) {
+          kids[i] = kids[i - 1u];
+          kid_edge[i] = kid_edge[i - 1u];
+          --i;
+        }
+        kids[i] = nx;
+        kid_edge[i] = ei;
+      }
+      for (uint32_t i = 0; i < nk; ++i) {
+        if (kids[i].cost + kids[i].pen >= *best) break;
+        c->path[depth] = kid_edge[i];
+        seq_dfs(c, kids[i], branches - 1u, depth + 1u, best);
+      }
+      (void)nat;
+      return;
+    }
+    /* a single exit: no choice */
+    seq_state nx;
+    float md;
+    c->budget--;
+    seq_step(c, &st, n->first_edge, 0.5f, &nx, &md);
+    st = nx;
+    c->path[depth++] = n->first_edge;
+    if (st.cost + st.pen >= *best) return;
+  }
+  float v = seq_leaf(c, st);
+  if (v < *best) {
+    *best = v;
+    memcpy(c->best_path, c->path, sizeof(uint32_t) * depth);
+    c->best_len = depth;
+  }
+}
+
+static void seq_init(seq_ctx* c, const smg_character* ch, smgi_xform2 W,
+                     float s, uint32_t seg) {
+  c->ch = ch;
+  c->s0 = s;
+  c->T = SEQ_SECONDS * ch->fps;
+  c->following = ch->path.count >= 2u && s < ch->path.length - END_EPS;
+  c->lost = c->following && start_error(ch, W, s, seg) > LOST_DISTANCE;
+  end_target(ch, &c->tx, &c->tz);
+  c->budget = SEQ_BUDGET;
+}
+
+/* A committed edge's bookkeeping without a search: where it ends, the
+ * progress there and its distance error. */
+static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
+                      uint32_t seg, uint32_t ei, cand* x) {
+  const smgi_edge* e = &ch->graph->data.lower_edges[ei];
+  memset(x, 0, sizeof *x);
+  x->edge = ei;
+  x->end = smgi_xf_mul(W, disp_of(e));
+  x->s_end = s + e->arc_length;
+  x->seg_end = seg;
+  x->work = 1u;
+  if (ch->path.count >= 2u) {
+    float d;
+    uint32_t sg = seg;
+    float sp = smgi_path_project_local(&ch->path, x->end.x, x->end.z, &sg, &d);
+    x->s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
+    x->seg_end = sg;
+    if (s < ch->path.length - END_EPS) x->err = d;
+  }
 }
 
 /* Score all out-edges of `node` from (W, s, seg), sorted best first
  * (ties by edge index, so the order is deterministic). */
 static uint32_t rank_node(const smg_character* ch, uint32_t node,
-                          smgi_xform2 W, float s, uint32_t seg, cand* c) {
-  const smgi_node* n = &ch->graph->data.lower_nodes[node];
+                          smgi_xform2 W, float s, uint32_t seg, cand* c,
+                          uint32_t* seq, uint32_t* seq_len) {
+  const smg_graph* g = ch->graph;
+  const smgi_node* n = &g->data.lower_nodes[node];
   uint32_t count = n->edge_count < SMGI_MAX_CANDIDATES ? n->edge_count
                                                        : SMGI_MAX_CANDIDATES;
+  seq_ctx sc;
+  seq_init(&sc, ch, W, s, seg);
+  sc.best_len = 0;
+  seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
+  seq_state first[SMGI_MAX_CANDIDATES];
+  float best = INFINITY;
   for (uint32_t k = 0; k < count; ++k) {
-    cand x;
-    evaluate(ch, W, s, seg, n->first_edge + k, &x);
+    cand* x = &c[k];
+    uint32_t ei = n->first_edge + k;
+    const smgi_edge* e = &g->data.lower_edges[ei];
+    float md;
+    if (sc.budget > 0) sc.budget--;
+    seq_step(&sc, &root, ei, 1.0f, &first[k], &md);
+    x->edge = ei;
+    x->end = first[k].W;
+    (void)md;
+    x->err = 0.0f; /* nothing to follow: never back up */
+    x->pen = first[k].pen;
+    /* progress: where the edge's end projects, kept within what it
+     * travelled (a re-projection keeps the sequences' reference anchored
+     * to where the character actually is) */
+    uint32_t sg = seg;
+    float s_end = s + e->arc_length, d;
+    if (ch->path.count >= 2u) {
+      float sp = smgi_path_project_local(&ch->path, x->end.x, x->end.z, &sg,
+                                         &d);
+      s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
+      /* the paper's distance error (what the threshold is compared
+       * with): how far the edge leaves the character from the path */
+      if (sc.following) x->err = d;
+    }
+    x->s_end = s_end;
+    x->seg_end = sg;
+    x->score = seq_leaf(&sc, first[k]);
+    if (x->score < best) best = x->score;
+  }
+  /* then branch and bound, the most promising first; a candidate's score
+   * is the best sequence found below it (the look-up value above is only
+   * an estimate); one whose every sequence is pruned is worse than the
+   * best so far and keeps the bound plus its estimate, for ordering */
+  uint32_t order[SMGI_MAX_CANDIDATES];
+  for (uint32_t k = 0; k < count; ++k) {
+    uint32_t i = k;
+    while (i > 0 && c[order[i - 1u]].score > c[k].score) {
+      order[i] = order[i - 1u];
+      --i;
+    }
+    order[i] = k;
+  }
+  best = INFINITY;
+  uint32_t pool = sc.budget;
+  for (uint32_t i = 0; i < count && pool > 0; ++i) {
+    cand* x = &c[order[i]];
+    float b = best;
+    /* an equal share of what is left: a deep first subtree must not
+     * starve the others (they would keep their estimates) */
+    uint32_t share = pool / (count - i);
+    if (share == 0) share = 1;
+    sc.budget = share;
+    sc.path[0] = x->edge;
+    seq_dfs(&sc, first[order[i]], SEQ_BRANCHES, 1u, &b);
+    pool -= share - sc.budget;
+    if (b < best) {
+      x->score = b;
+      best = b;
+    } else if (isfinite(best)) {
+      x->score = best + x->score;
+    }
+  }
+  for (uint32_t k = 0; k < count; ++k) {
+    c[k].work = 1u;
+    if (!isfinite(c[k].score)) c[k].score = INFINITY;
+  }
+  c[0].work = SEQ_BUDGET - pool;
+  if (seq_len) {
+    /* the best sequence: the one the search found, or (when no search
+     * beat an estimate) just the best candidate, decided below */
+    *seq_len = 0;
+    if (sc.best_len > 0 && isfinite(best)) {
+      memcpy(seq, sc.best_path, sizeof(uint32_t) * sc.best_len);
+      *seq_len = sc.best_len;
+    }
+  }
+  /* sort best first */
+  for (uint32_t k = 1; k < count; ++k) {
+    cand x = c[k];
     uint32_t i = k;
     while (i > 0 && (c[i - 1u].score > x.score ||
                      (c[i - 1u].score == x.score && c[i - 1u].edge > x.edge))) {
@@ -410,17 +598,26 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
   ch->backtracks++;
   uint32_t from = g->data.lower_edges[last.edge].from;
   uint32_t seg = smgi_q_at(ch, ch->q_count - 2u)->seg_end;
-  uint32_t n = rank_node(ch, from, last.W, last.s_start, seg, c);
+  uint32_t n = rank_node(ch, from, last.W, last.s_start, seg, c, NULL, NULL);
   spend(budget, work_of(c, n));
-  uint32_t cur = last.rank < n ? last.rank : n - 1u;
+  /* the current choice in this ranking (an edge committed as part of a
+   * searched sequence need not rank first on its own) */
+  uint32_t cur = n;
+  for (uint32_t i = 0; i < n; ++i)
+    if (c[i].edge == last.edge) cur = i;
+  if (cur == n) return 0;
   uint32_t limit = n < SMGI_MAX_RANK ? n : SMGI_MAX_RANK;
   cand child[SMGI_MAX_CANDIDATES];
   uint32_t best_r = cur;
   float best_v = INFINITY;
-  for (uint32_t r = 0; r < limit; ++r) {
+  for (uint32_t i = 0; i <= limit; ++i) {
+    /* the best few, and the current choice wherever it ranks */
+    if (i == limit && cur < limit) break;
+    uint32_t r = i < limit ? i : cur;
     if (r != cur && c[r].pen > c[cur].pen) continue;
     uint32_t to = g->data.lower_edges[c[r].edge].to;
-    uint32_t m = rank_node(ch, to, c[r].end, c[r].s_end, c[r].seg_end, child);
+    uint32_t m = rank_node(ch, to, c[r].end, c[r].s_end, c[r].seg_end, child,
+                           NULL, NULL);
     spend(budget, work_of(child, m));
     float v = c[r].err;
     if (m > 0 && child[0].err > v) v = child[0].err;
@@ -433,7 +630,7 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
   ch->q_frames -= g->data.lower_edges[last.edge].frame_count;
   push(ch, last.W, last.s_start, &c[best_r], best_r, n);
   smgi_q_at(ch, ch->q_count - 1u)->rank = (uint16_t)SMGI_MAX_RANK; /* final */
-  return best_r != cur;
+  return c[best_r].edge != last.edge;
 }
 
 void smgi_plan(smg_character* ch, uint32_t budget, float min_frames) {
@@ -448,19 +645,36 @@ void smgi_plan(smg_character* ch, uint32_t budget, float min_frames) {
     smgi_xform2 W;
     float s;
     tail_state(ch, &node, &W, &s, &seg);
-    uint32_t n = rank_node(ch, node, W, s, seg, c);
+    uint32_t seq[SEQ_PATH_CAP], seq_len = 0;
+    uint32_t n = rank_node(ch, node, W, s, seg, c, seq, &seq_len);
     if (n == 0) return; /* dead end: playback holds the last frame */
     spend(&budget, work_of(c, n));
     /* Backtracking can only help when the planned state is itself on the
      * path: when the character is already off it (new path far away, or
      * unavoidable drift), no local choice fixes that and the greedy pick
      * steers back. */
-    if (c[0].err > ch->error_threshold &&
+    if (!SEQ_NO_BT && c[0].err > ch->error_threshold &&
         start_error(ch, W, s, seg) <= ch->error_threshold &&
         backtrack(ch, &budget))
       continue;
     push(ch, W, s, &c[0], 0, n);
     if (c[0].err <= ch->error_threshold) ch->backtracks = 0;
+    /* commit a little more of the best sequence at once (what its next
+     * rankings would most likely choose anyway): fewer searches per
+     * second of motion; each edge still faces the threshold */
+    if (seq_len > 1u && seq[0] == c[0].edge) {
+      float frames = (float)ch->graph->data.lower_edges[seq[0]].frame_count;
+      for (uint32_t j = 1; j < seq_len && frames < SEQ_COMMIT_FRAMES &&
+                           ch->q_count < SMGI_QUEUE_CAP; ++j) {
+        cand x;
+        tail_state(ch, &node, &W, &s, &seg);
+        if (ch->graph->data.lower_edges[seq[j]].from != node) break;
+        make_cand(ch, W, s, seg, seq[j], &x);
+        if (x.err > ch->error_threshold) break;
+        push(ch, W, s, &x, 0, 1);
+        frames += (float)ch->graph->data.lower_edges[seq[j]].frame_count;
+      }
+    }
   }
 }
 
@@ -471,7 +685,7 @@ void smgi_replan(smg_character* ch) {
     smgi_qentry h = *smgi_q_at(ch, 0);
     cand c[SMGI_MAX_CANDIDATES];
     uint32_t from = ch->graph->data.lower_edges[h.edge].from;
-    uint32_t n = rank_node(ch, from, h.W, ch->progress, ch->seg, c);
+    uint32_t n = rank_node(ch, from, h.W, ch->progress, ch->seg, c, NULL, NULL);
     ch->q_count = 0;
     ch->q_frames = 0;
     ch->backtracks = 0;
@@ -523,7 +737,7 @@ smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
   if (node == SMGI_NONE) return SMG_ERROR_BLOB_VALUE; /* no edges at all */
   cand c[SMGI_MAX_CANDIDATES];
   smgi_xform2 W = {x, z, smgi_wrap_angle(h)};
-  uint32_t n = rank_node(ch, node, W, ch->progress, ch->seg, c);
+  uint32_t n = rank_node(ch, node, W, ch->progress, ch->seg, c, NULL, NULL);
   ch->q_head = 0;
   ch->q_count = 0;
   ch->q_frames = 0;

@@ -9,6 +9,7 @@
 #include "character_internal.h"
 
 #define END_EPS 0.3f
+#define END_NEAR 1.0f /* metres from the last point that count as there */
 
 int smgi_q_locate(const smg_character* ch, uint32_t k, uint32_t* entry,
                   uint32_t* offset) {
@@ -42,8 +43,14 @@ static void update_progress(smg_character* ch) {
   } else {
     float ex = p->xz[2u * (p->count - 1u)] - ch->ground[0];
     float ez = p->xz[2u * (p->count - 1u) + 1u] - ch->ground[1];
-    ch->end_reached = ch->progress >= p->length - END_EPS ||
-                      ex * ex + ez * ez < END_EPS * END_EPS;
+    /* both: at the end of the path by progress (a closed path starts
+     * where it ends) and actually near its last point (a character that
+     * cut across to the last segment has not arrived). Latched until the
+     * path changes: there are no idle clips, so an arrived character
+     * keeps moving around the end point and would flicker. */
+    ch->end_reached = ch->end_reached ||
+                      (ch->progress >= p->length - END_EPS &&
+                       ex * ex + ez * ez < END_NEAR * END_NEAR);
   }
 }
 

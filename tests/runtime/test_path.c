@@ -82,14 +82,18 @@ static void test_projection_matches_brute_force(void** state) {
     float d1, d2;
     float s1 = smgi_path_load(&p, pts, 0, n, 1, qx, qz, &seg1, &d1);
     float s2 = smgi_path_project_global(&p, qx, qz, &seg2, &d2);
-    assert_float_equal(d1, d2, 1e-4f);
+    /* set_path keeps the earliest pass within 2 cm of the nearest (a
+     * closed loop starts where it ends): never nearer than brute force,
+     * never more than the tie margin further */
+    assert_true(d1 >= d2 - 1e-4f && d1 <= d2 + 0.02f + 1e-4f);
     if (fabsf(s1 - s2) > 1e-3f) {
       /* equally near points elsewhere are fine; the distance decides */
       float ex, ez;
       uint32_t sg = 0;
       smgi_path_eval(&p, s1, &sg, &ex, &ez, NULL);
       float dd = sqrtf((ex - qx) * (ex - qx) + (ez - qz) * (ez - qz));
-      assert_float_equal(dd, d2, 1e-3f);
+      assert_float_equal(dd, d1, 1e-3f);
+      assert_true(s1 <= s2 + 1e-3f); /* ties go to the earlier pass */
     }
   }
 }
