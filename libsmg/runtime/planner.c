@@ -35,6 +35,11 @@
                                   style constraints dominate path error */
 #define END_SPEED_WEIGHT 0.5f  /* at the end prefer edges that travel less */
 #define LOST_DISTANCE 1.5f     /* off the path by more: style yields */
+#define HEADING_WEIGHT_LOST 2.0f   /* metres per radian when lost */
+#ifndef YIELD_ERROR
+#define YIELD_ERROR 0.8f /* mean sequence error beyond which the style yields */
+#endif
+#define LOST_DISTANCE_WEIGHT 0.25f /* and distance counts less */
 #ifndef TRAVEL_WEIGHT
 #define TRAVEL_WEIGHT 0.3f     /* metres per radian of travel vs facing */
 #endif
@@ -57,7 +62,7 @@
 #define SEQ_MAX_KIDS 8u
 #define SEQ_PATH_CAP 64u
 #ifndef SEQ_COMMIT_FRAMES
-#define SEQ_COMMIT_FRAMES 8.0f /* frames of the best sequence committed at once */
+#define SEQ_COMMIT_FRAMES 12.0f /* frames of the best sequence committed at once */
 #endif
 #ifndef SEQ_NO_BT
 #define SEQ_NO_BT 0
@@ -69,6 +74,7 @@ typedef struct cand {
   uint32_t seg_end;
   smgi_xform2 end; /* ground transform after the edge */
   uint32_t work;    /* edge evaluations spent on it (look-ahead included) */
+  float seq_err;    /* path error part of its best sequence's value */
 } cand;
 
 static smgi_xform2 ground_of(const smg_graph* g, uint32_t frame) {
@@ -156,6 +162,9 @@ typedef struct seq_ctx {
   float T;           /* frames a sequence covers */
   int following;     /* a path to follow from s0 on (else: stay near tx,tz) */
   int lost;          /* far off the path: the agile style is wanted */
+  int yield;         /* the wanted style cannot follow: the agile one is */
+  float leaf_err;    /* path error part of the last seq_leaf value */
+  float best_err;    /* and of the best sequence found */
   float tx, tz;      /* where to stay when not following */
   uint32_t budget;   /* edge evaluations left */
   uint32_t path[SEQ_PATH_CAP];      /* edges of the sequence being built */
@@ -198,14 +207,19 @@ static float sample_cost(const seq_ctx* c, float x, float z, float h,
   float dx = x - rx, dz = z - rz;
   float d = sqrtf(dx * dx + dz * dz);
   *dist = d;
-  float sc = d;
+  /* lost (far off the path): options differ little in distance (all move
+   * away for the next second or two) but much in where they face; the
+   * way back is towards the path near where the character left it */
+  float sc = c->lost ? LOST_DISTANCE_WEIGHT * d : d;
   if (sr < p->length) {
     float qx, qz;
     uint32_t sg = *seg;
-    smgi_path_eval(p, sr + PURSUIT_M + d, &sg, &qx, &qz, NULL);
+    smgi_path_eval(p, sr + PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz,
+                   NULL);
     float ax = qx - x, az = qz - z;
     if (ax * ax + az * az > 1e-4f)
-      sc += HEADING_WEIGHT * fabsf(smgi_wrap_angle(h - atan2f(ax, az)));
+      sc += (c->lost ? HEADING_WEIGHT_LOST : HEADING_WEIGHT) *
+            fabsf(smgi_wrap_angle(h - atan2f(ax, az)));
   }
   if (m2 > 1e-4f) sc += TRAVEL_WEIGHT * fabsf(smgi_wrap_angle(atan2f(mx, mz) - h));
   return sc;
@@ -215,7 +229,7 @@ static float sample_cost(const seq_ctx* c, float x, float z, float h,
 static float seq_pen(const seq_ctx* c, const smgi_edge* e, float a, float b) {
   if (!c->following)
     return 10.0f * style_penalty(c->ch, e, smgi_style_at(c->ch, c->s0));
-  if (c->lost) return lost_style_penalty(c->ch, e);
+  if (c->lost || c->yield) return lost_style_penalty(c->ch, e);
   return edge_style_penalty(c->ch, e, a, b);
 }
 
@@ -298,7 +312,8 @@ static float seq_leaf(seq_ctx* c, seq_state st) {
     uint32_t sg = st.seg;
     smgi_path_eval(p, sr, &sg, &rx, &rz, NULL);
     float d = sqrtf((rx - st.W.x) * (rx - st.W.x) + (rz - st.W.z) * (rz - st.W.z));
-    smgi_path_eval(p, sr + PURSUIT_M + d, &sg, &qx, &qz, NULL);
+    smgi_path_eval(p, sr + PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz,
+                   NULL);
     float ax = qx - st.W.x, az = qz - st.W.z;
     if (ax * ax + az * az > 1e-4f) {
       float need = smgi_wrap_angle(atan2f(ax, az) - st.W.h);
@@ -330,7 +345,9 @@ static float seq_leaf(seq_ctx* c, seq_state st) {
     px = end.x;
     pz = end.z;
   }
-  return seq_value(c, &st);
+  float v = seq_value(c, &st);
+  c->leaf_err = v - st.pen;
+  return v;
 }
 
 /* Depth-first branch and bound below `st`; *best is the bound. Branches
@@ -389,6 +406,7 @@ static void seq_dfs(seq_ctx* c, seq_state st, uint32_t branches,
   float v = seq_leaf(c, st);
   if (v < *best) {
     *best = v;
+    c->best_err = c->leaf_err;
     memcpy(c->best_path, c->path, sizeof(uint32_t) * depth);
     c->best_len = depth;
   }
@@ -401,6 +419,8 @@ static void seq_init(seq_ctx* c, const smg_character* ch, smgi_xform2 W,
   c->T = SEQ_SECONDS * ch->fps;
   c->following = ch->path.count >= 2u && s < ch->path.length - END_EPS;
   c->lost = c->following && start_error(ch, W, s, seg) > LOST_DISTANCE;
+  c->yield = 0;
+  c->leaf_err = c->best_err = 0.0f;
   end_target(ch, &c->tx, &c->tz);
   c->budget = SEQ_BUDGET;
 }
@@ -428,9 +448,10 @@ static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
 
 /* Score all out-edges of `node` from (W, s, seg), sorted best first
  * (ties by edge index, so the order is deterministic). */
-static uint32_t rank_node(const smg_character* ch, uint32_t node,
+static uint32_t rank_pass(const smg_character* ch, uint32_t node,
                           smgi_xform2 W, float s, uint32_t seg, cand* c,
-                          uint32_t* seq, uint32_t* seq_len) {
+                          uint32_t* seq, uint32_t* seq_len, int yield,
+                          int* following) {
   const smg_graph* g = ch->graph;
   const smgi_node* n = &g->data.lower_nodes[node];
   uint32_t count = n->edge_count < SMGI_MAX_CANDIDATES ? n->edge_count
@@ -438,6 +459,8 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
   seq_ctx sc;
   seq_init(&sc, ch, W, s, seg);
   sc.best_len = 0;
+  sc.yield = yield;
+  *following = sc.following && !sc.lost;
   seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
   seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
@@ -469,6 +492,7 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
     x->s_end = s_end;
     x->seg_end = sg;
     x->score = seq_leaf(&sc, first[k]);
+    x->seq_err = sc.leaf_err;
     if (x->score < best) best = x->score;
   }
   /* then branch and bound, the most promising first; a candidate's score
@@ -497,8 +521,9 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
     sc.path[0] = x->edge;
     seq_dfs(&sc, first[order[i]], SEQ_BRANCHES, 1u, &b);
     pool -= share - sc.budget;
-    if (b < best) {
+    if (b < best) { /* found a better sequence below this candidate */
       x->score = b;
+      x->seq_err = sc.best_err;
       best = b;
     } else if (isfinite(best)) {
       x->score = best + x->score;
@@ -530,6 +555,23 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
     c[i] = x;
   }
   return count;
+}
+
+/* Rank the out-edges of `node`; when even the best sequence in the wanted
+ * style leaves the path by more than YIELD_ERROR on average (a run asked
+ * for where the path turns tighter than runs can), rank again letting the
+ * style yield to the most agile one - before the character is lost. */
+static uint32_t rank_node(const smg_character* ch, uint32_t node,
+                          smgi_xform2 W, float s, uint32_t seg, cand* c,
+                          uint32_t* seq, uint32_t* seq_len) {
+  int following;
+  uint32_t n = rank_pass(ch, node, W, s, seg, c, seq, seq_len, 0, &following);
+  if (n > 0 && following && c[0].seq_err > YIELD_ERROR &&
+      smgi_derived_of(ch->graph)->agile_style != smgi_style_at(ch, s)) {
+    n = rank_pass(ch, node, W, s, seg, c, seq, seq_len, 1, &following);
+    for (uint32_t i = 0; i < n; ++i) c[i].work = i == 0 ? 2u * SEQ_BUDGET : 0u;
+  }
+  return n;
 }
 
 /* Edge evaluations spent ranking n candidates: what the step budget

@@ -28,6 +28,7 @@
 #define RATE_MIN 0.5f
 #define RATE_MAX 2.0f
 #define SMOOTH 0.3f
+#define PHASE_LOCK 0.5f /* rate change per cycle of phase difference */
 
 static void features(const smg_graph* g, uint32_t frame, float* f) {
   const smgi_frame* fr = &g->data.frames[frame];
@@ -45,6 +46,50 @@ static float dist(const float* a, const float* b) {
   float d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2],
         d3 = a[3] - b[3];
   return d0 * d0 + d1 * d1 + d2 * d2 + d3 * d3;
+}
+
+/* Gait phase of the k-th lower frame ahead of the playhead (upper = 0)
+ * or of the k-th upper frame ahead (upper = 1); -1 when unknown. */
+static float phase_at(const smg_graph* g, const smg_character* ch,
+                      uint32_t k, int upper) {
+  if (!upper) {
+    uint32_t entry, offset;
+    if (!smgi_q_locate(ch, k, &entry, &offset)) return -1.0f;
+    const smgi_edge* e = &g->data.lower_edges[smgi_q_at_c(ch, entry)->edge];
+    return g->data.frames[e->first_frame + offset].phase;
+  }
+  const smgi_edge* ue = g->data.upper_edges;
+  uint32_t edge = ch->uedge, off = (uint32_t)ch->ut + k;
+  if (off >= ue[edge].frame_count) {
+    off -= ue[edge].frame_count;
+    edge = ch->unext;
+    if (off >= ue[edge].frame_count) return -1.0f;
+  }
+  return g->data.frames[ue[edge].first_frame + off].phase;
+}
+
+/* Mean phase advance per frame over the next `count` frames (cycles per
+ * frame), skipping unknown phases and jumps (graph transitions). */
+static int phase_speed(const smg_graph* g, const smg_character* ch,
+                       uint32_t count, int upper, float* out) {
+  float sum = 0.0f;
+  uint32_t used = 0;
+  float prev = phase_at(g, ch, 0, upper);
+  for (uint32_t k = 1; k < count; ++k) {
+    float p = phase_at(g, ch, k, upper);
+    if (p >= 0.0f && prev >= 0.0f) {
+      float d = p - prev;
+      d -= floorf(d); /* [0, 1): phase only moves forward */
+      if (d < 0.2f) {
+        sum += d;
+        ++used;
+      }
+    }
+    prev = p;
+  }
+  if (used < 2u || !(sum > 0.0f)) return 0;
+  *out = sum / (float)used;
+  return 1;
 }
 
 void smgi_sync_update(smg_character* ch) {
@@ -85,6 +130,31 @@ void smgi_sync_update(smg_character* ch) {
     ++off;
   }
   if (m < 3u) return;
+
+  /* With gait phase on both sides (FRMI), the rate is the ratio of their
+   * phase speeds - the upper cycle then takes as long as the lower one -
+   * with a gentle pull towards equal phase (Menardais et al.: the same
+   * support leg at the same time). The short windows below cannot see a
+   * whole cycle, and a warp over a fraction of a cycle mistook the
+   * 06_10 dribble (1.41 s cycle) over the 06_01 walk (1.23 s) for a rate
+   * of 0.8 instead of 1.14. */
+  {
+    float sl, su;
+    if (phase_speed(g, ch, n, 0, &sl) && phase_speed(g, ch, m, 1, &su) &&
+        su > 1e-4f) {
+      float pl = phase_at(g, ch, 0, 0), pu = phase_at(g, ch, 0, 1);
+      float rate = sl / su;
+      if (pl >= 0.0f && pu >= 0.0f) {
+        float dphi = pl - pu;
+        dphi -= floorf(dphi + 0.5f); /* (-0.5, 0.5] cycles */
+        rate *= 1.0f + PHASE_LOCK * dphi;
+      }
+      rate = smgi_clampf(rate, RATE_MIN, RATE_MAX);
+      ch->sync_rate += SMOOTH * (rate - ch->sync_rate);
+      ch->sync_rate = smgi_clampf(ch->sync_rate, RATE_MIN, RATE_MAX);
+      return;
+    }
+  }
 
   /* DTW with an open end on the upper side */
   float C[SMGI_SYNC_LOWER][SMGI_SYNC_UPPER];
