@@ -13,7 +13,7 @@
 #include "smg_format.h"
 
 /* The payload checksum (SMG-WH64: FNV-1a steps on 64-bit little-endian
- * words in four lanes; see checksum.c and docs/blob-format.md). */
+ * words in eight lanes; see checksum.c and docs/blob-format.md). */
 uint64_t smgi_blob_checksum(const void* data, size_t size);
 
 /* Serialise `graph` into one freshly allocated, 16-byte aligned buffer
