@@ -119,6 +119,10 @@ typedef struct cand {
                          0x80000000 | target label (label change) */
 } cand;
 
+/* Relative tolerance of the per-label-pair median ceiling (see
+ * select_candidates): costs within 5 % of the median count as equal. */
+#define MEDIAN_TOLERANCE 0.05f
+
 static int region_cmp(const void* pa, const void* pb) {
   const cand* a = pa;
   const cand* b = pb;
@@ -199,8 +203,17 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
         while (e < n && cands[e].li == cands[i].li &&
                cands[e].lj == cands[i].lj)
           ++e;
+        /* The median, widened by a small relative tolerance: periodic
+         * clips give dozens of minima of one and the same cost (a straight
+         * run against a turning run: every cycle matches every cycle
+         * equally well), and when the median falls on such a plateau a
+         * strict test lets float noise pick which few of them survive.
+         * Seen on the synthetic runs: 1 turning -> straight transition
+         * per 6 s clip instead of ~20, so a run that entered a turn could
+         * not straighten out for seconds. */
         if (cands[i].li < L && cands[i].lj < L)
-          ceiling[cands[i].li * L + cands[i].lj] = cands[i + (e - i - 1) / 2].m.dist;
+          ceiling[cands[i].li * L + cands[i].lj] =
+              cands[i + (e - i - 1) / 2].m.dist * (1.0f + MEDIAN_TOLERANCE);
         i = e;
       }
     }
@@ -453,9 +466,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
       /* pool frames are contiguous per clip: (clip, local frame / span) */
       cands[i].region = c0 * 65536u +
                         (ctx.map[mins[i].i] - b->clips[c0].first) / span;
-      cands[i].target = cands[i].li == cands[i].lj
-                            ? ctx.clip_of[mins[i].j]
-                            : 0x80000000u | cands[i].lj;
+      cands[i].target = ctx.clip_of[mins[i].j];
     }
   }
   /* Same-label transitions first; label changes (walk <-> run) are chosen
