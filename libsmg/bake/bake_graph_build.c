@@ -115,8 +115,9 @@ typedef struct cand {
   uint32_t li, lj;    /* labels */
   uint32_t ci, cj;    /* clips */
   uint32_t region;    /* source region: (clip, local frame / span) */
-  uint32_t target;    /* thinning group: target clip (same label) or
-                         0x80000000 | target label (label change) */
+  uint32_t target;    /* thinning group: target clip */
+  float best;         /* label changes: best cost of the source region
+                         into the same target label (select_candidates) */
 } cand;
 
 /* Relative tolerance of the per-label-pair median ceiling (see
@@ -232,6 +233,15 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
     keep = (uint32_t)ceil((e - i) * (double)b->opt.transition_percentile /
                           100.0);
     if (keep < 1) keep = 1;
+    if (keep > e - i) keep = e - i;
+    /* Ties at the percentile cut are all kept (same tolerance as the
+     * median): a turning run against the straight run has ~90 minima of
+     * one cost, and a cut through them kept a noise-picked third, which
+     * the region thinning below then left in only a few source regions. */
+    if (by_clip) {
+      float cut = cands[i + keep - 1].m.dist * (1.0f + MEDIAN_TOLERANCE);
+      while (i + keep < e && cands[i + keep].m.dist <= cut) ++keep;
+    }
     if (ceiling && cands[i].li < L && cands[i].lj < L)
       cap = ceiling[cands[i].li * L + cands[i].lj];
     if (b->opt.transition_threshold > 0.0f && b->opt.transition_threshold < cap)
@@ -250,6 +260,32 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
         cands[nk - 1].target == cands[t].target)
       continue;
     cands[nk++] = cands[t];
+  }
+  if (!by_clip) {
+    /* Label changes are few and costly: per source region keep only the
+     * target clips whose best candidate ties (within MEDIAN_TOLERANCE)
+     * with the region's best into the same label. A strict "best per
+     * target label" let float noise pick one target among equals: the
+     * synthetic straight walk then only ever entered the turning runs. */
+    uint32_t r0 = 0, out = 0;
+    while (r0 < nk) {
+      uint32_t r1 = r0, u, v;
+      while (r1 < nk && cands[r1].region == cands[r0].region) ++r1;
+      /* compacting in place: a candidate's group starts at or after
+       * `out`, so the group is read (best per label) before any write */
+      for (u = r0; u < r1; ++u) {
+        float best = cands[u].m.dist;
+        for (v = r0; v < r1; ++v)
+          if (cands[v].lj == cands[u].lj && cands[v].m.dist < best)
+            best = cands[v].m.dist;
+        cands[u].best = best;
+      }
+      for (u = r0; u < r1; ++u)
+        if (cands[u].m.dist <= cands[u].best * (1.0f + MEDIAN_TOLERANCE))
+          cands[out++] = cands[u];
+      r0 = r1;
+    }
+    nk = out;
   }
   return nk;
 }
