@@ -206,7 +206,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_tf = off_tr + align16(sizeof(float) * 4u * TK);
   size_t off_te = off_tf + align16(sizeof(float) * TK);
   size_t off_nt = off_te + align16(sizeof(uint32_t) * TK);
-  size_t total = off_nt + align16(sizeof(float) * 2u * (size_t)LN);
+  size_t off_em = off_nt + align16(sizeof(float) * 2u * (size_t)LN);
+  size_t total =
+      off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
   size_t block = align16(sizeof(smgi_derived));
 
   uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 16);
@@ -226,6 +228,19 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   float* trail_frames = (float*)(base + off_tf);
   uint32_t* trail_edge = (uint32_t*)(base + off_te);
   float* node_turn = (float*)(base + off_nt);
+  float* edge_mid = (float*)(base + off_em);
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    if (E->frame_count < 4u) continue;
+    const float* g0 = d->frames[d->lower_nodes[E->from].frame].root2d;
+    const float* r = d->frames[E->first_frame + E->frame_count / 2u].root2d;
+    smgi_xform2 inv = smgi_xf_inv((smgi_xform2){g0[0], g0[1], g0[2]});
+    float x, z;
+    smgi_xf_point(inv, r[0], r[1], &x, &z);
+    edge_mid[4u * e] = x;
+    edge_mid[4u * e + 1u] = z;
+    edge_mid[4u * e + 2u] = smgi_wrap_angle(inv.h + r[2]);
+  }
 
   /* Scratch for the BFS: reverse adjacency of the larger graph. */
   uint32_t maxn = LN > UN ? LN : UN;
@@ -296,6 +311,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
     smgi_free(&g->allocator, tscr);
   }
   dv->node_turn = node_turn;
+  dv->edge_mid = edge_mid;
   dv->node_trail = trail;
   dv->node_trail_frames = trail_frames;
   dv->node_trail_edge = trail_edge;

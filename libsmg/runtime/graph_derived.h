@@ -65,6 +65,12 @@ typedef struct smgi_derived {
    * what the planner searches (a straight walking loop whose exits to
    * turning clips are far away looks as good as any other until then). */
   const float* node_turn;
+  /* edge_mid[4 * edge] for lower edges of 4+ frames: the root's ground
+   * transform at frame frame_count / 2 relative to the edge's start (x, z,
+   * heading; 4th unused), i.e. inverse(ground(from.frame)) * ground(mid).
+   * The search places it with the same rotation as the edge's end
+   * instead of composing two transforms from two pose records. */
+  const float* edge_mid;
   /* The style whose motion turns most tightly (heading change per metre of
    * its nodes' natural continuations): where a character that got far
    * off its path goes to get back (CMU runs, for one, barely turn). */

@@ -108,6 +108,25 @@ static float fast_atan2(float y, float x) {
   return y < 0.0f ? -r : r;
 }
 
+/* smgi_path_eval without the call when the hint segment already holds s
+ * (almost every query of a search: samples advance a little at a time);
+ * same arithmetic, so the same result. */
+static inline void path_at(const smgi_path* p, float s, uint32_t* seg,
+                           float* x, float* z) {
+  uint32_t i = *seg;
+  if (p->count >= 2u && i + 1u < p->count && s >= p->cum[i] &&
+      s <= p->cum[i + 1u] && s <= p->length) {
+    float len = p->cum[i + 1u] - p->cum[i];
+    float u = len > 1e-9f ? (s - p->cum[i]) / len : 0.0f;
+    u = smgi_clampf(u, 0.0f, 1.0f);
+    const float* a = &p->xz[2u * i];
+    *x = a[0] + u * (a[2] - a[0]);
+    *z = a[1] + u * (a[3] - a[1]);
+    return;
+  }
+  smgi_path_eval(p, s, seg, x, z, NULL);
+}
+
 /* Where to stay when there is nothing (more) to follow. */
 static void end_target(const smg_character* ch, float* x, float* z) {
   const smgi_path* p = &ch->path;
@@ -222,7 +241,7 @@ static float sample_cost(const seq_ctx* c, float x, float z, float h,
     return sc;
   }
   float sr = c->s0 + u, rx, rz;
-  smgi_path_eval(p, sr, seg, &rx, &rz, NULL);
+  path_at(p, sr, seg, &rx, &rz);
   float dx = x - rx, dz = z - rz;
   float d = sqrtf(dx * dx + dz * dz);
   *dist = d;
@@ -233,8 +252,7 @@ static float sample_cost(const seq_ctx* c, float x, float z, float h,
   if (sr < p->length) {
     float qx, qz;
     uint32_t sg = *seg;
-    smgi_path_eval(p, sr + PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz,
-                   NULL);
+    path_at(p, sr + PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
     float ax = qx - x, az = qz - z;
     if (ax * ax + az * az > 1e-4f)
       sc += (c->lost ? HEADING_WEIGHT_LOST : HEADING_WEIGHT) *
@@ -259,7 +277,14 @@ static void seq_step(seq_ctx* c, const seq_state* in, uint32_t ei,
                      float pen_scale, seq_state* out, float* maxd) {
   const smg_graph* g = c->ch->graph;
   const smgi_edge* e = &g->data.lower_edges[ei];
-  out->W = smgi_xf_mul(in->W, disp_of(e));
+  /* one rotation places both the edge's end and its mid sample */
+  const float cw = cosf(in->W.h), sw = sinf(in->W.h);
+  {
+    const float* dp = e->displacement;
+    out->W.x = in->W.x + (cw * dp[0] + sw * dp[1]);
+    out->W.z = in->W.z + (-sw * dp[0] + cw * dp[1]);
+    out->W.h = smgi_wrap_angle(in->W.h + dp[2]);
+  }
   out->node = e->to;
   out->seg = in->seg;
   out->cost = in->cost;
@@ -280,14 +305,11 @@ static void seq_step(seq_ctx* c, const seq_state* in, uint32_t ei,
       z = out->W.z;
       h = out->W.h;
     } else {
-      /* the mid sample placed by the edge's start transform (only edges
-       * with one need it: two sincos saved on every short edge) */
-      smgi_xform2 M = smgi_xf_mul(
-          in->W,
-          smgi_xf_inv(ground_of(g, g->data.lower_nodes[e->from].frame)));
-      const float* r = g->data.frames[e->first_frame + ks[i]].root2d;
-      smgi_xf_point(M, r[0], r[1], &x, &z);
-      h = M.h + r[2];
+      /* the mid sample relative to the edge's start (derived edge_mid) */
+      const float* r = smgi_derived_of(g)->edge_mid + 4u * (size_t)ei;
+      x = in->W.x + (cw * r[0] + sw * r[1]);
+      z = in->W.z + (-sw * r[0] + cw * r[1]);
+      h = in->W.h + r[2];
     }
     float d;
     float sc = sample_cost(c, x, z, h, in->u + e->arc_length * k / (float)fc,
@@ -332,10 +354,9 @@ static float seq_leaf(seq_ctx* c, seq_state st) {
     const smgi_path* p = &c->ch->path;
     float sr = c->s0 + st.u, rx, rz, qx, qz;
     uint32_t sg = st.seg;
-    smgi_path_eval(p, sr, &sg, &rx, &rz, NULL);
+    path_at(p, sr, &sg, &rx, &rz);
     float d = sqrtf((rx - st.W.x) * (rx - st.W.x) + (rz - st.W.z) * (rz - st.W.z));
-    smgi_path_eval(p, sr + PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz,
-                   NULL);
+    path_at(p, sr + PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
     float ax = qx - st.W.x, az = qz - st.W.z;
     if (ax * ax + az * az > 1e-4f) {
       float need = smgi_wrap_angle(fast_atan2(ax, az) - st.W.h);
