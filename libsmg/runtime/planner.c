@@ -274,7 +274,8 @@ static float seq_pen(const seq_ctx* c, const smgi_edge* e, float a, float b) {
  * middle (edges of 4+ frames) and end, each weighted by the frames it
  * stands for inside the window. *maxd gets the largest sample distance. */
 static void seq_step(seq_ctx* c, const seq_state* in, uint32_t ei,
-                     float pen_scale, seq_state* out, float* maxd) {
+                     float pen_scale, float bound, seq_state* out,
+                     float* maxd) {
   const smg_graph* g = c->ch->graph;
   const smgi_edge* e = &g->data.lower_edges[ei];
   /* one rotation places both the edge's end and its mid sample */
@@ -316,6 +317,16 @@ static void seq_step(seq_ctx* c, const seq_state* in, uint32_t ei,
                            x - px, z - pz, k - kprev, &out->seg, &d);
     out->cost += sc * w / c->T;
     if (d > md) md = d;
+    if (out->cost + in->pen >= bound) {
+      /* already no better than the bound: costs and penalties only grow
+       * (every term is >= 0), so the caller prunes it either way */
+      *maxd = md;
+      out->cost = INFINITY;
+      out->pen = in->pen;
+      out->u = in->u + e->arc_length;
+      out->f = in->f + (float)fc;
+      return;
+    }
     px = x;
     pz = z;
     kprev = k;
@@ -339,7 +350,7 @@ static float seq_value(const seq_ctx* c, const seq_state* st) {
 /* Value of a sequence that stops choosing at `st`: the node's natural
  * continuation (derived node_trail, a few samples looked up, no edge
  * walk) stands for the rest of the window, style included. */
-static float seq_leaf(seq_ctx* c, seq_state st) {
+static float seq_leaf(seq_ctx* c, seq_state st, float bound) {
   const smg_graph* g = c->ch->graph;
   const smgi_derived* dv = smgi_derived_of(g);
   const float* tr = dv->node_trail + 4u * (size_t)st.node * SMGI_TRAIL_SAMPLES;
@@ -365,6 +376,9 @@ static float seq_leaf(seq_ctx* c, seq_state st) {
       if (rest > 0.0f) st.pen += TURN_WEIGHT * rest;
     }
   }
+  /* the value is at least cost + pen (an unfinished window only scales
+   * the cost up): once that reaches the bound the leaf cannot win */
+  if (st.cost + st.pen >= bound) return INFINITY;
   for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES && st.f < c->T; ++k) {
     float fk = tf[k];
     if (fk <= pf) break; /* the continuation ended */
@@ -383,6 +397,7 @@ static float seq_leaf(seq_ctx* c, seq_state st) {
                                 c->s0 + u0 + tr[4u * k + 3u]);
       if (pe > st.pen) st.pen = pe;
     }
+    if (st.cost + st.pen >= bound) return INFINITY;
     pf = fk;
     pu = tr[4u * k + 3u];
     px = end.x;
@@ -417,7 +432,7 @@ static void seq_dfs(seq_ctx* c, seq_state st, uint32_t branches,
         seq_state nx;
         float md;
         c->budget--;
-        seq_step(c, &st, ei, 0.5f, &nx, &md);
+        seq_step(c, &st, ei, 0.5f, *best, &nx, &md);
         if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
         uint32_t i = nk++;
         while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >
@@ -441,12 +456,12 @@ static void seq_dfs(seq_ctx* c, seq_state st, uint32_t branches,
     seq_state nx;
     float md;
     c->budget--;
-    seq_step(c, &st, n->first_edge, 0.5f, &nx, &md);
+    seq_step(c, &st, n->first_edge, 0.5f, *best, &nx, &md);
     st = nx;
     c->path[depth++] = n->first_edge;
     if (st.cost + st.pen >= *best) return;
   }
-  float v = seq_leaf(c, st);
+  float v = seq_leaf(c, st, *best);
   if (v < *best) {
     *best = v;
     c->best_err = c->leaf_err;
@@ -513,7 +528,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
     const smgi_edge* e = &g->data.lower_edges[ei];
     float md;
     if (sc.budget > 0) sc.budget--;
-    seq_step(&sc, &root, ei, 1.0f, &first[k], &md);
+    seq_step(&sc, &root, ei, 1.0f, INFINITY, &first[k], &md);
     x->edge = ei;
     x->end = first[k].W;
     (void)md;
@@ -534,7 +549,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
     }
     x->s_end = s_end;
     x->seg_end = sg;
-    x->score = seq_leaf(&sc, first[k]);
+    x->score = seq_leaf(&sc, first[k], INFINITY);
     x->seq_err = sc.leaf_err;
     if (x->score < best) best = x->score;
   }
