@@ -127,6 +127,25 @@ static inline void path_at(const smgi_path* p, float s, uint32_t* seg,
   smgi_path_eval(p, s, seg, x, z, NULL);
 }
 
+/* (x, z) = the end point moved `beyond` metres further along the path's
+ * last non-degenerate segment (unchanged for a one-point path). */
+static void extend_past_end(const smgi_path* p, float beyond, float* x,
+                            float* z) {
+  const float* e = &p->xz[2u * (p->count - 1u)];
+  uint32_t i = p->count - 1u;
+  while (i > 0u) {
+    const float* a = &p->xz[2u * (i - 1u)];
+    float dx = e[0] - a[0], dz = e[1] - a[1], l2 = dx * dx + dz * dz;
+    if (l2 > 1e-8f) {
+      float k = beyond / sqrtf(l2);
+      *x = e[0] + k * dx;
+      *z = e[1] + k * dz;
+      return;
+    }
+    --i;
+  }
+}
+
 /* Where to stay when there is nothing (more) to follow. */
 static void end_target(const smg_character* ch, float* x, float* z) {
   const smgi_path* p = &ch->path;
@@ -242,6 +261,12 @@ static float sample_cost(const seq_ctx* c, float x, float z, float h,
   }
   float sr = c->s0 + u, rx, rz;
   path_at(p, sr, seg, &rx, &rz);
+  /* Past the end the path goes on along its last direction. Clamping the
+   * target to the end point made any sequence that carries on beyond it
+   * look "off the path", so near the end a fast style (a run covering 6 m
+   * in the look-ahead) yielded to walking while right on the path. Coming
+   * to rest at the end is the end phase's job, not the follower's. */
+  if (sr > p->length) extend_past_end(p, sr - p->length, &rx, &rz);
   float dx = x - rx, dz = z - rz;
   float d = sqrtf(dx * dx + dz * dz);
   *dist = d;

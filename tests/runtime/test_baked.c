@@ -286,18 +286,14 @@ static void test_transition_and_splice(void** state) {
   assert_true(r.finite);
   assert_true(r.action_at > 1.5f && r.action_at < 5.0f);
   assert_true(r.style_at > 6.0f && r.style_at < 11.0f);
-  /* still running at the end - on CMU; the synthetic runs cannot hold
-   * the line (below), and where the wanted style cannot follow the path
-   * the planner lets it yield to walking until the path is rejoined */
-  if (c == &g_cmu) assert_int_equal(s.style, c->run);
+  /* still running at the end: both graphs' runs hold a straight line
+   * (the synthetic graph could not until the baker kept its equal-cost
+   * turning->straight run transitions; it drifted 3.9 m then) */
+  assert_int_equal(s.style, c->run);
   assert_int_equal(s.action, c->action);
   assert_true(s.sync_rate >= 0.5f && s.sync_rate <= 2.0f);
-  /* CMU walks and runs hold a straight line (0.12 m measured); the
-   * synthetic runs cannot: their clips curve by +-0.35 rad with choices
-   * about 1.5 s apart, so a run started on this line drifts (1.7 m even
-   * when running from the start, with the previous planner too; 3.9 m
-   * here, where the style yields back to walking to rejoin the line) */
-  assert_true(r.max_err < (c == &g_cmu ? 0.5f : 4.5f));
+  /* measured: CMU 0.05 m, synthetic 0.77 m (its run clips sway more) */
+  assert_true(r.max_err < (c == &g_cmu ? 0.5f : 1.2f));
   smg_character_destroy(ch);
 }
 
