@@ -16,33 +16,8 @@
 #include "bake_synthetic.h"
 #include "blob.h"
 #include "smg_bake.h"
+#include "test_env.h"
 
-#ifndef SMG_SHARED_DIR
-#define SMG_SHARED_DIR "../shared"
-#endif
-
-static inline int bg_quick(void) {
-  const char* q = getenv("SMG_TEST_QUICK");
-  return q && *q && strcmp(q, "0") != 0;
-}
-
-static inline const char* bg_cmu_dir(void) {
-  static char dir[1024];
-  const char* shared = getenv("SMG_SHARED");
-  FILE* fp;
-  char probe[1100];
-  if (!shared || !*shared) shared = SMG_SHARED_DIR;
-  snprintf(dir, sizeof dir, "%s/mocap/cmu", shared);
-  snprintf(probe, sizeof probe, "%s/09_12.bvh", dir);
-  fp = fopen(probe, "rb");
-  if (!fp) {
-    printf("SKIP: CMU clips not found in %s (set SMG_SHARED to the folder "
-           "holding mocap/cmu)\n", dir);
-    return NULL;
-  }
-  fclose(fp);
-  return dir;
-}
 
 /* A set of synthetic clips held in memory, as smg_bake_clip_desc. */
 #define BG_MAX_CLIPS 8

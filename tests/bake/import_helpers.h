@@ -12,35 +12,8 @@
 #include <unistd.h>
 
 #include "bake_clip.h"
+#include "test_env.h"
 
-#ifndef SMG_SHARED_DIR
-#define SMG_SHARED_DIR "../shared"
-#endif
-
-/* SMG_TEST_QUICK=1 (valgrind runs): shrink heavy data. */
-static inline int imp_quick(void) {
-  const char* q = getenv("SMG_TEST_QUICK");
-  return q && *q && strcmp(q, "0") != 0;
-}
-
-/* Folder of the CMU clips, or NULL (with a message) when absent. */
-static inline const char* imp_cmu_dir(void) {
-  static char dir[1024];
-  const char* shared = getenv("SMG_SHARED");
-  FILE* fp;
-  char probe[1100];
-  if (!shared || !*shared) shared = SMG_SHARED_DIR;
-  snprintf(dir, sizeof dir, "%s/mocap/cmu", shared);
-  snprintf(probe, sizeof probe, "%s/09_12.bvh", dir);
-  fp = fopen(probe, "rb");
-  if (!fp) {
-    printf("SKIP: CMU clips not found in %s (set SMG_SHARED to the folder "
-           "holding mocap/cmu)\n", dir);
-    return NULL;
-  }
-  fclose(fp);
-  return dir;
-}
 
 /* A fresh private temp folder (removed by imp_rmdir). */
 static inline void imp_tempdir(char* out, size_t n) {

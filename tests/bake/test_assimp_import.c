@@ -35,7 +35,7 @@ static int setup(void** state) {
   memset(&p, 0, sizeof p);
   p.kind = SMGB_SYNTH_RUN;
   p.turn_rate = 0.5f;
-  p.duration = imp_quick() ? 0.5f : 2.0f;
+  p.duration = smgt_quick() ? 0.5f : 2.0f;
   p.frame_rate = 30.0f;
   if (smgb_synth_generate(&p, &g_src, NULL) != SMG_OK) return -1;
   snprintf(g_bvh, sizeof g_bvh, "%s/source.bvh", g_dir);

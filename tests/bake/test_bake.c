@@ -24,7 +24,7 @@
 #include "bake_manifest.h"
 #include "bake_math.h"
 
-static float seconds(void) { return bg_quick() ? 3.0f : 6.0f; }
+static float seconds(void) { return smgt_quick() ? 3.0f : 6.0f; }
 
 /* One bake shared by the tests (valgrind runs are slow). */
 static bg_set g_set;
@@ -425,7 +425,7 @@ static void test_manifest_and_files(void** state) {
    * SMG_TEST_QUICK: assimp 5.2's glTF exporter writes uninitialised padding
    * that valgrind reports (test tooling, not the baker; test_assimp_import
    * covers the importer under valgrind). */
-  if (!bg_quick()) {
+  if (!smgt_quick()) {
     char bvh[256], gltf[256];
     const struct aiScene* sc;
     snprintf(bvh, sizeof bvh, "%s/run.bvh", dir);

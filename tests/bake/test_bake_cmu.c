@@ -49,9 +49,9 @@ static const cmu_clip k_quick[] = {
 };
 
 static void test_cmu_paper_set(void** state) {
-  const char* dir = bg_cmu_dir();
-  const cmu_clip* set = bg_quick() ? k_quick : k_full;
-  uint32_t n = bg_quick() ? sizeof k_quick / sizeof k_quick[0]
+  const char* dir = smgt_cmu_dir();
+  const cmu_clip* set = smgt_quick() ? k_quick : k_full;
+  uint32_t n = smgt_quick() ? sizeof k_quick / sizeof k_quick[0]
                           : sizeof k_full / sizeof k_full[0];
   smg_bake_clip_desc descs[16];
   smg_bake_desc d;
@@ -73,7 +73,7 @@ static void test_cmu_paper_set(void** state) {
     descs[i].frame_count = set[i].count;
     descs[i].skip_first_frame = 1;
     descs[i].unit_scale = 0.056444f;
-    descs[i].mirror = bg_quick() ? SMG_BAKE_MIRROR_NO : SMG_BAKE_MIRROR_YES;
+    descs[i].mirror = smgt_quick() ? SMG_BAKE_MIRROR_NO : SMG_BAKE_MIRROR_YES;
   }
   memset(&d, 0, sizeof d);
   d.struct_size = sizeof d;
@@ -86,7 +86,7 @@ static void test_cmu_paper_set(void** state) {
   bg_read(&res, &g);
   printf("CMU %s set: lower %u/%u nodes/edges (before simplification "
          "%u/%u), upper %u/%u (%u/%u), %u splices, coverage %.1f %%\n",
-         bg_quick() ? "quick" : "paper", g.lower_node_count,
+         smgt_quick() ? "quick" : "paper", g.lower_node_count,
          g.lower_edge_count, g.info->lower_nodes_before_simplify,
          g.info->lower_edges_before_simplify, g.upper_node_count,
          g.upper_edge_count, g.info->upper_nodes_before_simplify,

@@ -38,7 +38,7 @@ static const char* const k_order[31] = {
     "RightFingerBase", "RightHandIndex1", "RThumb"};
 
 static void test_all_clips(void** state) {
-  const char* dir = imp_cmu_dir();
+  const char* dir = smgt_cmu_dir();
   size_t i;
   (void)state;
   if (!dir) {
@@ -52,7 +52,7 @@ static void test_all_clips(void** state) {
     uint32_t j, f, S;
     float pos[93];
     double lowest = 1e9, q;
-    if (imp_quick() && k_files[i].frames > 200) continue;
+    if (smgt_quick() && k_files[i].frames > 200) continue;
     snprintf(path, sizeof path, "%s/%s", dir, k_files[i].name);
     if (smgb_bvh_load(path, 0.056444f, 1, &c, &err) != SMG_OK)
       fail_msg("%s", err.message);
@@ -90,7 +90,7 @@ static void test_all_clips(void** state) {
 
 /* Subjects differ in bone lengths: leg lengths of subjects 02 and 09. */
 static void test_subject_legs(void** state) {
-  const char* dir = imp_cmu_dir();
+  const char* dir = smgt_cmu_dir();
   char path[1200];
   smgb_clip a, b;
   smgb_error err;

@@ -66,7 +66,7 @@ static void test_fk_hand_computed(void** state) {
 }
 
 static void test_mirror_involution_and_geometry(void** state) {
-  smgb_clip c = synth(SMGB_SYNTH_WALK, 0.35f, imp_quick() ? 1.0f : 4.0f);
+  smgb_clip c = synth(SMGB_SYNTH_WALK, 0.35f, smgt_quick() ? 1.0f : 4.0f);
   smgb_clip m, mm;
   uint32_t J = c.skeleton.joint_count, S = SMGB_STRIDE(J), f, j;
   float* pa = (float*)malloc(sizeof(float) * 3 * J);

@@ -214,7 +214,7 @@ static const cmu_case k_cases[] = {
 };
 
 static void test_cmu_strikes_alternate_and_periods(void** state) {
-  const char* dir = bg_cmu_dir();
+  const char* dir = smgt_cmu_dir();
   uint32_t i;
   (void)state;
   if (!dir) {
@@ -226,7 +226,7 @@ static void test_cmu_strikes_alternate_and_periods(void** state) {
     smgb_analysis a;
     strikes s;
     double period;
-    if (bg_quick() && !c->quick) continue;
+    if (smgt_quick() && !c->quick) continue;
     analyze_cmu(dir, c->file, c->first, c->last, &a);
     get_strikes(&a, &s);
     period = stride_period(&s, 30.0f);
@@ -304,7 +304,7 @@ static int near_any(uint32_t f, const uint32_t* v, uint32_t n, uint32_t tol) {
 }
 
 static void test_cmu_06_10_matches_independent(void** state) {
-  const char* dir = bg_cmu_dir();
+  const char* dir = smgt_cmu_dir();
   smgb_analysis a;
   strikes s;
   uint32_t ind[MAX_STRIKES], n, i;
@@ -345,7 +345,7 @@ static void test_cmu_06_10_matches_independent(void** state) {
  * length, rotations kept). */
 static void test_cmu_retargeted_walks_keep_feet_planted(void** state) {
   static const char* const files[] = {"06_01.bvh", "02_01.bvh"};
-  const char* dir = bg_cmu_dir();
+  const char* dir = smgt_cmu_dir();
   char path[1200];
   smgb_clip ref;
   smgb_error err;
@@ -361,7 +361,7 @@ static void test_cmu_retargeted_walks_keep_feet_planted(void** state) {
     smgb_clip clip;
     smgb_analysis own, re;
     double v_own, v_re;
-    if (bg_quick() && i > 0) break;
+    if (smgt_quick() && i > 0) break;
     snprintf(path, sizeof path, "%s/%s", dir, files[i]);
     assert_int_equal(smgb_bvh_load(path, CMU_UNIT, 1, &clip, &err), SMG_OK);
     assert_int_equal(smgb_analyze_clip(&clip, 30.0f, 1, 0.0f, 0.0f, &own, &err),
@@ -383,11 +383,11 @@ static void test_cmu_retargeted_walks_keep_feet_planted(void** state) {
 
 /* data/cmu.manifest's 09_12 range is what the analysis reports. */
 static void test_cmu_09_12_forward_range(void** state) {
-  const char* dir = bg_cmu_dir();
+  const char* dir = smgt_cmu_dir();
   smgb_analysis a;
   uint32_t r[16][2], n, i, back = 0;
   (void)state;
-  if (!dir || bg_quick()) {
+  if (!dir || smgt_quick()) {
     if (dir) printf("SKIP: 09_12 range check not run under SMG_TEST_QUICK\n");
     skip();
     return;

@@ -224,7 +224,7 @@ static void test_built_in_code(void** state) {
 
 /* The project's manifests parse (CMU: when ../shared is present). */
 static void test_project_manifests(void** state) {
-  const char* cmu = imp_cmu_dir();
+  const char* cmu = smgt_cmu_dir();
   smgb_manifest m;
   smgb_error err;
   char over[400];

@@ -22,7 +22,7 @@ static smgi_graph_data g_g;
 
 static int setup(void** state) {
   (void)state;
-  bg_standard(&g_set, bg_quick() ? 3.0f : 6.0f);
+  bg_standard(&g_set, smgt_quick() ? 3.0f : 6.0f);
   if (bg_bake(&g_set, NULL, &g_res) != SMG_OK) {
     fprintf(stderr, "bake failed: %s\n", g_res.error);
     return -1;

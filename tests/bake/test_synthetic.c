@@ -19,7 +19,7 @@
 static void gen(uint32_t index, smgb_clip* c, smgb_synth_truth* t) {
   smgb_synth_params p;
   assert_int_equal(smgb_synth_standard(index, &p, NULL, NULL, NULL), SMG_OK);
-  if (imp_quick()) p.duration = 2.0f;
+  if (smgt_quick()) p.duration = 2.0f;
   assert_int_equal(smgb_synth_generate(&p, c, t), SMG_OK);
 }
 
@@ -135,7 +135,7 @@ static void test_deterministic_and_files(void** state) {
   (void)state;
   imp_tempdir(dir, sizeof dir);
   assert_true(dir[0] != '\0');
-  if (imp_quick()) {
+  if (smgt_quick()) {
     /* Valgrind: formatting ~1 MB of BVH text is slow there; round-trip one
      * short clip instead of the whole set. */
     smgb_synth_params p;

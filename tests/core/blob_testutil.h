@@ -12,12 +12,7 @@
 
 #include "blob.h"
 #include "fixture_graph.h"
-
-/* SMG_TEST_QUICK=1 (set under valgrind): sample heavy loops. */
-static inline int test_quick(void) {
-  const char* q = getenv("SMG_TEST_QUICK");
-  return q && q[0] && strcmp(q, "0") != 0;
-}
+#include "test_env.h"
 
 /* Exactly `size` bytes (never fewer than 1 allocated), 16-byte aligned,
  * holding the first `size` bytes of src (uninitialised when src is NULL). */

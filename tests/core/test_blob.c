@@ -327,7 +327,7 @@ static void test_misaligned_memory(void** state) {
 static void test_every_truncation_fails(void** state) {
   fx* f = (fx*)*state;
   size_t len, tested = 0;
-  int quick = test_quick();
+  int quick = smgt_quick();
   for (len = 0; len < f->size; ++len) {
     if (quick && len > 2048 && len % 97 != 0 && len + 64 < f->size) continue;
     assert_true(read_copy(f->blob, len, 0, NULL, 0) != SMG_OK);
@@ -349,7 +349,7 @@ static void test_every_truncation_fails(void** state) {
 static void test_truncation_with_patched_header_fails(void** state) {
   fx* f = (fx*)*state;
   size_t len;
-  for (len = 64; len < f->size; len += test_quick() ? 256 : 16) {
+  for (len = 64; len < f->size; len += smgt_quick() ? 256 : 16) {
     unsigned char* c = test_aligned_copy(f->blob, len);
     smgi_graph_data v;
     smg_result r;
@@ -386,7 +386,7 @@ static void test_payload_bit_flips_fail_checksum(void** state) {
   smgi_graph_data v;
   uint32_t i, n = test_header(c)->section_count;
   size_t bit, table_bits = (size_t)n * sizeof(smgi_blob_section) * 8;
-  size_t step = test_quick() ? 13 : 1;
+  size_t step = smgt_quick() ? 13 : 1;
   uint64_t rng = 0x9e3779b97f4a7c15ull;
   for (bit = 0; bit < table_bits; bit += step) {
     size_t byte = 64 + bit / 8;
@@ -399,7 +399,7 @@ static void test_payload_bit_flips_fail_checksum(void** state) {
     smgi_blob_section s = test_table(c)[i];
     int k;
     if (s.size == 0) continue;
-    for (k = 0; k < (test_quick() ? 4 : 32); ++k) {
+    for (k = 0; k < (smgt_quick() ? 4 : 32); ++k) {
       size_t byte;
       unsigned b;
       rng = rng * 6364136223846793005ull + 1442695040888963407ull;
@@ -435,7 +435,7 @@ static void test_table_bit_flips_without_checksum(void** state) {
   size_t bit, table_bits =
                   (size_t)test_header(c)->section_count * 32 * 8,
               rejected = 0, total = 0;
-  for (bit = 0; bit < table_bits; bit += test_quick() ? 7 : 1) {
+  for (bit = 0; bit < table_bits; bit += smgt_quick() ? 7 : 1) {
     size_t byte = 64 + bit / 8;
     c[byte] ^= (unsigned char)(1u << (bit % 8));
     if (smgi_blob_read(c, f->size, SMG_GRAPH_SKIP_CHECKSUM, &v, NULL, 0) !=

@@ -14,11 +14,7 @@
 #include "blob.h"
 #include "fixture_graph.h"
 #include "smg.h"
-
-static inline int rt_quick(void) {
-  const char* q = getenv("SMG_TEST_QUICK");
-  return q && q[0] && q[0] != '0';
-}
+#include "test_env.h"
 
 /* The fixture as a loaded graph; *blob must be freed with smgi_blob_free
  * after smg_graph_destroy. */

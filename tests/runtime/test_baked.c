@@ -67,18 +67,13 @@ static int teardown_default(void** state) {
   return 0;
 }
 
-static const char* shared_dir(void) {
-  const char* env = getenv("SMG_SHARED");
-  return env && env[0] ? env : SMG_SHARED_DIR;
-}
-
 static int setup_cmu(void** state) {
   char dir[1024];
   struct stat st;
   g_cmu.name = "CMU";
   *state = &g_cmu;
-  snprintf(dir, sizeof dir, "%s/mocap/cmu", shared_dir());
-  if (rt_quick() || stat(dir, &st) != 0 || stat("data/cmu.manifest", &st)) {
+  snprintf(dir, sizeof dir, "%s/mocap/cmu", smgt_shared_dir());
+  if (smgt_quick() || stat(dir, &st) != 0 || stat("data/cmu.manifest", &st)) {
     return 0; /* tests skip themselves */
   }
   smgb_manifest m;
@@ -128,7 +123,7 @@ static ctx* need(void** state) {
   ctx* c = (ctx*)*state;
   if (!c->g) {
     print_message("skipped: %s\n",
-                  rt_quick() ? "SMG_TEST_QUICK (CMU bake is too slow under "
+                  smgt_quick() ? "SMG_TEST_QUICK (CMU bake is too slow under "
                                "valgrind)"
                              : "CMU clips not found in ../shared/mocap/cmu");
     skip();
@@ -348,7 +343,7 @@ static void test_edits_every_frame(void** state) {
   ctx* c = need(state);
   smg_character* ch = make(c, 0);
   float xz[64], root[3], prev[3], rot[4 * MAXJ];
-  int frames = rt_quick() ? 400 : 3000;
+  int frames = smgt_quick() ? 400 : 3000;
   float max_jump = 0;
   smg_character_get_local_pose(ch, prev, rot, c->J);
   for (int i = 0; i < frames; ++i) {
@@ -394,7 +389,7 @@ static void* job_main(void* arg) {
   uint32_t n = rt_turn_r(xz, 3.0f, 6.0f, 1, 3.0f);
   smg_character_set_path(ch, xz, n);
   smg_character_add_splice(ch, 2.0f, j->c->action, NULL);
-  for (int i = 0; i < (rt_quick() ? 120 : 600); ++i)
+  for (int i = 0; i < (smgt_quick() ? 120 : 600); ++i)
     smg_character_step(ch, DT);
   smg_character_get_local_pose(ch, j->root, j->rot, j->c->J);
   smg_character_destroy(ch);

@@ -267,7 +267,7 @@ static void test_edit_every_frame(void** state) {
   ctx* c = (ctx*)*state;
   smg_character* ch = NULL;
   float xz[64], root[3], prev[3], rot[4 * FIXTURE_JOINTS];
-  int frames = rt_quick() ? 1500 : 10000;
+  int frames = smgt_quick() ? 1500 : 10000;
   float max_jump = 0;
   assert_int_equal(smg_character_create(c->g, NULL, &ch), SMG_OK);
   smg_character_get_local_pose(ch, prev, rot, FIXTURE_JOINTS);
@@ -320,7 +320,7 @@ static void test_determinism(void** state) {
   d.seed = 99;
   assert_int_equal(smg_character_create(c->g, &d, &a), SMG_OK);
   assert_int_equal(smg_character_create(c->g, &d, &b), SMG_OK);
-  int frames = rt_quick() ? 600 : 3000;
+  int frames = smgt_quick() ? 600 : 3000;
   for (int i = 0; i < frames; ++i) {
     edit_frame(a, i, xz);
     edit_frame(b, i, xz);
@@ -348,7 +348,7 @@ static void test_no_allocation_in_step(void** state) {
   d.allocator.user = &cnt;
   assert_int_equal(smg_character_create(c->g, &d, &ch), SMG_OK);
   long after_create = cnt.allocs;
-  int frames = rt_quick() ? 1000 : 10000;
+  int frames = smgt_quick() ? 1000 : 10000;
   for (int i = 0; i < frames; ++i) {
     edit_frame(ch, i, xz);
     assert_int_equal(smg_character_step(ch, DT), SMG_OK);
@@ -379,7 +379,7 @@ static void test_threads(void** state) {
   enum { N = 4 };
   job jobs[N], ref;
   pthread_t th[N];
-  int frames = rt_quick() ? 300 : 2000;
+  int frames = smgt_quick() ? 300 : 2000;
   ref.g = c->g;
   ref.frames = frames;
   drive(c->g, frames, ref.root, ref.rot);
@@ -416,14 +416,14 @@ static void test_long_path(void** state) {
   float len;
   smg_character_get_path_length(ch, &len);
   assert_true(len > 999.0f && len < 1003.0f);
-  run_stats r = run(ch, rt_quick() ? 3.0f : 10.0f);
+  run_stats r = run(ch, smgt_quick() ? 3.0f : 10.0f);
   print_message("10^5-point path: max err %.3f, distance %.2f\n", r.max_err,
                 r.final_distance);
   assert_true(r.finite);
   /* the fixture turns in 45-degree steps, so a gentle curve is followed
    * to within about half a metre */
   assert_true(r.max_err < 0.6f);
-  assert_true(r.final_distance > (rt_quick() ? 2.5f : 10.0f));
+  assert_true(r.final_distance > (smgt_quick() ? 2.5f : 10.0f));
   /* replace it while walking: progress restarts at the nearest point */
   assert_int_equal(smg_character_set_path(ch, xz, N), SMG_OK);
   smg_character_state s = get_state(ch);

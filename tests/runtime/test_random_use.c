@@ -147,7 +147,7 @@ static void test_fixture(void** state) {
   void* blob;
   smg_graph* g = rt_fixture(&blob);
   assert_non_null(g);
-  for (int k = 0; k < 4; ++k) churn(g, rt_quick() ? 800 : 6000);
+  for (int k = 0; k < 4; ++k) churn(g, smgt_quick() ? 800 : 6000);
   rt_fixture_free(g, blob);
 }
 
@@ -155,7 +155,7 @@ static void test_default(void** state) {
   (void)state;
   smg_graph* g = rt_default_graph();
   assert_non_null(g); /* run `make` first */
-  for (int k = 0; k < 3; ++k) churn(g, rt_quick() ? 600 : 6000);
+  for (int k = 0; k < 3; ++k) churn(g, smgt_quick() ? 600 : 6000);
   smg_graph_destroy(g);
 }
 

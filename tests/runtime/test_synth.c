@@ -59,7 +59,7 @@ static void test_bvh_round_trip(void** state) {
   assert_non_null(f);
   fprintf(f, "# a drawn path\n0 0\n0 4\n\n1.5 7  # comment\n5 8\n9 8\n");
   fclose(f);
-  float seconds = rt_quick() ? 2.0f : 6.0f;
+  float seconds = smgt_quick() ? 2.0f : 6.0f;
   assert_int_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                            "--splice 2:punch --transition 6:run --seconds "
                            "%.1f --fps 30 --seed 3 --csv '%s' -o '%s' "
