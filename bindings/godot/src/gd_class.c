@@ -175,6 +175,24 @@ static void info_free(info_store *st) {
 	gd_str_destroy(&st->hint_string);
 }
 
+void gd_register_class(const char *cls, const char *parent, GDExtensionClassCreateInstance2 create,
+	GDExtensionClassFreeInstance destroy, GDExtensionClassNotification2 notify,
+	GDExtensionClassGetVirtual2 get_virtual) {
+	gd_string_name cname, pname;
+	GDExtensionClassCreationInfo5 ci;
+	memset(&ci, 0, sizeof ci);
+	ci.is_exposed = 1;
+	ci.create_instance_func = create;
+	ci.free_instance_func = destroy;
+	ci.notification_func = notify;
+	ci.get_virtual_func = get_virtual;
+	gd_sn_init(&cname, cls);
+	gd_sn_init(&pname, parent);
+	gd.classdb_register_extension_class5(gd.lib, &cname, &pname, &ci);
+	gd_sn_destroy(&cname);
+	gd_sn_destroy(&pname);
+}
+
 void gd_register_methods(const char *cls, const gd_method *methods, int count) {
 	gd_string_name cname;
 	gd_sn_init(&cname, cls);

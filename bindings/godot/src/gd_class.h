@@ -59,6 +59,13 @@ typedef struct gd_method {
 	int is_const;
 } gd_method;
 
+/* Register extension class `cls` deriving from `parent`: an exposed class
+ * whose instances are made by `create` and freed by `destroy`; notify and
+ * get_virtual may be NULL. */
+void gd_register_class(const char *cls, const char *parent, GDExtensionClassCreateInstance2 create,
+	GDExtensionClassFreeInstance destroy, GDExtensionClassNotification2 notify,
+	GDExtensionClassGetVirtual2 get_virtual);
+
 /* `methods` must stay alive while the class is registered (static). */
 void gd_register_methods(const char *cls, const gd_method *methods, int count);
 void gd_register_property(const char *cls, const gd_arg *prop, uint32_t hint, const char *hint_string,

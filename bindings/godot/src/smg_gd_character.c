@@ -907,18 +907,7 @@ static void destroy(void *ud, GDExtensionClassInstancePtr inst) {
 }
 
 void smg_gd_character_register(void) {
-	gd_string_name cname, pname;
-	GDExtensionClassCreationInfo5 ci;
-	memset(&ci, 0, sizeof ci);
-	ci.is_exposed = 1;
-	ci.create_instance_func = create;
-	ci.free_instance_func = destroy;
-	ci.notification_func = notification;
-	gd_sn_init(&cname, CLASS);
-	gd_sn_init(&pname, "Node3D");
-	gd.classdb_register_extension_class5(gd.lib, &cname, &pname, &ci);
-	gd_sn_destroy(&cname);
-	gd_sn_destroy(&pname);
+	gd_register_class(CLASS, "Node3D", create, destroy, notification, NULL);
 	gd_register_methods(CLASS, methods, (int)(sizeof methods / sizeof methods[0]));
 
 	gd_arg p_graph = { "graph", GT_REF, "SmgGraph" };

@@ -416,17 +416,7 @@ static void destroy(void *ud, GDExtensionClassInstancePtr inst) {
 }
 
 void smg_gd_graph_register(void) {
-	gd_string_name cname, pname;
-	GDExtensionClassCreationInfo5 ci;
-	memset(&ci, 0, sizeof ci);
-	ci.is_exposed = 1;
-	ci.create_instance_func = create;
-	ci.free_instance_func = destroy;
-	gd_sn_init(&cname, CLASS);
-	gd_sn_init(&pname, "Resource");
-	gd.classdb_register_extension_class5(gd.lib, &cname, &pname, &ci);
-	gd_sn_destroy(&cname);
-	gd_sn_destroy(&pname);
+	gd_register_class(CLASS, "Resource", create, destroy, NULL, NULL);
 	gd_register_methods(CLASS, methods, (int)(sizeof methods / sizeof methods[0]));
 	gd_arg prop = { "blob_path", GT_STRING, NULL };
 	gd_register_property(CLASS, &prop, GD_PROPERTY_HINT_FILE, "*.smg", "set_blob_path", "get_blob_path");

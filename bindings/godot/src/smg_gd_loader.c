@@ -101,18 +101,7 @@ void smg_gd_loader_register(void) {
 	gd_sn_init(&sn_Resource, "Resource");
 	gd_variant_nil(&loader_ref);
 
-	gd_string_name cname, pname;
-	GDExtensionClassCreationInfo5 ci;
-	memset(&ci, 0, sizeof ci);
-	ci.is_exposed = 1;
-	ci.create_instance_func = create;
-	ci.free_instance_func = destroy;
-	ci.get_virtual_func = get_virtual;
-	gd_sn_init(&cname, CLASS);
-	gd_sn_init(&pname, "ResourceFormatLoader");
-	gd.classdb_register_extension_class5(gd.lib, &cname, &pname, &ci);
-	gd_sn_destroy(&cname);
-	gd_sn_destroy(&pname);
+	gd_register_class(CLASS, "ResourceFormatLoader", create, destroy, NULL, get_virtual);
 
 	GDExtensionObjectPtr loader = gd_engine_new(CLASS);
 	GDExtensionObjectPtr rl = gd_singleton("ResourceLoader");

@@ -128,18 +128,7 @@ static void destroy(void *ud, GDExtensionClassInstancePtr inst) {
 void smg_gd_modifier_register(void) {
 	gd_sn_init(&sn_process_with_delta, "_process_modification_with_delta");
 	gd_sn_init(&sn_process, "_process_modification");
-	gd_string_name cname, pname;
-	GDExtensionClassCreationInfo5 ci;
-	memset(&ci, 0, sizeof ci);
-	ci.is_exposed = 1;
-	ci.create_instance_func = create;
-	ci.free_instance_func = destroy;
-	ci.get_virtual_func = get_virtual;
-	gd_sn_init(&cname, CLASS);
-	gd_sn_init(&pname, "SkeletonModifier3D");
-	gd.classdb_register_extension_class5(gd.lib, &cname, &pname, &ci);
-	gd_sn_destroy(&cname);
-	gd_sn_destroy(&pname);
+	gd_register_class(CLASS, "SkeletonModifier3D", create, destroy, NULL, get_virtual);
 	gd_register_methods(CLASS, methods, (int)(sizeof methods / sizeof methods[0]));
 	gd_arg p_char = { "character", GT_NODE_PATH, NULL };
 	gd_register_property(CLASS, &p_char, GD_PROPERTY_HINT_NODE_PATH_VALID_TYPES, "SmgCharacter", "set_character",
