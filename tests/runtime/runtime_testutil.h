@@ -36,6 +36,31 @@ static inline void rt_fixture_free(smg_graph* g, void* blob) {
   if (blob) smgi_blob_free(blob, NULL);
 }
 
+/* cmocka group state: the fixture graph loaded once for a test file. */
+typedef struct rt_fixture_ctx {
+  void* blob;
+  smg_graph* g;
+} rt_fixture_ctx;
+
+static inline int rt_fixture_setup(void** state) {
+  rt_fixture_ctx* c = (rt_fixture_ctx*)calloc(1, sizeof *c);
+  if (!c) return -1;
+  c->g = rt_fixture(&c->blob);
+  if (!c->g) {
+    free(c);
+    return -1;
+  }
+  *state = c;
+  return 0;
+}
+
+static inline int rt_fixture_teardown(void** state) {
+  rt_fixture_ctx* c = (rt_fixture_ctx*)*state;
+  rt_fixture_free(c->g, c->blob);
+  free(c);
+  return 0;
+}
+
 /* build/default.smg: `make` produces it. */
 static inline smg_graph* rt_default_graph(void) {
   smg_graph* g = NULL;

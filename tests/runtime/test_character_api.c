@@ -13,25 +13,8 @@
 
 #include "runtime/runtime_testutil.h"
 
-typedef struct ctx {
-  void* blob;
-  smg_graph* g;
-} ctx;
-
-static int setup(void** state) {
-  ctx* c = (ctx*)calloc(1, sizeof *c);
-  c->g = rt_fixture(&c->blob);
-  if (!c->g) return -1;
-  *state = c;
-  return 0;
-}
-
-static int teardown(void** state) {
-  ctx* c = (ctx*)*state;
-  rt_fixture_free(c->g, c->blob);
-  free(c);
-  return 0;
-}
+/* The fixture graph for every test of this file (runtime_testutil.h). */
+typedef rt_fixture_ctx ctx;
 
 static void test_create_args(void** state) {
   ctx* c = (ctx*)*state;
@@ -411,5 +394,5 @@ int main(void) {
       cmocka_unit_test(test_graph_in_use),
       cmocka_unit_test(test_out_of_memory),
   };
-  return cmocka_run_group_tests(tests, setup, teardown);
+  return cmocka_run_group_tests(tests, rt_fixture_setup, rt_fixture_teardown);
 }

@@ -18,25 +18,8 @@
 
 #define DT (1.0f / 60.0f)
 
-typedef struct ctx {
-  void* blob;
-  smg_graph* g;
-} ctx;
-
-static int setup(void** state) {
-  ctx* c = (ctx*)calloc(1, sizeof *c);
-  c->g = rt_fixture(&c->blob);
-  if (!c->g) return -1;
-  *state = c;
-  return 0;
-}
-
-static int teardown(void** state) {
-  ctx* c = (ctx*)*state;
-  rt_fixture_free(c->g, c->blob);
-  free(c);
-  return 0;
-}
+/* The fixture graph for every test of this file (runtime_testutil.h). */
+typedef rt_fixture_ctx ctx;
 
 static smg_character_state get_state(const smg_character* ch) {
   smg_character_state s;
@@ -487,5 +470,5 @@ int main(void) {
       cmocka_unit_test(test_long_path),
       cmocka_unit_test(test_path_end_and_single_point),
   };
-  return cmocka_run_group_tests(tests, setup, teardown);
+  return cmocka_run_group_tests(tests, rt_fixture_setup, rt_fixture_teardown);
 }

@@ -48,49 +48,46 @@ void em_stats_compute(const double* v, size_t n, double* scratch,
   out->p99 = em_percentile_sorted(scratch, k, 99.0);
 }
 
-double em_pearson(const double* a, const double* b, size_t n) {
-  double ma = 0, mb = 0, sab = 0, saa = 0, sbb = 0;
+/* Centred second moments of the pairs (a[i], b[i]) where both are finite:
+ * sums of (a-ma)^2, (a-ma)(b-mb), (b-mb)^2 and the means. Returns the
+ * number of pairs used. */
+static size_t paired_moments(const double* a, const double* b, size_t n,
+                             double* saa, double* sab, double* sbb,
+                             double* ma, double* mb) {
   size_t i, k = 0;
-  if (!a || !b) return NAN;
+  *saa = *sab = *sbb = *ma = *mb = 0.0;
   for (i = 0; i < n; ++i)
     if (isfinite(a[i]) && isfinite(b[i])) {
-      ma += a[i];
-      mb += b[i];
+      *ma += a[i];
+      *mb += b[i];
       k++;
     }
-  if (k < 2) return NAN;
-  ma /= (double)k;
-  mb /= (double)k;
+  if (k < 2) return k;
+  *ma /= (double)k;
+  *mb /= (double)k;
   for (i = 0; i < n; ++i)
     if (isfinite(a[i]) && isfinite(b[i])) {
-      sab += (a[i] - ma) * (b[i] - mb);
-      saa += (a[i] - ma) * (a[i] - ma);
-      sbb += (b[i] - mb) * (b[i] - mb);
+      *sab += (a[i] - *ma) * (b[i] - *mb);
+      *saa += (a[i] - *ma) * (a[i] - *ma);
+      *sbb += (b[i] - *mb) * (b[i] - *mb);
     }
+  return k;
+}
+
+double em_pearson(const double* a, const double* b, size_t n) {
+  double ma, mb, sab, saa, sbb;
+  if (!a || !b) return NAN;
+  if (paired_moments(a, b, n, &saa, &sab, &sbb, &ma, &mb) < 2) return NAN;
   if (!(saa > 0.0) || !(sbb > 0.0)) return NAN;
   return sab / sqrt(saa * sbb);
 }
 
 double em_linear_slope(const double* x, const double* y, size_t n,
                        double* out_intercept) {
-  double mx = 0, my = 0, sxy = 0, sxx = 0, b;
-  size_t i, k = 0;
+  double mx, my, sxy, sxx, syy, b;
   if (out_intercept) *out_intercept = NAN;
   if (!x || !y) return NAN;
-  for (i = 0; i < n; ++i)
-    if (isfinite(x[i]) && isfinite(y[i])) {
-      mx += x[i];
-      my += y[i];
-      k++;
-    }
-  if (k < 2) return NAN;
-  mx /= (double)k;
-  my /= (double)k;
-  for (i = 0; i < n; ++i)
-    if (isfinite(x[i]) && isfinite(y[i])) {
-      sxy += (x[i] - mx) * (y[i] - my);
-      sxx += (x[i] - mx) * (x[i] - mx);
-    }
+  if (paired_moments(x, y, n, &sxx, &sxy, &syy, &mx, &my) < 2) return NAN;
   if (!(sxx > 0.0)) return NAN;
   b = sxy / sxx;
   if (out_intercept) *out_intercept = my - b * mx;
