@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "abi.h"
 #include "alloc.h"
 #include "character_internal.h"
 
@@ -61,7 +62,7 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
                                smg_character_desc* d) {
   memset(d, 0, sizeof *d);
   if (in) {
-    if (in->struct_size == 0 || in->struct_size > sizeof *d)
+    if (!smgi_struct_size_ok(in->struct_size, sizeof *d))
       return SMG_ERROR_INVALID_ARGUMENT;
     memcpy(d, in, in->struct_size);
   }
@@ -302,8 +303,8 @@ SMG_API smg_result smg_character_step(smg_character* ch, float dt) {
 
 SMG_API smg_result smg_character_get_state(const smg_character* ch,
                                            smg_character_state* out) {
-  if (!ch || !out || out->struct_size == 0 ||
-      out->struct_size > sizeof(smg_character_state))
+  if (!ch || !out ||
+      !smgi_struct_size_ok(out->struct_size, sizeof(smg_character_state)))
     return SMG_ERROR_INVALID_ARGUMENT;
   smg_character_state s;
   memset(&s, 0, sizeof s);

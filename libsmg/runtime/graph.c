@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "abi.h"
 #include "alloc.h"
 #include "blob.h"
 #include "graph_internal.h"
@@ -26,7 +27,7 @@ static smg_result resolve_desc(const smg_graph_desc* in, smg_graph_desc* out,
                                smg_allocator* alloc) {
   memset(out, 0, sizeof *out);
   if (in) {
-    if (in->struct_size < sizeof(uint32_t) || in->struct_size > sizeof *out)
+    if (!smgi_struct_size_ok(in->struct_size, sizeof *out))
       return SMG_ERROR_INVALID_ARGUMENT;
     memcpy(out, in, in->struct_size);
   }
@@ -183,12 +184,6 @@ void smgi_graph_release(smg_graph* graph) {
   __atomic_fetch_sub(&graph->character_count, 1u, __ATOMIC_ACQ_REL);
 }
 
-/* Output structs: the caller's struct_size says how many bytes we may
- * write; older, smaller structs get the prefix they know about. */
-static int out_size_ok(uint32_t struct_size, size_t full) {
-  return struct_size >= sizeof(uint32_t) && struct_size <= full;
-}
-
 smg_result smg_graph_get_info(const smg_graph* graph,
                               smg_graph_info* out_info) {
   smg_graph_info info;
@@ -196,7 +191,7 @@ smg_result smg_graph_get_info(const smg_graph* graph,
   uint32_t size;
   if (!graph || !out_info) return SMG_ERROR_INVALID_ARGUMENT;
   size = out_info->struct_size;
-  if (!out_size_ok(size, sizeof info)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!smgi_struct_size_ok(size, sizeof info)) return SMG_ERROR_INVALID_ARGUMENT;
   d = &graph->data;
   memset(&info, 0, sizeof info);
   info.struct_size = size;
@@ -225,7 +220,7 @@ smg_result smg_graph_get_joint(const smg_graph* graph, uint32_t index,
   uint32_t size;
   if (!graph || !out_joint) return SMG_ERROR_INVALID_ARGUMENT;
   size = out_joint->struct_size;
-  if (!out_size_ok(size, sizeof j)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!smgi_struct_size_ok(size, sizeof j)) return SMG_ERROR_INVALID_ARGUMENT;
   if (index >= graph->data.joint_count) return SMG_ERROR_OUT_OF_RANGE;
   src = &graph->data.joints[index];
   memset(&j, 0, sizeof j);

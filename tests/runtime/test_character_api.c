@@ -30,6 +30,9 @@ static void test_create_args(void** state) {
   d.struct_size = sizeof d + 4;
   assert_int_equal(smg_character_create(c->g, &d, &ch),
                    SMG_ERROR_INVALID_ARGUMENT);
+  d.struct_size = 2; /* cannot even hold struct_size itself */
+  assert_int_equal(smg_character_create(c->g, &d, &ch),
+                   SMG_ERROR_INVALID_ARGUMENT);
   d.struct_size = sizeof d;
   d.initial_style = 2;
   assert_int_equal(smg_character_create(c->g, &d, &ch),
@@ -258,6 +261,9 @@ static void test_controls_and_step_args(void** state) {
                    SMG_ERROR_INVALID_ARGUMENT);
   smg_character_state s0, s1;
   memset(&s0, 0, sizeof s0);
+  s0.struct_size = 2; /* same struct_size rule as every output struct */
+  assert_int_equal(smg_character_get_state(ch, &s0),
+                   SMG_ERROR_INVALID_ARGUMENT);
   s0.struct_size = sizeof s0;
   assert_int_equal(smg_character_get_state(ch, &s0), SMG_OK);
   assert_int_equal(smg_character_step(ch, 0.0f), SMG_OK); /* no-op */
