@@ -253,30 +253,28 @@ static void m_get_frame_rate(void *vself, const gd_value *a, gd_value *r) {
 	r->f = graph_info(self).frame_rate;
 }
 
-static void m_get_style_name(void *vself, const gd_value *a, gd_value *r) {
-	SELF;
+/* get_style_name / get_action_name: index -> name, "" with an error for
+ * an index the graph does not have or when no graph is loaded. */
+static void label_name(smg_gd_graph *self, const gd_value *a, gd_value *r, const char *kind,
+	smg_result (*get)(const smg_graph *, uint32_t, const char **)) {
 	const char *name = NULL;
-	if (self->blob && (a[0].i < 0 || a[0].i > UINT32_MAX ||
-	                   smg_graph_get_style_name(self->blob->graph, (uint32_t)a[0].i, &name) != SMG_OK)) {
-		GD_ERR("SmgGraph: no style %lld", (long long)a[0].i);
-		name = NULL;
-	} else if (!self->blob) {
+	if (!self->blob) {
 		GD_ERR("SmgGraph: no graph loaded");
+	} else if (a[0].i < 0 || a[0].i > UINT32_MAX || get(self->blob->graph, (uint32_t)a[0].i, &name) != SMG_OK) {
+		GD_ERR("SmgGraph: no %s %lld", kind, (long long)a[0].i);
+		name = NULL;
 	}
 	gd_str_init(&r->s, name ? name : "");
 }
 
+static void m_get_style_name(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	label_name(self, a, r, "style", smg_graph_get_style_name);
+}
+
 static void m_get_action_name(void *vself, const gd_value *a, gd_value *r) {
 	SELF;
-	const char *name = NULL;
-	if (self->blob && (a[0].i < 0 || a[0].i > UINT32_MAX ||
-	                   smg_graph_get_action_name(self->blob->graph, (uint32_t)a[0].i, &name) != SMG_OK)) {
-		GD_ERR("SmgGraph: no action %lld", (long long)a[0].i);
-		name = NULL;
-	} else if (!self->blob) {
-		GD_ERR("SmgGraph: no graph loaded");
-	}
-	gd_str_init(&r->s, name ? name : "");
+	label_name(self, a, r, "action", smg_graph_get_action_name);
 }
 
 static void m_find_style(void *vself, const gd_value *a, gd_value *r) {
