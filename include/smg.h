@@ -240,7 +240,7 @@ typedef struct smg_character_desc {
   uint32_t flags;            /* SMG_CHARACTER_* */
   uint32_t initial_style;    /* style index (0 = first style) */
   uint32_t initial_action;   /* action index (0 = "none") */
-  uint32_t path_capacity;    /* max path points; 0 = 1024 */
+  uint32_t path_capacity;    /* max path points; 0 = 512 */
   uint32_t constraint_capacity; /* max transition+splice points; 0 = 32 */
   uint32_t seed;             /* varies choices among equal options; 0 ok */
   uint32_t reserved0;

@@ -10,7 +10,10 @@
 #include "alloc.h"
 #include "character_internal.h"
 
-#define DEFAULT_PATH_CAPACITY 1024u
+/* 512 points (6 KB) keep a default character within 16 KiB in all; a
+ * mouse-drawn path resampled every few centimetres fits, and longer paths
+ * set path_capacity (12 bytes per point). */
+#define DEFAULT_PATH_CAPACITY 512u
 #define DEFAULT_CONSTRAINT_CAPACITY 32u
 #define MAX_PATH_CAPACITY (1u << 26)
 #define MAX_CONSTRAINT_CAPACITY (1u << 16)
