@@ -98,6 +98,106 @@ static void test_projection_matches_brute_force(void** state) {
   }
 }
 
+/* The set_path projection's rule spelled out with no pruning at all:
+ * every segment in order, a later one replaces the best only when nearer
+ * by more than 2 cm. The pruned, blocked search must give the same
+ * segment and the same arc length bit for bit. */
+static float rule_projection(const smgi_path* p, float px, float pz,
+                             uint32_t* out_seg) {
+  float best2 = INFINITY, best = INFINITY, s_best = 0.0f;
+  for (uint32_t i = 0; i + 1u < p->count; ++i) {
+    const float* a = &p->xz[2u * i];
+    float dx = a[2] - a[0], dz = a[3] - a[1];
+    float l2 = dx * dx + dz * dz, u = 0.0f;
+    float qx = px - a[0], qz = pz - a[1];
+    if (l2 > 1e-18f) u = smgi_clampf((qx * dx + qz * dz) / l2, 0.0f, 1.0f);
+    float ex = a[0] + u * dx - px, ez = a[1] + u * dz - pz;
+    float d2 = ex * ex + ez * ez, t = best - 0.02f;
+    if (d2 < best2 && (best2 == INFINITY || (t > 0.0f && d2 < t * t))) {
+      best2 = d2;
+      best = sqrtf(d2);
+      s_best = p->cum[i] + u * (p->cum[i + 1u] - p->cum[i]);
+      *out_seg = i;
+    }
+  }
+  return s_best;
+}
+
+static void test_projection_is_the_rule(void** state) {
+  (void)state;
+  static buf b;
+  static float pts[2 * CAP];
+  for (int trial = 0; trial < 300; ++trial) {
+    uint32_t n = 2 + smgi_xorshift(&rng) % (trial < 100 ? 70u : CAP - 2u);
+    int kind = trial % 3;
+    float x = 0, z = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+      if (kind == 0) { /* dense wiggly line, 1 cm spacing */
+        z = 0.01f * (float)i;
+        x = 0.7f * sinf(z * 1.3f);
+      } else if (kind == 1) { /* closed loops passed several times */
+        float a = 6.2831853f * 3.0f * (float)i / (float)n;
+        x = 4.0f * sinf(a);
+        z = 4.0f * cosf(a) + 100.0f; /* offset: rounding of larger cums */
+      } else { /* random walk, tiny and long segments, repeats */
+        float step = (i % 5 == 0) ? 0.0f : (i % 7 == 0) ? 15.0f * frand()
+                                                         : 0.2f * frand();
+        float a = 6.2831853f * frand();
+        x += step * sinf(a);
+        z += step * cosf(a);
+      }
+      pts[2 * i] = x;
+      pts[2 * i + 1] = z;
+    }
+    smgi_path p = make(&b);
+    /* query points on, near and far from the path */
+    uint32_t k = smgi_xorshift(&rng) % n;
+    float off = (trial % 4 == 0) ? 0.0f : (trial % 4 == 1) ? 0.01f : 5.0f * frand();
+    float qx = pts[2 * k] + off, qz = pts[2 * k + 1] - 0.5f * off;
+    uint32_t seg = 0, seg_rule = 0;
+    float d;
+    float s = smgi_path_load(&p, pts, 0, n, 1, qx, qz, &seg, &d);
+    float s_rule = rule_projection(&p, qx, qz, &seg_rule);
+    assert_int_equal(seg, seg_rule);
+    assert_true(s == s_rule);
+  }
+}
+
+/* Evaluation by arc length from any hint lands on the last segment whose
+ * start is at or before s (galloping from far hints included). */
+static void test_eval_from_any_hint(void** state) {
+  (void)state;
+  static buf b;
+  static float pts[2 * CAP];
+  smgi_path p = make(&b);
+  uint32_t n = CAP;
+  float x = 0, z = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    float step = (i % 9 == 0) ? 0.0f : 0.05f + frand(); /* some repeats */
+    x += step * 0.6f;
+    z += step * 0.8f;
+    pts[2 * i] = x;
+    pts[2 * i + 1] = z;
+  }
+  uint32_t seg = 0;
+  float d;
+  smgi_path_load(&p, pts, 0, n, 0, 0, 0, &seg, &d);
+  for (int q = 0; q < 20000; ++q) {
+    float s = p.length * frand();
+    uint32_t hint = smgi_xorshift(&rng) % (n + 5u); /* some out of range */
+    float ex, ez;
+    seg = hint;
+    smgi_path_eval(&p, s, &seg, &ex, &ez, NULL);
+    assert_true(seg + 1u < n);
+    /* the segment holds s */
+    assert_true(p.cum[seg] <= s && s <= p.cum[seg + 1u]);
+    /* and the point is where s says */
+    float u = (s - p.cum[seg]) / (p.cum[seg + 1u] - p.cum[seg] + 1e-30f);
+    float wx = pts[2 * seg] + u * (pts[2 * seg + 2] - pts[2 * seg]);
+    assert_float_equal(ex, wx, 1e-3f);
+  }
+}
+
 static void test_local_projection(void** state) {
   (void)state;
   static buf b;
@@ -129,6 +229,21 @@ static void test_finite(void** state) {
     v[i] = keep;
   }
   assert_true(smgi_all_finite(v, 0));
+  /* every length and position through the unrolled body and the tail */
+  float w[41];
+  for (uint32_t n = 0; n <= 41; ++n) {
+    for (uint32_t i = 0; i < 41; ++i) w[i] = (float)i - 20.0f;
+    assert_true(smgi_all_finite(w, n));
+    for (uint32_t i = 0; i < n; ++i) {
+      w[i] = (i & 1u) ? INFINITY : NAN;
+      assert_false(smgi_all_finite(w, n));
+      w[i] = 1.0f;
+    }
+    if (n < 41) { /* a bad value just past the end is not looked at */
+      w[n] = NAN;
+      assert_true(smgi_all_finite(w, n));
+    }
+  }
 }
 
 /* smgi_wrap_angle is O(1): huge finite angles (the blob fuzzer found a
@@ -160,6 +275,8 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_lengths_and_eval),
       cmocka_unit_test(test_projection_matches_brute_force),
+      cmocka_unit_test(test_projection_is_the_rule),
+      cmocka_unit_test(test_eval_from_any_hint),
       cmocka_unit_test(test_local_projection),
       cmocka_unit_test(test_finite),
       cmocka_unit_test(test_wrap_angle),
