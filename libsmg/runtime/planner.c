@@ -298,13 +298,14 @@ static float seq_pen(const seq_ctx* c, const smgi_edge* e, float a, float b) {
 /* Append edge `ei` to the sequence in `in`: root samples at the edge's
  * middle (edges of 4+ frames) and end, each weighted by the frames it
  * stands for inside the window. *maxd gets the largest sample distance. */
-static void seq_step(seq_ctx* c, const seq_state* in, uint32_t ei,
-                     float pen_scale, float bound, seq_state* out,
-                     float* maxd) {
+static void seq_step(seq_ctx* c, const seq_state* in, float cw, float sw,
+                     uint32_t ei, float pen_scale, float bound,
+                     seq_state* out, float* maxd) {
   const smg_graph* g = c->ch->graph;
   const smgi_edge* e = &g->data.lower_edges[ei];
-  /* one rotation places both the edge's end and its mid sample */
-  const float cw = cosf(in->W.h), sw = sinf(in->W.h);
+  /* one rotation (cw, sw = cos, sin of in->W.h, computed once by the
+   * caller for all of a state's children) places both the edge's end and
+   * its mid sample */
   {
     const float* dp = e->displacement;
     out->W.x = in->W.x + (cw * dp[0] + sw * dp[1]);
@@ -452,12 +453,13 @@ static void seq_dfs(seq_ctx* c, seq_state st, uint32_t branches,
       seq_state kids[SEQ_MAX_KIDS];
       uint32_t kid_edge[SEQ_MAX_KIDS], nk = 0;
       uint32_t cnt = n->edge_count < SEQ_MAX_KIDS ? n->edge_count : SEQ_MAX_KIDS;
+      const float cw = cosf(st.W.h), sw = sinf(st.W.h);
       for (uint32_t k = 0; k < cnt && c->budget > 0; ++k) {
         uint32_t ei = n->first_edge + k;
         seq_state nx;
         float md;
         c->budget--;
-        seq_step(c, &st, ei, 0.5f, *best, &nx, &md);
+        seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
         if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
         uint32_t i = nk++;
         while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >
@@ -481,7 +483,8 @@ static void seq_dfs(seq_ctx* c, seq_state st, uint32_t branches,
     seq_state nx;
     float md;
     c->budget--;
-    seq_step(c, &st, n->first_edge, 0.5f, *best, &nx, &md);
+    seq_step(c, &st, cosf(st.W.h), sinf(st.W.h), n->first_edge, 0.5f,
+             *best, &nx, &md);
     st = nx;
     c->path[depth++] = n->first_edge;
     if (st.cost + st.pen >= *best) return;
@@ -547,13 +550,14 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
   seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
   seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
+  const float cw = cosf(W.h), sw = sinf(W.h);
   for (uint32_t k = 0; k < count; ++k) {
     cand* x = &c[k];
     uint32_t ei = n->first_edge + k;
     const smgi_edge* e = &g->data.lower_edges[ei];
     float md;
     if (sc.budget > 0) sc.budget--;
-    seq_step(&sc, &root, ei, 1.0f, INFINITY, &first[k], &md);
+    seq_step(&sc, &root, cw, sw, ei, 1.0f, INFINITY, &first[k], &md);
     x->edge = ei;
     x->end = first[k].W;
     (void)md;
