@@ -2,14 +2,43 @@
  * graph_derived.c - load-time lookup tables for the runtime (see
  * graph_derived.h). Everything lives in one allocation so destroy is one
  * free and the tables stay close together in memory.
+ *
+ * This runs inside every smg_graph_load_*, and a whole graph must load in
+ * about a millisecond, so the three tables that cost most are built with
+ * care (tests/runtime/test_derived.c keeps the plain versions as oracles
+ * and checks every table against them):
+ *  - node_turn, a dynamic programme over 3 s of frames x every edge, runs
+ *    eight frames at a time in both directions at once (build_turn);
+ *  - node_look and node_trail come from one walk per node that carries the
+ *    cosine and sine of its heading instead of calling sincosf per edge
+ *    (build_walks; x and z agree with composing transforms edge by edge to
+ *    float rounding, everything else is bit for bit the same);
+ *  - edge_mid inverts each node's ground frame once, not once per edge.
  */
 #include "graph_derived.h"
 
 #include <math.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "alloc.h"
 #include "rmath.h"
+
+/* node_turn's blocks use SSE2 where it is part of the ABI (x86-64); the
+ * plain loops compute the same lanes elsewhere (or with
+ * -DSMGI_TURN_SSE=0, which is how the test covers them). */
+#ifndef SMGI_TURN_SSE
+#if defined(__SSE2__) || defined(_M_X64) || \
+    (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define SMGI_TURN_SSE 1
+#else
+#define SMGI_TURN_SSE 0
+#endif
+#endif
+#if SMGI_TURN_SSE
+#include <emmintrin.h>
+#endif
 
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
@@ -65,14 +94,10 @@ static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
   in_first[0] = 0;
 }
 
-/* Natural continuation of every lower node and where following it for
- * SMGI_LOOK_SECONDS leads (ground transform composed edge by edge). */
-static void build_look(const smgi_graph_data* d, uint32_t* natural,
-                       float* look) {
-  const uint32_t LN = d->lower_node_count;
-  const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
-  const float look_frames = SMGI_LOOK_SECONDS * fps;
-  for (uint32_t n = 0; n < LN; ++n) {
+/* natural[n]: the out-edge continuing node n's original motion, else its
+ * cheapest edge, else SMGI_NONE. */
+static void find_natural(const smgi_graph_data* d, uint32_t* natural) {
+  for (uint32_t n = 0; n < d->lower_node_count; ++n) {
     const smgi_node* node = &d->lower_nodes[n];
     natural[n] = SMGI_NONE;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
@@ -93,96 +118,454 @@ static void build_look(const smgi_graph_data* d, uint32_t* natural,
       natural[n] = best;
     }
   }
-  for (uint32_t n = 0; n < LN; ++n) {
-    smgi_xform2 acc = {0.0f, 0.0f, 0.0f};
-    float arc = 0.0f, frames = 0.0f;
-    uint32_t cur = n;
-    for (uint32_t hop = 0; hop < 256u && frames < look_frames; ++hop) {
-      uint32_t e = natural[cur];
-      if (e == SMGI_NONE) break;
-      const smgi_edge* E = &d->lower_edges[e];
-      smgi_xform2 step = {E->displacement[0], E->displacement[1],
-                          E->displacement[2]};
-      acc = smgi_xf_mul(acc, step);
-      arc += E->arc_length;
-      frames += (float)E->frame_count;
-      cur = E->to;
-    }
-    look[4u * n + 0u] = acc.x;
-    look[4u * n + 1u] = acc.z;
-    look[4u * n + 2u] = acc.h;
-    look[4u * n + 3u] = arc;
-  }
 }
 
-/* The natural continuation of every node sampled every
- * SMGI_TRAIL_STEP_SECONDS for SMGI_TRAIL_SAMPLES steps. */
-static void build_trail(const smgi_graph_data* d, const uint32_t* natural,
-                        float* trail, float* trail_frames,
-                        uint32_t* trail_edge) {
+/* One step of a node's natural continuation, gathered once so a walk reads
+ * one small record per edge instead of node, edge and a sincosf. */
+typedef struct walk_step {
+  uint32_t edge;     /* natural[node], SMGI_NONE ends every walk here */
+  uint32_t to;
+  float frames;      /* frame_count */
+  float x, z, h;     /* displacement */
+  float arc;
+  float c, s;        /* cosf(h), sinf(h) */
+} walk_step;
+
+static void write_sample(float* o, float x, float z, float h, float arc) {
+  o[0] = x;
+  o[1] = z;
+  o[2] = h;
+  o[3] = arc;
+}
+
+/* node_look and node_trail: every lower node's natural continuation,
+ * followed for SMGI_TRAIL_SAMPLES * SMGI_TRAIL_STEP_SECONDS, sampled every
+ * SMGI_TRAIL_STEP_SECONDS at the first edge end past the step (node_trail)
+ * and at the first edge end past SMGI_LOOK_SECONDS or after 256 edges
+ * (node_look; 0.7 s < 2 s, so the look is a prefix of the trail's walk).
+ *
+ * The ground transform is composed edge by edge as acc = acc * step with
+ * the heading wrapped each time, as smgi_xf_mul does; but instead of
+ * cosf/sinf of the accumulated heading at every edge (20k calls on a CMU
+ * graph, most of this function's time) the walk rotates the cosine and
+ * sine it carries by each edge's own, computed once per node. Heading, arc
+ * length, frames and edges are the same operations as composing with
+ * smgi_xf_mul, bit for bit; x and z differ from it by float rounding only
+ * (the first two edges of every walk are exact, later ones drift by a few
+ * ulps of the rotation, ~1e-6 m over a 2 s walk). */
+static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
+                        walk_step* ws, float* look, float* trail,
+                        float* trail_frames, uint32_t* trail_edge) {
   const uint32_t LN = d->lower_node_count, K = SMGI_TRAIL_SAMPLES;
   const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
+  const float look_frames = SMGI_LOOK_SECONDS * fps;
   const float step = SMGI_TRAIL_STEP_SECONDS * fps;
+  for (uint32_t m = 0; m < LN; ++m) {
+    walk_step* w = &ws[m];
+    w->edge = natural[m];
+    if (w->edge == SMGI_NONE) continue;
+    const smgi_edge* E = &d->lower_edges[w->edge];
+    w->to = E->to;
+    w->frames = (float)E->frame_count;
+    w->x = E->displacement[0];
+    w->z = E->displacement[1];
+    w->h = E->displacement[2];
+    w->arc = E->arc_length;
+    w->c = cosf(w->h);
+    w->s = sinf(w->h);
+  }
   for (uint32_t n = 0; n < LN; ++n) {
-    smgi_xform2 acc = {0.0f, 0.0f, 0.0f};
+    float x = 0.0f, z = 0.0f, h = 0.0f, c = 1.0f, s = 0.0f;
     float arc = 0.0f, frames = 0.0f;
-    uint32_t cur = n, last = natural[n];
-    uint32_t e = natural[cur];
+    uint32_t cur = n, last = natural[n], walked = 0;
+    int looked = 0;
     for (uint32_t k = 0; k < K; ++k) {
-      float want = step * (float)(k + 1u);
+      const float want = step * (float)(k + 1u);
       for (uint32_t hop = 0; hop < 1024u && frames < want; ++hop) {
-        e = natural[cur];
-        if (e == SMGI_NONE) break;
-        const smgi_edge* E = &d->lower_edges[e];
-        smgi_xform2 st = {E->displacement[0], E->displacement[1],
-                          E->displacement[2]};
-        acc = smgi_xf_mul(acc, st);
-        arc += E->arc_length;
-        frames += (float)E->frame_count;
-        cur = E->to;
-        last = e;
+        const walk_step* w = &ws[cur];
+        if (w->edge == SMGI_NONE) break;
+        /* acc = smgi_xf_mul(acc, step), with (c, s) standing for
+         * (cosf(h), sinf(h)) */
+        float rx = c * w->x + s * w->z;
+        float rz = -s * w->x + c * w->z;
+        x = x + rx;
+        z = z + rz;
+        h = smgi_wrap_angle(h + w->h);
+        float c2 = c * w->c - s * w->s;
+        s = s * w->c + c * w->s;
+        c = c2;
+        arc += w->arc;
+        frames += w->frames;
+        cur = w->to;
+        last = w->edge;
+        if (!looked && (++walked >= 256u || !(frames < look_frames))) {
+          write_sample(look + 4u * (size_t)n, x, z, h, arc);
+          looked = 1;
+        }
       }
-      float* o = trail + 4u * ((size_t)n * K + k);
-      o[0] = acc.x;
-      o[1] = acc.z;
-      o[2] = acc.h;
-      o[3] = arc;
+      write_sample(trail + 4u * ((size_t)n * K + k), x, z, h, arc);
       trail_frames[(size_t)n * K + k] = frames;
       trail_edge[(size_t)n * K + k] = last;
     }
+    /* the continuation ended before SMGI_LOOK_SECONDS */
+    if (!looked) write_sample(look + 4u * (size_t)n, x, z, h, arc);
   }
 }
 
-/* node_turn by dynamic programming over frames: best[t][n] = the largest
- * cumulative heading change (in direction `dir`) reached within t frames
- * from n, 0 included (not turning yet). An edge longer than the time left
- * counts in proportion. `scratch` holds (T + 1) * LN floats. */
-static void build_turn(const smgi_graph_data* d, float* scratch,
+/* ---- node_turn ------------------------------------------------------------
+ * best[t][n] = the largest cumulative heading change (in one direction)
+ * reached within t frames from n, 0 included (not turning yet):
+ *   best[0][n] = 0,
+ *   best[t][n] = max(0, max over out-edges e of
+ *                 fc(e) <= t ? dh(e) + best[t - fc(e)][to(e)]
+ *                            : dh(e) * t / fc(e))
+ * (an edge longer than the time left counts in proportion), for the left
+ * (dh = +dheading) and right (dh = -dheading) directions; node_turn is
+ * best[T][n]. T is 90 frames at 30 Hz and a CMU graph has ~1500 edges, so
+ * the programme is ~270k edge steps: the code below computes the very same
+ * float operations (max is exact, so its order does not matter) in an
+ * order that keeps the CPU busy.
+ *
+ * Memory: per node, a left and a right row of best[] over time (time is
+ * contiguous, so a block of 8 frames of best[t - fc][to] is one contiguous
+ * read). Each row starts with TURN_PAD zeros that lanes with t < fc read
+ * before their value is replaced by the proportional term.
+ *
+ * Blocks: frames t0 .. t0 + 7 are computed together, edge by edge. An edge
+ * with fc >= 8 reads only earlier blocks; one with fc < 8 also reads the
+ * current block of its `to` node, so nodes are visited in an order where
+ * every such `to` comes first (post-order of the graph of short edges). If
+ * short edges form a cycle there is no such order and the programme runs
+ * one frame at a time (baked CMU and synthetic graphs have no cycle of
+ * edges shorter than 11 frames). */
+#define TURN_BLOCK 8u
+#define TURN_PAD 8u
+
+
+typedef struct turn_edge {
+  ptrdiff_t to_row;   /* index of best[0][to] in the left row */
+  ptrdiff_t from_row; /* index of best[0][from] in the left row */
+  float dh;           /* left heading change; the right row uses -dh */
+  float keep;         /* 0 for a node's first edge (its max restarts at
+                         0), else 1 */
+  uint32_t fc;
+  uint32_t unused;
+} turn_edge;
+
+/* A block where every edge has fc <= t0: no proportional terms. */
+static void turn_block(const turn_edge* te, uint32_t count, float* hist,
+                       size_t row, uint32_t t0) {
+#if SMGI_TURN_SSE
+  /* _mm_max_ps(v, a) is v > a ? v : a lane by lane, as below */
+  __m128 al0 = _mm_setzero_ps(), al1 = al0, ar0 = al0, ar1 = al0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const turn_edge* e = &te[i];
+    const float* sl = hist + e->to_row + ((ptrdiff_t)t0 - (ptrdiff_t)e->fc);
+    const float* sr = sl + row;
+    float* dl = hist + e->from_row + t0;
+    const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_set1_ps(-e->dh);
+    const __m128 keep = _mm_set1_ps(e->keep);
+    al0 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl)), _mm_mul_ps(al0, keep));
+    al1 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl + 4)),
+                     _mm_mul_ps(al1, keep));
+    ar0 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sr)), _mm_mul_ps(ar0, keep));
+    ar1 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sr + 4)),
+                     _mm_mul_ps(ar1, keep));
+    /* stored after every edge; the node's last edge leaves its max (no
+     * one reads the node's block before that: visiting order) */
+    _mm_storeu_ps(dl, al0);
+    _mm_storeu_ps(dl + 4, al1);
+    _mm_storeu_ps(dl + row, ar0);
+    _mm_storeu_ps(dl + row + 4, ar1);
+  }
+#else
+  float al[TURN_BLOCK] = {0.0f}, ar[TURN_BLOCK] = {0.0f};
+  for (uint32_t i = 0; i < count; ++i) {
+    const turn_edge* e = &te[i];
+    const float* sl = hist + e->to_row + ((ptrdiff_t)t0 - (ptrdiff_t)e->fc);
+    const float* sr = sl + row;
+    float* dl = hist + e->from_row + t0;
+    const float dh = e->dh, nd = -dh, keep = e->keep;
+    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+      float v = dh + sl[j], a = al[j] * keep;
+      float w = nd + sr[j], b = ar[j] * keep;
+      al[j] = v > a ? v : a;
+      ar[j] = w > b ? w : b;
+    }
+    /* stored after every edge; the node's last edge leaves its max (no
+     * one reads the node's block before that: visiting order) */
+    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+      dl[j] = al[j];
+      dl[row + j] = ar[j];
+    }
+  }
+#endif
+}
+
+/* A block where some edges are longer than some of its frames: lanes with
+ * t < fc take the proportional term, and read the pad or older frames
+ * meanwhile (never past the row's start). */
+static void turn_block_early(const turn_edge* te, uint32_t count,
+                             float* hist, size_t row, uint32_t t0) {
+#if SMGI_TURN_SSE
+  const __m128 t_lo = _mm_setr_ps((float)t0, (float)(t0 + 1u),
+                                  (float)(t0 + 2u), (float)(t0 + 3u));
+  const __m128 t_hi = _mm_add_ps(t_lo, _mm_set1_ps(4.0f));
+  const __m128 sign = _mm_set1_ps(-0.0f);
+  __m128 al0 = _mm_setzero_ps(), al1 = al0, ar0 = al0, ar1 = al0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const turn_edge* e = &te[i];
+    ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
+    if (back < -(ptrdiff_t)TURN_PAD) back = -(ptrdiff_t)TURN_PAD;
+    const float* sl = hist + e->to_row + back;
+    const float* sr = sl + row;
+    float* dl = hist + e->from_row + t0;
+    const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_xor_ps(dh, sign);
+    const __m128 keep = _mm_set1_ps(e->keep), fc = _mm_set1_ps((float)e->fc);
+    /* full lanes: t >= fc (exact: both below 2^24) */
+    const __m128 f0 = _mm_cmpge_ps(t_lo, fc), f1 = _mm_cmpge_ps(t_hi, fc);
+    /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
+     * symmetric, so the right direction negates the left's */
+    const __m128 p0 = _mm_div_ps(_mm_mul_ps(dh, t_lo), fc);
+    const __m128 p1 = _mm_div_ps(_mm_mul_ps(dh, t_hi), fc);
+    __m128 v0 = _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(dh, _mm_loadu_ps(sl))),
+                          _mm_andnot_ps(f0, p0));
+    __m128 v1 = _mm_or_ps(_mm_and_ps(f1, _mm_add_ps(dh, _mm_loadu_ps(sl + 4))),
+                          _mm_andnot_ps(f1, p1));
+    __m128 w0 = _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(nd, _mm_loadu_ps(sr))),
+                          _mm_andnot_ps(f0, _mm_xor_ps(p0, sign)));
+    __m128 w1 = _mm_or_ps(_mm_and_ps(f1, _mm_add_ps(nd, _mm_loadu_ps(sr + 4))),
+                          _mm_andnot_ps(f1, _mm_xor_ps(p1, sign)));
+    al0 = _mm_max_ps(v0, _mm_mul_ps(al0, keep));
+    al1 = _mm_max_ps(v1, _mm_mul_ps(al1, keep));
+    ar0 = _mm_max_ps(w0, _mm_mul_ps(ar0, keep));
+    ar1 = _mm_max_ps(w1, _mm_mul_ps(ar1, keep));
+    _mm_storeu_ps(dl, al0);
+    _mm_storeu_ps(dl + 4, al1);
+    _mm_storeu_ps(dl + row, ar0);
+    _mm_storeu_ps(dl + row + 4, ar1);
+  }
+#else
+  float al[TURN_BLOCK] = {0.0f}, ar[TURN_BLOCK] = {0.0f}, tf[TURN_BLOCK];
+  for (uint32_t j = 0; j < TURN_BLOCK; ++j) tf[j] = (float)(t0 + j);
+  for (uint32_t i = 0; i < count; ++i) {
+    const turn_edge* e = &te[i];
+    ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
+    if (back < -(ptrdiff_t)TURN_PAD) back = -(ptrdiff_t)TURN_PAD;
+    const float* sl = hist + e->to_row + back;
+    const float* sr = sl + row;
+    float* dl = hist + e->from_row + t0;
+    const float dh = e->dh, nd = -dh, keep = e->keep, fcf = (float)e->fc;
+    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+      const int full = t0 + j >= e->fc;
+      /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
+       * symmetric */
+      float p = dh * tf[j] / fcf;
+      float v = full ? dh + sl[j] : p, a = al[j] * keep;
+      float w = full ? nd + sr[j] : -p, b = ar[j] * keep;
+      al[j] = v > a ? v : a;
+      ar[j] = w > b ? w : b;
+    }
+    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+      dl[j] = al[j];
+      dl[row + j] = ar[j];
+    }
+  }
+#endif
+}
+
+/* The frame-at-a-time programme, for graphs with a cycle of short edges. */
+static void turn_frames(const turn_edge* te, uint32_t count, float* hist,
+                        size_t row, uint32_t T) {
+  for (uint32_t t = 1; t <= T; ++t) {
+    float al = 0.0f, ar = 0.0f;
+    for (uint32_t i = 0; i < count; ++i) {
+      const turn_edge* e = &te[i];
+      const float dh = e->dh, nd = -dh, keep = e->keep;
+      float v, w;
+      if (e->fc <= t) {
+        const float* s = hist + e->to_row + (t - e->fc);
+        v = dh + s[0];
+        w = nd + s[row];
+      } else {
+        v = dh * (float)t / (float)e->fc;
+        w = -v;
+      }
+      float a = al * keep, b = ar * keep;
+      al = v > a ? v : a;
+      ar = w > b ? w : b;
+      hist[e->from_row + t] = al;
+      hist[e->from_row + t + row] = ar;
+    }
+  }
+}
+
+/* Frames of the horizon and the length of one best[] row. */
+static uint32_t turn_horizon(const smgi_graph_data* d) {
+  const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
+  return (uint32_t)(SMGI_TURN_SECONDS * fps + 0.5f);
+}
+
+static size_t turn_row(uint32_t T) {
+  uint32_t blocks = (T + TURN_BLOCK - 1u) / TURN_BLOCK;
+  return TURN_PAD + 1u + (size_t)blocks * TURN_BLOCK;
+}
+
+/* Scratch bytes build_turn needs (0 on overflow). */
+static size_t turn_scratch_size(const smgi_graph_data* d) {
+  const size_t LN = d->lower_node_count, LE = d->lower_edge_count;
+  const size_t row = turn_row(turn_horizon(d));
+  if (LN > SIZE_MAX / 64u / row) return 0;
+  return sizeof(turn_edge) * LE + sizeof(uint32_t) * 4u * LN +
+         sizeof(float) * 2u * LN * row + 64u;
+}
+
+/* An order of the nodes where every edge shorter than TURN_BLOCK frames
+ * leads to an earlier node: by level (0: no short out-edge, else 1 + the
+ * largest level its short edges lead to), which also puts a node's block
+ * far from the reads of it (a read of a block just stored with other
+ * offsets waits for the store to reach the cache). Returns 0 if short
+ * edges form a cycle. `state` (LN) and `stack` (2 LN) are scratch. */
+static int short_edge_order(const smgi_graph_data* d, uint32_t* order,
+                            uint32_t* state, uint32_t* stack) {
+  const uint32_t LN = d->lower_node_count;
+  uint32_t max_level = 0;
+  /* state: 0 unseen, 1 on the DFS stack, 2 + level when done */
+  memset(state, 0, sizeof(uint32_t) * LN);
+  for (uint32_t root = 0; root < LN; ++root) {
+    if (state[root]) continue;
+    uint32_t top = 0;
+    stack[0] = root;
+    stack[1] = 0;
+    state[root] = 1;
+    for (;;) {
+      const uint32_t n = stack[2u * top];
+      const smgi_node* node = &d->lower_nodes[n];
+      const smgi_edge* edges = d->lower_edges + node->first_edge;
+      if (stack[2u * top + 1u] < node->edge_count) {
+        const smgi_edge* e = &edges[stack[2u * top + 1u]++];
+        if (e->frame_count >= TURN_BLOCK) continue;
+        if (state[e->to] == 1u) return 0; /* back to an open node */
+        if (state[e->to] == 0u) {
+          ++top;
+          stack[2u * top] = e->to;
+          stack[2u * top + 1u] = 0;
+          state[e->to] = 1u;
+        }
+        continue;
+      }
+      uint32_t level = 0;
+      for (uint32_t k = 0; k < node->edge_count; ++k)
+        if (edges[k].frame_count < TURN_BLOCK &&
+            state[edges[k].to] - 1u > level)
+          level = state[edges[k].to] - 1u;
+      state[n] = 2u + level;
+      if (level > max_level) max_level = level;
+      if (top == 0) break;
+      --top;
+    }
+  }
+  /* counting sort by level */
+  uint32_t* first = stack;
+  memset(first, 0, sizeof(uint32_t) * ((size_t)max_level + 2u));
+  for (uint32_t n = 0; n < LN; ++n) first[state[n] - 1u]++;
+  for (uint32_t l = 0; l <= max_level; ++l) first[l + 1u] += first[l];
+  for (uint32_t n = 0; n < LN; ++n) order[first[state[n] - 2u]++] = n;
+  return 1;
+}
+
+static void build_turn(const smgi_graph_data* d, void* scratch,
                        float* node_turn) {
   const uint32_t LN = d->lower_node_count;
-  const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
-  const uint32_t T = (uint32_t)(SMGI_TURN_SECONDS * fps + 0.5f);
-  for (uint32_t dir = 0; dir < 2u; ++dir) {
-    const float sg = dir == 0 ? 1.0f : -1.0f;
-    for (uint32_t n = 0; n < LN; ++n) scratch[n] = 0.0f;
-    for (uint32_t t = 1; t <= T; ++t) {
-      float* cur = scratch + (size_t)t * LN;
-      for (uint32_t n = 0; n < LN; ++n) {
-        const smgi_node* node = &d->lower_nodes[n];
-        float b = 0.0f;
-        for (uint32_t k = 0; k < node->edge_count; ++k) {
-          const smgi_edge* e = &d->lower_edges[node->first_edge + k];
-          float dh = sg * e->displacement[2];
-          float v = e->frame_count <= t
-                        ? dh + scratch[(size_t)(t - e->frame_count) * LN + e->to]
-                        : dh * (float)t / (float)e->frame_count;
-          if (v > b) b = v;
-        }
-        cur[n] = b;
-      }
+  const uint32_t T = turn_horizon(d);
+  const size_t row = turn_row(T);
+  turn_edge* te = (turn_edge*)scratch;
+  uint32_t* order = (uint32_t*)(te + d->lower_edge_count);
+  uint32_t* state = order + LN;
+  uint32_t* stack = state + LN;
+  float* hist = (float*)(stack + 2u * (size_t)LN);
+  if (LN == 0) return;
+
+  int blocks = short_edge_order(d, order, state, stack);
+  if (!blocks)
+    for (uint32_t n = 0; n < LN; ++n) order[n] = n;
+  uint32_t count = 0, max_fc = 0;
+  for (uint32_t i = 0; i < LN; ++i) {
+    const uint32_t n = order[i];
+    const smgi_node* node = &d->lower_nodes[n];
+    float* r = hist + (size_t)2u * n * row;
+    /* the pad and best[0] = 0; a node without edges stays at 0 */
+    size_t zeros = node->edge_count ? TURN_PAD + 1u : row;
+    memset(r, 0, sizeof(float) * zeros);
+    memset(r + row, 0, sizeof(float) * zeros);
+    for (uint32_t k = 0; k < node->edge_count; ++k) {
+      const smgi_edge* e = &d->lower_edges[node->first_edge + k];
+      turn_edge* o = &te[count++];
+      o->to_row = (ptrdiff_t)((size_t)2u * e->to * row + TURN_PAD);
+      o->from_row = (ptrdiff_t)((size_t)2u * n * row + TURN_PAD);
+      o->dh = e->displacement[2];
+      o->keep = k ? 1.0f : 0.0f;
+      o->fc = e->frame_count;
+      o->unused = 0;
+      if (e->frame_count > max_fc) max_fc = e->frame_count;
     }
-    for (uint32_t n = 0; n < LN; ++n)
-      node_turn[2u * n + dir] = scratch[(size_t)T * LN + n];
+  }
+  if (blocks) {
+    for (uint32_t t0 = 1; t0 <= T; t0 += TURN_BLOCK) {
+      if (t0 >= max_fc)
+        turn_block(te, count, hist, row, t0);
+      else
+        turn_block_early(te, count, hist, row, t0);
+    }
+  } else {
+    turn_frames(te, count, hist, row, T);
+  }
+  for (uint32_t n = 0; n < LN; ++n) {
+    const float* r = hist + (size_t)2u * n * row + TURN_PAD + T;
+    node_turn[2u * n] = r[0];
+    node_turn[2u * n + 1u] = r[row];
+  }
+}
+
+/* edge_mid for lower edges of 4+ frames: inverse(ground(from.frame)) *
+ * ground(mid frame), composed as smgi_xf_inv and smgi_xf_point would, with
+ * the node's inverse (one sincosf) computed once for all its edges. */
+static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
+  for (uint32_t n = 0; n < d->lower_node_count; ++n) {
+    const smgi_node* node = &d->lower_nodes[n];
+    int have = 0;
+    float ix = 0.0f, iz = 0.0f, ih = 0.0f, c = 1.0f, s = 0.0f;
+    for (uint32_t k = 0; k < node->edge_count; ++k) {
+      const uint32_t ei = node->first_edge + k;
+      const smgi_edge* E = &d->lower_edges[ei];
+      float* o = edge_mid + 4u * (size_t)ei;
+      if (E->frame_count < 4u) {
+        o[0] = o[1] = o[2] = o[3] = 0.0f;
+        continue;
+      }
+      if (!have) {
+        /* smgi_xf_inv: rotate (-x, -z) by -h, heading wrap(-h) */
+        const float* g0 = d->frames[node->frame].root2d;
+        const float nh = -g0[2];
+        c = cosf(nh);
+        s = sinf(nh);
+        ix = c * -g0[0] + s * -g0[1];
+        iz = -s * -g0[0] + c * -g0[1];
+        ih = smgi_wrap_angle(nh);
+        /* smgi_xf_point rotates by the wrapped heading: the same angle
+         * unless -h was outside (-pi, pi] */
+        if (ih != nh) {
+          c = cosf(ih);
+          s = sinf(ih);
+        }
+        have = 1;
+      }
+      const float* r = d->frames[E->first_frame + E->frame_count / 2u].root2d;
+      o[0] = ix + (c * r[0] + s * r[1]);
+      o[1] = iz + (-s * r[0] + c * r[1]);
+      o[2] = smgi_wrap_angle(ih + r[2]);
+      o[3] = 0.0f;
+    }
   }
 }
 
@@ -211,9 +594,28 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
       off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
   size_t block = align16(sizeof(smgi_derived));
 
+  /* One scratch block for the phases below, sized for the largest. */
+  uint32_t maxn = LN > UN ? LN : UN;
+  uint32_t maxe = d->lower_edge_count > d->upper_edge_count
+                      ? d->lower_edge_count
+                      : d->upper_edge_count;
+  size_t scratch_size = sizeof(uint32_t) * ((size_t)maxn + 1u + maxe + maxn);
+  size_t walk_size = sizeof(walk_step) * (size_t)LN;
+  size_t turn_size = turn_scratch_size(d);
+  if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
+  if (walk_size > scratch_size) scratch_size = walk_size;
+  if (turn_size > scratch_size) scratch_size = turn_size;
+
   uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 16);
   if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
-  memset(mem, 0, block + total);
+  void* scratch = smgi_alloc(&g->allocator, scratch_size, 16);
+  if (!scratch) {
+    smgi_free(&g->allocator, mem);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  /* Every table below is written in full; only the struct and the splice
+   * counts start from zero (a memset of the whole block cost ~10 us). */
+  memset(mem, 0, block);
   smgi_derived* dv = (smgi_derived*)mem;
   uint8_t* base = mem + block;
   uint8_t* lower_hops = base + off_lh;
@@ -229,44 +631,23 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* trail_edge = (uint32_t*)(base + off_te);
   float* node_turn = (float*)(base + off_nt);
   float* edge_mid = (float*)(base + off_em);
-  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
-    const smgi_edge* E = &d->lower_edges[e];
-    if (E->frame_count < 4u) continue;
-    const float* g0 = d->frames[d->lower_nodes[E->from].frame].root2d;
-    const float* r = d->frames[E->first_frame + E->frame_count / 2u].root2d;
-    smgi_xform2 inv = smgi_xf_inv((smgi_xform2){g0[0], g0[1], g0[2]});
-    float x, z;
-    smgi_xf_point(inv, r[0], r[1], &x, &z);
-    edge_mid[4u * e] = x;
-    edge_mid[4u * e + 1u] = z;
-    edge_mid[4u * e + 2u] = smgi_wrap_angle(inv.h + r[2]);
-  }
 
-  /* Scratch for the BFS: reverse adjacency of the larger graph. */
-  uint32_t maxn = LN > UN ? LN : UN;
-  uint32_t maxe = d->lower_edge_count > d->upper_edge_count
-                      ? d->lower_edge_count
-                      : d->upper_edge_count;
-  size_t scratch_size = sizeof(uint32_t) * ((size_t)maxn + 1u + maxe + maxn);
-  uint32_t* scratch = (uint32_t*)smgi_alloc(&g->allocator, scratch_size, 16);
-  if (!scratch) {
-    smgi_free(&g->allocator, mem);
-    return SMG_ERROR_OUT_OF_MEMORY;
-  }
-  uint32_t* in_first = scratch;
-  uint32_t* in_edges = scratch + maxn + 1u;
+  build_edge_mid(d, edge_mid);
+
+  /* BFS scratch: reverse adjacency of either graph. */
+  uint32_t* in_first = (uint32_t*)scratch;
+  uint32_t* in_edges = in_first + maxn + 1u;
   uint32_t* queue = in_edges + maxe;
-
   build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_edges);
   compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_edges,
                queue, lower_hops);
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_edges);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_edges,
                queue, upper_hops);
-  smgi_free(&g->allocator, scratch);
 
   /* Splice index: SPLC is sorted by lower_frame (validated), so a counting
    * pass gives the CSR offsets. */
+  memset(splice_first, 0, sizeof(uint32_t) * ((size_t)F + 1u));
   for (uint32_t i = 0; i < d->splice_count; ++i) {
     uint32_t f = d->splices[i].lower_frame;
     if (f < F) splice_first[f + 1u]++;
@@ -296,20 +677,12 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
     if (d->lower_nodes[n].edge_count > maxdeg)
       maxdeg = d->lower_nodes[n].edge_count;
 
-  build_look(d, natural, node_look);
-  build_trail(d, natural, trail, trail_frames, trail_edge);
-  {
-    const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
-    size_t frames = (size_t)(SMGI_TURN_SECONDS * fps + 0.5f) + 1u;
-    float* tscr = (float*)smgi_alloc(&g->allocator,
-                                     sizeof(float) * frames * (LN ? LN : 1u), 16);
-    if (!tscr) {
-      smgi_free(&g->allocator, mem);
-      return SMG_ERROR_OUT_OF_MEMORY;
-    }
-    build_turn(d, tscr, node_turn);
-    smgi_free(&g->allocator, tscr);
-  }
+  find_natural(d, natural);
+  build_walks(d, natural, (walk_step*)scratch, node_look, trail,
+              trail_frames, trail_edge);
+  build_turn(d, scratch, node_turn);
+  smgi_free(&g->allocator, scratch);
+
   dv->node_turn = node_turn;
   dv->edge_mid = edge_mid;
   dv->node_trail = trail;
