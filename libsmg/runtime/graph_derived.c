@@ -25,18 +25,18 @@
 #include "alloc.h"
 #include "rmath.h"
 
-/* node_turn's blocks use SSE2 where it is part of the ABI (x86-64); the
- * plain loops compute the same lanes elsewhere (or with
- * -DSMGI_TURN_SSE=0, which is how the test covers them). */
-#ifndef SMGI_TURN_SSE
+/* node_turn's blocks and the walks use SSE2 where it is part of the ABI
+ * (x86-64); plain loops compute the same lanes elsewhere (or with
+ * -DSMGI_DERIVED_SSE=0, which is how the test covers them). */
+#ifndef SMGI_DERIVED_SSE
 #if defined(__SSE2__) || defined(_M_X64) || \
     (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#define SMGI_TURN_SSE 1
+#define SMGI_DERIVED_SSE 1
 #else
-#define SMGI_TURN_SSE 0
+#define SMGI_DERIVED_SSE 0
 #endif
 #endif
-#if SMGI_TURN_SSE
+#if SMGI_DERIVED_SSE
 #include <emmintrin.h>
 #endif
 
@@ -121,17 +121,23 @@ static void find_natural(const smgi_graph_data* d, uint32_t* natural) {
 }
 
 /* One step of a node's natural continuation, gathered once so a walk reads
- * one small record per edge instead of node, edge and a sincosf. */
+ * one record per edge instead of node, edge and a sincosf. a and b are laid
+ * out so that one 4-lane c * a + s * b gives both the edge's displacement
+ * rotated by the heading so far (c, s) and the heading after it. */
 typedef struct walk_step {
-  uint32_t edge;     /* natural[node], SMGI_NONE ends every walk here */
-  uint32_t to;
-  float frames;      /* frame_count */
-  float x, z, h;     /* displacement */
-  float arc;
-  float c, s;        /* cosf(h), sinf(h) */
+  float a[4];  /* dx, dz, cosf(dh), sinf(dh) */
+  float b[4];  /* dz, -dx, -sinf(dh), cosf(dh) */
+  uint32_t to; /* SMGI_NONE: no natural edge, every walk ends here */
+  float frames, h, arc;
 } walk_step;
 
-static void write_sample(float* o, float x, float z, float h, float arc) {
+/* smgi_wrap_angle with a cheaper test for the common case; the same
+ * result (+-pi take the slow path, which maps both to pi). */
+static inline float wrap_fast(float a) {
+  return fabsf(a) < SMGI_PI ? a : smgi_wrap_angle(a);
+}
+
+static void put_sample(float* o, float x, float z, float h, float arc) {
   o[0] = x;
   o[1] = z;
   o[2] = h;
@@ -142,7 +148,8 @@ static void write_sample(float* o, float x, float z, float h, float arc) {
  * followed for SMGI_TRAIL_SAMPLES * SMGI_TRAIL_STEP_SECONDS, sampled every
  * SMGI_TRAIL_STEP_SECONDS at the first edge end past the step (node_trail)
  * and at the first edge end past SMGI_LOOK_SECONDS or after 256 edges
- * (node_look; 0.7 s < 2 s, so the look is a prefix of the trail's walk).
+ * (node_look; 0.7 s < 2 s, so the look is a prefix of the trail's walk and
+ * one walk per node gives both).
  *
  * The ground transform is composed edge by edge as acc = acc * step with
  * the heading wrapped each time, as smgi_xf_mul does; but instead of
@@ -152,7 +159,8 @@ static void write_sample(float* o, float x, float z, float h, float arc) {
  * length, frames and edges are the same operations as composing with
  * smgi_xf_mul, bit for bit; x and z differ from it by float rounding only
  * (the first two edges of every walk are exact, later ones drift by a few
- * ulps of the rotation, ~1e-6 m over a 2 s walk). */
+ * ulps of the rotation: <= 3.4e-6 m over the 2 s walks of a CMU graph).
+ * The SSE2 and plain versions do the same operations lane by lane. */
 static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
                         walk_step* ws, float* look, float* trail,
                         float* trail_frames, uint32_t* trail_edge) {
@@ -162,53 +170,114 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
   const float step = SMGI_TRAIL_STEP_SECONDS * fps;
   for (uint32_t m = 0; m < LN; ++m) {
     walk_step* w = &ws[m];
-    w->edge = natural[m];
-    if (w->edge == SMGI_NONE) continue;
-    const smgi_edge* E = &d->lower_edges[w->edge];
+    if (natural[m] == SMGI_NONE) {
+      w->to = SMGI_NONE;
+      continue;
+    }
+    const smgi_edge* E = &d->lower_edges[natural[m]];
+    const float c = cosf(E->displacement[2]), s = sinf(E->displacement[2]);
+    w->a[0] = E->displacement[0];
+    w->a[1] = E->displacement[1];
+    w->a[2] = c;
+    w->a[3] = s;
+    w->b[0] = E->displacement[1];
+    w->b[1] = -E->displacement[0];
+    w->b[2] = -s;
+    w->b[3] = c;
     w->to = E->to;
     w->frames = (float)E->frame_count;
-    w->x = E->displacement[0];
-    w->z = E->displacement[1];
     w->h = E->displacement[2];
     w->arc = E->arc_length;
-    w->c = cosf(w->h);
-    w->s = sinf(w->h);
   }
   for (uint32_t n = 0; n < LN; ++n) {
-    float x = 0.0f, z = 0.0f, h = 0.0f, c = 1.0f, s = 0.0f;
-    float arc = 0.0f, frames = 0.0f;
-    uint32_t cur = n, last = natural[n], walked = 0;
+#if SMGI_DERIVED_SSE
+    /* acc lanes 0, 1: x, z; rot lanes 2, 3: cos, sin of the heading (0, 1:
+     * the last edge's rotated displacement, 2, 3 of acc: unused) */
+    __m128 acc = _mm_setzero_ps(), rot = _mm_setr_ps(0.0f, 0.0f, 1.0f, 0.0f);
+    float xz[4];
+#else
+    float x = 0.0f, z = 0.0f, c = 1.0f, s = 0.0f;
+#endif
+    float h = 0.0f, arc = 0.0f, frames = 0.0f;
+    /* `from`: where the last edge started (natural[from] is that edge) */
+    uint32_t cur = n, from = n, walked = 0;
     int looked = 0;
     for (uint32_t k = 0; k < K; ++k) {
       const float want = step * (float)(k + 1u);
-      for (uint32_t hop = 0; hop < 1024u && frames < want; ++hop) {
-        const walk_step* w = &ws[cur];
-        if (w->edge == SMGI_NONE) break;
-        /* acc = smgi_xf_mul(acc, step), with (c, s) standing for
-         * (cosf(h), sinf(h)) */
-        float rx = c * w->x + s * w->z;
-        float rz = -s * w->x + c * w->z;
-        x = x + rx;
-        z = z + rz;
-        h = smgi_wrap_angle(h + w->h);
-        float c2 = c * w->c - s * w->s;
-        s = s * w->c + c * w->s;
-        c = c2;
-        arc += w->arc;
-        frames += w->frames;
-        cur = w->to;
-        last = w->edge;
-        if (!looked && (++walked >= 256u || !(frames < look_frames))) {
-          write_sample(look + 4u * (size_t)n, x, z, h, arc);
-          looked = 1;
-        }
+      /* hops within this sample, as the plain walk counts them */
+      uint32_t hops = 0;
+      float target = want;
+      uint32_t limit = 1024u;
+      if (!looked) {
+        /* first to where the look ends, if it ends within this sample */
+        if (look_frames < want) target = look_frames;
+        if (walked >= 256u)
+          limit = 0;
+        else if (256u - walked < limit)
+          limit = 256u - walked;
       }
-      write_sample(trail + 4u * ((size_t)n * K + k), x, z, h, arc);
-      trail_frames[(size_t)n * K + k] = frames;
-      trail_edge[(size_t)n * K + k] = last;
+      for (;;) {
+        while (hops < limit && frames < target) {
+          const walk_step* w = &ws[cur];
+          if (w->to == SMGI_NONE) break;
+#if SMGI_DERIVED_SSE
+          const __m128 c = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(2, 2, 2, 2));
+          const __m128 s = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(3, 3, 3, 3));
+          rot = _mm_add_ps(_mm_mul_ps(c, _mm_loadu_ps(w->a)),
+                           _mm_mul_ps(s, _mm_loadu_ps(w->b)));
+          acc = _mm_add_ps(acc, rot);
+#else
+          x = x + (c * w->a[0] + s * w->b[0]);
+          z = z + (c * w->a[1] + s * w->b[1]);
+          const float c2 = c * w->a[2] + s * w->b[2];
+          s = c * w->a[3] + s * w->b[3];
+          c = c2;
+#endif
+          h = wrap_fast(h + w->h);
+          arc += w->arc;
+          frames += w->frames;
+          from = cur;
+          cur = w->to;
+          ++hops;
+        }
+        if (looked) break;
+        if (walked + hops >= 256u || !(frames < look_frames) ||
+            ws[cur].to == SMGI_NONE) {
+          /* the look ends here: after 256 edges, past its frames or where
+           * the continuation ends; the sample goes on */
+#if SMGI_DERIVED_SSE
+          _mm_storeu_ps(xz, acc);
+          put_sample(look + 4u * (size_t)n, xz[0], xz[1], h, arc);
+#else
+          put_sample(look + 4u * (size_t)n, x, z, h, arc);
+#endif
+          looked = 1;
+          target = want;
+          limit = 1024u;
+          continue;
+        }
+        break; /* the sample ended first */
+      }
+      walked += hops;
+      const size_t i = (size_t)n * K + k;
+#if SMGI_DERIVED_SSE
+      _mm_storeu_ps(xz, acc);
+      put_sample(trail + 4u * i, xz[0], xz[1], h, arc);
+#else
+      put_sample(trail + 4u * i, x, z, h, arc);
+#endif
+      trail_frames[i] = frames;
+      trail_edge[i] = natural[from];
     }
-    /* the continuation ended before SMGI_LOOK_SECONDS */
-    if (!looked) write_sample(look + 4u * (size_t)n, x, z, h, arc);
+    /* not reached: the trail walks past the look's frames or to its end */
+    if (!looked) {
+#if SMGI_DERIVED_SSE
+      _mm_storeu_ps(xz, acc);
+      put_sample(look + 4u * (size_t)n, xz[0], xz[1], h, arc);
+#else
+      put_sample(look + 4u * (size_t)n, x, z, h, arc);
+#endif
+    }
   }
 }
 
@@ -255,7 +324,7 @@ typedef struct turn_edge {
 /* A block where every edge has fc <= t0: no proportional terms. */
 static void turn_block(const turn_edge* te, uint32_t count, float* hist,
                        size_t row, uint32_t t0) {
-#if SMGI_TURN_SSE
+#if SMGI_DERIVED_SSE
   /* _mm_max_ps(v, a) is v > a ? v : a lane by lane, as below */
   __m128 al0 = _mm_setzero_ps(), al1 = al0, ar0 = al0, ar1 = al0;
   for (uint32_t i = 0; i < count; ++i) {
@@ -307,7 +376,7 @@ static void turn_block(const turn_edge* te, uint32_t count, float* hist,
  * meanwhile (never past the row's start). */
 static void turn_block_early(const turn_edge* te, uint32_t count,
                              float* hist, size_t row, uint32_t t0) {
-#if SMGI_TURN_SSE
+#if SMGI_DERIVED_SSE
   const __m128 t_lo = _mm_setr_ps((float)t0, (float)(t0 + 1u),
                                   (float)(t0 + 2u), (float)(t0 + 3u));
   const __m128 t_hi = _mm_add_ps(t_lo, _mm_set1_ps(4.0f));

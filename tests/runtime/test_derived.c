@@ -19,8 +19,9 @@
  *
  * Graphs: random ones (cycles of short edges or not, odd frame rates,
  * nodes without edges, edges longer than node_turn's horizon), checked
- * against both the SSE2 node_turn in libsmg.a and the plain-C one compiled
- * into this test; the fixture; build/default.smg; a CMU graph
+ * against both the SSE2 build in libsmg.a and the plain-C one compiled
+ * into this test (and the two against each other, bit for bit); the
+ * fixture; build/default.smg; a CMU graph
  * (build/cmu.smg when it loads, else baked here from ../shared unless
  * SMG_TEST_QUICK; skipped with a message without the clips).
  */
@@ -35,7 +36,7 @@
  * real ones come from libsmg.a). */
 #define smgi_graph_derived_build plain_graph_derived_build
 #define smgi_graph_derived_free plain_graph_derived_free
-#define SMGI_TURN_SSE 0
+#define SMGI_DERIVED_SSE 0
 #include "graph_derived.c"
 #undef smgi_graph_derived_build
 #undef smgi_graph_derived_free
@@ -268,7 +269,8 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
   for (uint32_t i = 0; i < d->splice_count; ++i)
     if (d->splices[i].lower_frame < F)
       r->splice_first[d->splices[i].lower_frame + 1u]++;
-  for (uint32_t f = 0; f < F; ++f) r->splice_first[f + 1u] += r->splice_first[f];
+  for (uint32_t f = 0; f < F; ++f)
+    r->splice_first[f + 1u] += r->splice_first[f];
   for (uint32_t f = 0; f < F; ++f) {
     r->frame_upper[f] = SMGI_NONE;
     for (uint32_t e = 0; e < d->upper_edge_count; ++e) {
@@ -337,7 +339,7 @@ static void ref_free(ref_tables* r) {
   free(r->edge_mid);
 }
 
-/* ---- comparison ----------------------------------------------------------- */
+/* ---- comparison ---------------------------------------------------------- */
 
 typedef struct dev_stats {
   double max_abs;   /* largest |x or z - reference| in metres */
@@ -435,6 +437,20 @@ static void report(const char* name, const dev_stats* st) {
          name, st->inexact, st->checked, st->max_abs, st->max_ratio);
 }
 
+/* The library's build (SSE2 on x86-64) and the plain-C one: the same
+ * operations lane by lane, so every table bit for bit. */
+static void compare_builds(const char* name, const smgi_graph_data* d,
+                           const smgi_derived* a, const smgi_derived* b) {
+  const size_t LN = d->lower_node_count;
+  const size_t TK = LN * SMGI_TRAIL_SAMPLES;
+  EXPECT_SAME("node_look (SSE2 vs plain)", a->node_look, b->node_look,
+              16u * LN);
+  EXPECT_SAME("node_trail (SSE2 vs plain)", a->node_trail, b->node_trail,
+              16u * TK);
+  EXPECT_SAME("node_turn (SSE2 vs plain)", a->node_turn, b->node_turn,
+              8u * LN);
+}
+
 /* A loaded graph: its own tables, and the plain-C build of the same data. */
 static void check_graph(const char* name, smg_graph* g) {
   ref_tables r;
@@ -446,13 +462,15 @@ static void check_graph(const char* name, smg_graph* g) {
   g->derived = NULL;
   assert_int_equal(plain_graph_derived_build(g), SMG_OK);
   compare(name, &g->data, smgi_derived_of(g), &r, &st);
+  compare_builds(name, &g->data, (const smgi_derived*)keep,
+                 smgi_derived_of(g));
   plain_graph_derived_free(g);
   g->derived = keep;
   ref_free(&r);
   report(name, &st);
 }
 
-/* ---- random graphs -------------------------------------------------------- */
+/* ---- random graphs ------------------------------------------------------- */
 
 #define RG_FRAMES 240u
 #define RG_MAX_NODES 48u
@@ -579,11 +597,16 @@ static void test_random_graphs(void** state) {
     ref_build(&rg->g.data, &r);
     assert_int_equal(smgi_graph_derived_build(&rg->g), SMG_OK);
     compare(name, &rg->g.data, smgi_derived_of(&rg->g), &r, &st);
-    smgi_graph_derived_free(&rg->g);
-    assert_null(rg->g.derived);
+    void* lib = rg->g.derived;
+    rg->g.derived = NULL;
     assert_int_equal(plain_graph_derived_build(&rg->g), SMG_OK);
     compare(name, &rg->g.data, smgi_derived_of(&rg->g), &r, &st);
+    compare_builds(name, &rg->g.data, (const smgi_derived*)lib,
+                   smgi_derived_of(&rg->g));
     plain_graph_derived_free(&rg->g);
+    rg->g.derived = lib;
+    smgi_graph_derived_free(&rg->g);
+    assert_null(rg->g.derived);
     ref_free(&r);
   }
   report("random graphs", &st);
@@ -629,7 +652,7 @@ static void test_fixture(void** state) {
   fixture_graph_delete(f);
 }
 
-/* ---- baked graphs --------------------------------------------------------- */
+/* ---- baked graphs -------------------------------------------------------- */
 
 static void test_default(void** state) {
   (void)state;
