@@ -2,7 +2,8 @@
  * bench_runtime.c - `make bench-runtime`: what a libsmg character costs.
  *
  * Baseline (same run, same skeleton, same machine): plain playback of one
- * clip - sample two pool frames, lerp the root, nlerp every rotation and
+ * clip - sample two pool frames (decoding their packed rotations like the
+ * runtime does), lerp the root, nlerp every rotation and
  * run forward kinematics to model matrices - the least any animation
  * system does per character per frame. Measured against it:
  *   - steady-state smg_character_step + smg_character_get_model_matrices
@@ -103,11 +104,20 @@ static void baseline_step(const smg_graph* g, player* p, float dt) {
   uint32_t i0 = (uint32_t)p->t;
   float a = (float)(p->t - i0);
   uint32_t i1 = i0 + 1 < clip->frame_count ? i0 + 1 : i0;
-  const float* fa = smgi_graph_pose(g, clip->first_frame + i0);
-  const float* fb = smgi_graph_pose(g, clip->first_frame + i1);
-  for (int k = 0; k < 3; ++k) p->root[k] = fa[k] + a * (fb[k] - fa[k]);
-  for (uint32_t j = 0; j < J; ++j)
-    nlerp(fa + 3 + 4 * j, fb + 3 + 4 * j, a, p->rot + 4 * j);
+  const unsigned char* fa = smgi_graph_pose(g, clip->first_frame + i0);
+  const unsigned char* fb = smgi_graph_pose(g, clip->first_frame + i1);
+  float ra[3], rb[3];
+  smgi_pose_root(fa, ra);
+  smgi_pose_root(fb, rb);
+  for (int k = 0; k < 3; ++k) p->root[k] = ra[k] + a * (rb[k] - ra[k]);
+  /* the same data as the characters read: packed rotations decoded
+   * straight into the nlerp */
+  for (uint32_t j = 0; j < J; ++j) {
+    float qa[4], qb[4];
+    smgi_quat_unpack_raw(smgi_pose_rot(fa, j), qa);
+    smgi_quat_unpack_raw(smgi_pose_rot(fb, j), qb);
+    nlerp(qa, qb, a, p->rot + 4 * j);
+  }
   mat_from(p->rot, p->root, p->mats);
   for (uint32_t j = 1; j < J; ++j) {
     float local[16];

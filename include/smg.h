@@ -76,8 +76,8 @@ extern "C" {
   ((SMG_VERSION_MAJOR << 16) | (SMG_VERSION_MINOR << 8) | SMG_VERSION_PATCH)
 
 /* Graph-blob format versions this build reads (see docs/blob-format.md). */
-#define SMG_BLOB_VERSION_MIN 1
-#define SMG_BLOB_VERSION_MAX 1
+#define SMG_BLOB_VERSION_MIN 2
+#define SMG_BLOB_VERSION_MAX 2
 
 /* The version of the library actually linked, encoded like SMG_VERSION.
  * Compare with SMG_VERSION to detect a header/library mismatch. */

@@ -55,6 +55,7 @@
 #include <string.h>
 
 #include "blob.h"
+#include "quat_pack.h"
 #include "smg_format.h"
 
 #define FIXTURE_JOINTS 31u
@@ -80,7 +81,10 @@ typedef struct fixture_graph {
   smgi_label styles[2];
   smgi_label actions[2];
   smgi_clip clips[FIXTURE_CLIPS];
-  float poses[FIXTURE_FRAMES * FIXTURE_STRIDE];
+  float poses[FIXTURE_FRAMES * FIXTURE_STRIDE]; /* generated, floats */
+  /* the blob's POSE records packed from `poses` (uint32_t for alignment) */
+  uint32_t pose_records[FIXTURE_FRAMES *
+                        SMGI_POSE_RECORD_SIZE(FIXTURE_JOINTS) / 4u];
   smgi_frame frames[FIXTURE_FRAMES];
   smgi_node lower_nodes[FIXTURE_LOWER_NODES];
   smgi_edge lower_edges[FIXTURE_LOWER_EDGES];
@@ -494,7 +498,12 @@ static inline void fixture_graph_build(fixture_graph* f) {
   d->action_count = 2;
   d->clips = f->clips;
   d->clip_count = FIXTURE_CLIPS;
-  d->poses = f->poses;
+  for (i = 0; i < FIXTURE_FRAMES; ++i)
+    if (smgi_pose_pack(f->poses + (size_t)i * FIXTURE_STRIDE, FIXTURE_JOINTS,
+                       (unsigned char*)f->pose_records +
+                           (size_t)i * SMGI_POSE_RECORD_SIZE(FIXTURE_JOINTS)))
+      abort(); /* fixture bug: a rotation is not unit */
+  d->poses = (const unsigned char*)f->pose_records;
   d->frame_count = FIXTURE_FRAMES;
   d->frames = f->frames;
   d->lower_nodes = f->lower_nodes;

@@ -2,10 +2,10 @@
  * bake_clip.h - the baker's in-memory motion clip and skeleton.
  *
  * Every importer (BVH, assimp) produces an smgb_clip; every baking stage
- * (graphs, splicing, internodal data) consumes them. Poses use exactly the
- * blob's POSE layout (libsmg/common/smg_format.h): per frame, the root
- * translation (3 floats, metres) followed by J local rotations (x,y,z,w),
- * so a clip's frames can be copied into the blob unchanged.
+ * (graphs, splicing, internodal data) consumes them. Poses are floats: per
+ * frame, the root translation (3 floats, metres) followed by J local
+ * rotations (x,y,z,w) - SMGI_POSE_FLOATS in smg_format.h; only the blob
+ * writer (bake_output.c) packs the rotations into POSE records.
  *
  * Conventions after import: metres, Y up, the character faces +Z when the
  * root rotation is identity, floor at y = 0. Internal baker symbols use the

@@ -15,6 +15,7 @@
 
 #include "bake_graph.h"
 #include "blob.h"
+#include "quat_pack.h"
 
 typedef struct strtab {
   char* data;
@@ -99,6 +100,7 @@ smg_result smgb_write_blob(smgb_bake* b, void** out_blob, size_t* out_size) {
   smgi_node *ln = NULL, *un = NULL;
   smgi_edge *le = NULL, *ue = NULL;
   smgi_splice* splices = NULL;
+  unsigned char* packed = NULL;
   uint32_t i, bad = 0;
   smg_result r = SMG_ERROR_OUT_OF_MEMORY;
   char err[256];
@@ -111,7 +113,24 @@ smg_result smgb_write_blob(smgb_bake* b, void** out_blob, size_t* out_size) {
   actions = calloc(b->action_count, sizeof *actions);
   clips = calloc(b->clip_count, sizeof *clips);
   splices = calloc(b->splice_count ? b->splice_count : 1, sizeof *splices);
-  if (!joints || !styles || !actions || !clips || !splices) goto oom;
+  /* the pool stays float; only the blob's POSE records are quantised */
+  packed = malloc((size_t)(b->frame_count ? b->frame_count : 1) *
+                  SMGI_POSE_RECORD_SIZE(b->J));
+  if (!joints || !styles || !actions || !clips || !splices || !packed)
+    goto oom;
+  for (i = 0; i < b->frame_count; ++i) {
+    uint32_t nonunit = smgi_pose_pack(
+        b->poses + (size_t)i * b->stride, b->J,
+        packed + (size_t)i * SMGI_POSE_RECORD_SIZE(b->J));
+    if (nonunit) {
+      /* the v1 reader's unit check, now done at pack time */
+      smgb_fail(b, "writing the blob: POSE[%u] has %u rotation(s) that are "
+                   "not finite unit quaternions", (unsigned)i,
+                (unsigned)nonunit);
+      r = SMG_ERROR_BLOB_VALUE;
+      goto done;
+    }
+  }
 
   for (i = 0; i < b->J; ++i) {
     smgi_joint* j = &joints[i];
@@ -186,7 +205,7 @@ smg_result smgb_write_blob(smgb_bake* b, void** out_blob, size_t* out_size) {
   g.action_count = b->action_count;
   g.clips = clips;
   g.clip_count = b->clip_count;
-  g.poses = b->poses;
+  g.poses = packed;
   g.frame_count = b->frame_count;
   g.frames = b->frames;
   g.lower_nodes = ln;
@@ -206,6 +225,7 @@ oom:
   smgb_fail(b, "out of memory writing the blob");
   r = SMG_ERROR_OUT_OF_MEMORY;
 done:
+  free(packed);
   free(st.data);
   free(joints);
   free(styles);

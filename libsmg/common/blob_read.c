@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "blob.h"
+#include "quat_pack.h"
 
 /* Largest section alignment accepted (powers of two from 16 up to this). */
 #define MAX_SECTION_ALIGN 4096u
@@ -76,23 +77,6 @@ static int unit_quat(const float* q) {
   return fabsf(n - 1.0f) <= UNIT_TOLERANCE;
 }
 
-/* Every quaternion of q[0 .. 4n) finite and of unit length within the
- * tolerance. Same verdict as unit_quat on each: NaN fails the comparisons,
- * inf and overflowing squares give an infinite norm; the bounds are the
- * squares of 1 -/+ UNIT_TOLERANCE. */
-static int frame_quats_unit(const float* q, uint32_t n) {
-  const float lo = (1.0f - UNIT_TOLERANCE) * (1.0f - UNIT_TOLERANCE);
-  const float hi = (1.0f + UNIT_TOLERANCE) * (1.0f + UNIT_TOLERANCE);
-  int ok = 1;
-  uint32_t i;
-  for (i = 0; i < n; ++i) {
-    const float* v = q + 4u * i;
-    float n2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3];
-    ok &= (n2 >= lo) & (n2 <= hi);
-  }
-  return ok;
-}
-
 /* ---- section table -------------------------------------------------------- */
 
 enum {
@@ -143,10 +127,14 @@ static smg_result read_header(reader* r, const unsigned char* base,
   CHECK(h->endian == SMGI_BLOB_ENDIAN, SMG_ERROR_BLOB_ENDIAN,
         "header.endian is 0x%08x, expected 0x%08x (other byte order?)",
         (unsigned)h->endian, (unsigned)SMGI_BLOB_ENDIAN);
-  CHECK(h->version >= SMG_BLOB_VERSION_MIN &&
-            h->version <= SMG_BLOB_VERSION_MAX,
-        SMG_ERROR_BLOB_VERSION,
-        "header.version is %u, this build reads %u..%u",
+  CHECK(h->version >= SMG_BLOB_VERSION_MIN, SMG_ERROR_BLOB_VERSION,
+        "header.version is %u, this build reads %u..%u: re-bake the graph "
+        "with this release's smg-bake",
+        (unsigned)h->version, (unsigned)SMG_BLOB_VERSION_MIN,
+        (unsigned)SMG_BLOB_VERSION_MAX);
+  CHECK(h->version <= SMG_BLOB_VERSION_MAX, SMG_ERROR_BLOB_VERSION,
+        "header.version is %u, this build reads %u..%u: the graph needs a "
+        "newer libsmg",
         (unsigned)h->version, (unsigned)SMG_BLOB_VERSION_MIN,
         (unsigned)SMG_BLOB_VERSION_MAX);
   CHECK(h->header_size == sizeof(smgi_blob_header), SMG_ERROR_BLOB_VALUE,
@@ -393,23 +381,19 @@ static smg_result check_clips(reader* r, const smgi_graph_data* g) {
   return SMG_OK;
 }
 
+/* Only the root translations need checking: every 48-bit rotation pattern
+ * decodes to a finite unit quaternion (quat_pack.h), so the J rotations of a
+ * frame carry no invalid values (version 1 tested each float quaternion
+ * for unit length here, a third of a load). */
 static smg_result check_poses(reader* r, const smgi_graph_data* g) {
-  uint32_t stride = SMGI_POSE_STRIDE(g->joint_count), f, j;
+  uint32_t f;
   for (f = 0; f < g->frame_count; ++f) {
-    const float* p = g->poses + (uint64_t)f * stride;
     const smgi_frame* fr = &g->frames[f];
+    float p[3];
+    smgi_pose_root(smgi_pose_record(g, f), p);
     CHECK(within3(p, MAX_POSITION), SMG_ERROR_BLOB_VALUE,
           "POSE[%u] root translation is not finite within %g m",
           (unsigned)f, (double)MAX_POSITION);
-    /* Hot loop of a load (J quaternions per frame): a branch-free squared
-     * norm test over the whole frame first; only a failing frame is walked
-     * again to name the joint. */
-    if (!frame_quats_unit(p + 3, g->joint_count)) {
-      for (j = 0; j < g->joint_count; ++j)
-        CHECK(unit_quat(p + 3 + 4 * j), SMG_ERROR_BLOB_VALUE,
-              "POSE[%u] joint %u rotation is not a finite unit quaternion",
-              (unsigned)f, (unsigned)j);
-    }
     CHECK(ground_ok(fr->root2d), SMG_ERROR_BLOB_VALUE,
           "FRMI[%u].root2d is not finite within %g m / %g rad", (unsigned)f,
           (double)MAX_POSITION, (double)MAX_ANGLE);
@@ -546,7 +530,9 @@ smg_result smgi_blob_read(const void* data, size_t size, uint32_t flags,
         "INFO has %u records, expected 1",
         (unsigned)secs[found[SEC_INFO]].count);
   s = &secs[found[SEC_POSE]];
-  pose_record = 4u * (3u + 4u * (uint64_t)secs[found[SEC_JNTS]].count);
+  /* SMGI_POSE_RECORD_SIZE in 64 bits: the count is not yet bounded */
+  pose_record =
+      (12u + 6u * (uint64_t)secs[found[SEC_JNTS]].count + 3u) & ~(uint64_t)3u;
   CHECK(s->record_size == pose_record, SMG_ERROR_BLOB_SECTION,
         "POSE record_size %u, expected %llu for %u joints",
         (unsigned)s->record_size, (unsigned long long)pose_record,
@@ -569,7 +555,7 @@ smg_result smgi_blob_read(const void* data, size_t size, uint32_t flags,
   g.action_count = SEC_COUNT_OF(SEC_ACTN);
   g.clips = (const smgi_clip*)SEC_PTR(SEC_CLIP);
   g.clip_count = SEC_COUNT_OF(SEC_CLIP);
-  g.poses = (const float*)SEC_PTR(SEC_POSE);
+  g.poses = SEC_PTR(SEC_POSE);
   g.frame_count = SEC_COUNT_OF(SEC_POSE);
   g.frames = (const smgi_frame*)SEC_PTR(SEC_FRMI);
   g.lower_nodes = (const smgi_node*)SEC_PTR(SEC_LNOD);

@@ -54,7 +54,9 @@ smg_result smgi_blob_write(const smgi_graph_data* g,
   if (!g->info)
     return write_fail(error, error_size, SMG_ERROR_INVALID_ARGUMENT,
                       "smgi_blob_write: graph->info is NULL");
-  pose_record = 4u * (3u + 4u * (uint64_t)g->joint_count);
+  /* SMGI_POSE_RECORD_SIZE in 64 bits; g->poses already holds packed
+   * records (smgi_pose_pack) */
+  pose_record = (12u + 6u * (uint64_t)g->joint_count + 3u) & ~(uint64_t)3u;
   if (pose_record > UINT32_MAX)
     return write_fail(error, error_size, SMG_ERROR_INVALID_ARGUMENT,
                       "smgi_blob_write: joint_count too large");

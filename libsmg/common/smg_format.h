@@ -8,7 +8,9 @@
  * docs/blob-format.md describes the same layout in prose; keep both in step.
  *
  * Every record is made of 4-byte fields (uint32_t, int32_t, float) so the
- * layout has no padding and is the same on every little-endian compiler.
+ * layout has no padding and is the same on every little-endian compiler;
+ * POSE records (float root, then 16-bit words) are sized to a multiple of 4
+ * and zero-padded by the writer.
  * Internal symbols use the smgi_ prefix and are never exported.
  */
 #ifndef SMG_FORMAT_H
@@ -23,7 +25,7 @@
 
 #define SMGI_BLOB_MAGIC "SMGGRAPH"       /* 8 bytes, no NUL stored */
 #define SMGI_BLOB_ENDIAN 0x01020304u     /* reads 0x04030201 if swapped */
-#define SMGI_BLOB_VERSION 1u
+#define SMGI_BLOB_VERSION 2u       /* 1: float POSE rotations (refused) */
 #define SMGI_BLOB_ALIGN 16u              /* blob base and every section */
 #define SMGI_MAX_SECTIONS 64u
 
@@ -52,7 +54,7 @@ typedef struct smgi_blob_section {
   uint32_t record_size;      /* bytes per record (checked per tag) */
 } smgi_blob_section;         /* 32 bytes */
 
-/* ---- section tags (all required in version 1) --------------------------- */
+/* ---- section tags (all required) ------------------------------------------ */
 
 #define SMGI_SEC_INFO SMGI_FOURCC('I', 'N', 'F', 'O') /* 1 smgi_info */
 #define SMGI_SEC_STRS SMGI_FOURCC('S', 'T', 'R', 'S') /* char, NUL-separated */
@@ -60,7 +62,7 @@ typedef struct smgi_blob_section {
 #define SMGI_SEC_STYL SMGI_FOURCC('S', 'T', 'Y', 'L') /* smgi_label */
 #define SMGI_SEC_ACTN SMGI_FOURCC('A', 'C', 'T', 'N') /* smgi_label */
 #define SMGI_SEC_CLIP SMGI_FOURCC('C', 'L', 'I', 'P') /* smgi_clip */
-#define SMGI_SEC_POSE SMGI_FOURCC('P', 'O', 'S', 'E') /* float[3 + 4J] */
+#define SMGI_SEC_POSE SMGI_FOURCC('P', 'O', 'S', 'E') /* root + packed J */
 #define SMGI_SEC_FRMI SMGI_FOURCC('F', 'R', 'M', 'I') /* smgi_frame */
 #define SMGI_SEC_LNOD SMGI_FOURCC('L', 'N', 'O', 'D') /* smgi_node, lower */
 #define SMGI_SEC_LEDG SMGI_FOURCC('L', 'E', 'D', 'G') /* smgi_edge, lower */
@@ -124,9 +126,20 @@ typedef struct smgi_clip {
 #define SMGI_CLIP_MIRROR 4u   /* reflected copy */
 #define SMGI_CLIP_BLEND 8u    /* pseudo-clip holding blended transitions */
 
-/* POSE: frame_count records of (3 + 4 * J) floats: root translation
- * (metres, in the clip's own space, y up) then J local rotations (x,y,z,w),
- * joint 0's rotation being the root's orientation in clip space. */
+/* POSE: frame_count records of SMGI_POSE_RECORD_SIZE(J) bytes:
+ *   float root[3]         root translation (metres, clip space, y up)
+ *   uint8_t rot[J][6]     J local rotations, each a 48-bit "smallest three"
+ *                         quaternion (quat_pack.h); joint 0's is the root's
+ *                         orientation in clip space
+ *   zero padding to a multiple of 4 bytes (2 bytes when J is odd).
+ * Version 1 stored the rotations as 4 floats (508 bytes a frame for 31
+ * joints, 200 now). Code that wants floats unpacks with smgi_pose_unpack
+ * into SMGI_POSE_FLOATS(J) floats: root then J quaternions (x, y, z, w),
+ * the baker's own pose layout. */
+#define SMGI_POSE_ROT_OFFSET 12u
+#define SMGI_POSE_RECORD_SIZE(joint_count) \
+  ((12u + 6u * (uint32_t)(joint_count) + 3u) & ~3u)
+#define SMGI_POSE_FLOATS(joint_count) (3u + 4u * (uint32_t)(joint_count))
 
 /* Per-frame facts (FRMI, one per POSE frame). */
 typedef struct smgi_frame {
@@ -199,7 +212,7 @@ typedef struct smgi_graph_data {
   const smgi_label* styles;  uint32_t style_count;
   const smgi_label* actions; uint32_t action_count;
   const smgi_clip* clips;    uint32_t clip_count;
-  const float* poses;        uint32_t frame_count; /* POSE and FRMI */
+  const unsigned char* poses; uint32_t frame_count; /* POSE records, FRMI */
   const smgi_frame* frames;
   const smgi_node* lower_nodes; uint32_t lower_node_count;
   const smgi_edge* lower_edges; uint32_t lower_edge_count;
@@ -207,8 +220,5 @@ typedef struct smgi_graph_data {
   const smgi_edge* upper_edges; uint32_t upper_edge_count;
   const smgi_splice* splices;   uint32_t splice_count;
 } smgi_graph_data;
-
-/* Floats per POSE record. */
-#define SMGI_POSE_STRIDE(joint_count) (3u + 4u * (uint32_t)(joint_count))
 
 #endif /* SMG_FORMAT_H */

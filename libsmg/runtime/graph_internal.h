@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "smg.h"
+#include "quat_pack.h"
 #include "smg_format.h"
 
 struct smg_graph {
@@ -33,9 +34,11 @@ void smgi_graph_derived_free(smg_graph* graph);
 void smgi_graph_retain(smg_graph* graph);
 void smgi_graph_release(smg_graph* graph);
 
-/* Pose record i (SMGI_POSE_STRIDE floats). */
-static inline const float* smgi_graph_pose(const smg_graph* g, uint32_t i) {
-  return g->data.poses + (uint64_t)i * SMGI_POSE_STRIDE(g->data.joint_count);
+/* POSE record i (SMGI_POSE_RECORD_SIZE bytes: root floats, then packed
+ * rotations read with smgi_pose_rot + smgi_quat_unpack_raw). */
+static inline const unsigned char* smgi_graph_pose(const smg_graph* g,
+                                                   uint32_t i) {
+  return smgi_pose_record(&g->data, i);
 }
 
 #endif /* SMG_GRAPH_INTERNAL_H */

@@ -13,14 +13,17 @@
 /* World root position/rotation and ground placement of one lower frame. */
 static void place(const smg_graph* g, uint32_t frame, smgi_xform2 M,
                   float* pos, float* rot, float* gx, float* gz, float* gh) {
-  const float* p = smgi_graph_pose(g, frame);
-  float x, z, q[4];
+  const unsigned char* rec = smgi_graph_pose(g, frame);
+  float p[3], x, z, q[4], r0[4];
+  smgi_pose_root(rec, p);
   smgi_xf_point(M, p[0], p[2], &x, &z);
   pos[0] = x;
   pos[1] = p[1] - g->data.info->ground_height;
   pos[2] = z;
   smgi_q_yaw(M.h, q);
-  smgi_q_mul(q, p + 3, rot);
+  /* raw decode: the caller's nlerp normalises */
+  smgi_quat_unpack_raw(smgi_pose_rot(rec, 0), r0);
+  smgi_q_mul(q, r0, rot);
   const float* r = g->data.frames[frame].root2d;
   smgi_xf_point(M, r[0], r[1], gx, gz);
   *gh = M.h + r[2];
@@ -53,10 +56,16 @@ void smgi_pose_compose(smg_character* ch) {
   ch->ground[0] = gax + a * (gbx - gax);
   ch->ground[1] = gaz + a * (gbz - gaz);
   ch->heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));
-  const float* qa = smgi_graph_pose(g, fa) + 3;
-  const float* qb = smgi_graph_pose(g, fb) + 3;
-  for (uint32_t j = 1; j < J; ++j)
-    smgi_q_nlerp(qa + 4u * j, qb + 4u * j, a, ch->rot + 4u * j);
+  /* decode each joint of both frames straight into its nlerp (which
+   * normalises, so the raw decode is enough) */
+  const unsigned char* qa = smgi_pose_rot(smgi_graph_pose(g, fa), 0);
+  const unsigned char* qb = smgi_pose_rot(smgi_graph_pose(g, fb), 0);
+  for (uint32_t j = 1; j < J; ++j) {
+    float ja[4], jb[4];
+    smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
+    smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
+    smgi_q_nlerp(ja, jb, a, ch->rot + 4u * j);
+  }
   uint32_t flags = g->data.frames[a < 0.5f ? fa : fb].flags;
   ch->contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
                                                      : 0u) |

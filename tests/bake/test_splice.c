@@ -15,6 +15,7 @@
 
 #include "bake_graph_helpers.h"
 #include "bake_math.h"
+#include "quat_pack.h"
 
 static bg_set g_set;
 static smg_bake_result g_res;
@@ -113,8 +114,7 @@ static void torso(const smgi_graph_data* g, const smgb_skeleton* sk,
                   uint32_t* count) {
   uint32_t J = g->joint_count, j, sb = g->info->spine_base_joint, n = 0;
   float pose[3 + 4 * 64], pos[3 * 64];
-  memcpy(pose, g->poses + (size_t)frame * SMGI_POSE_STRIDE(J),
-         SMGI_POSE_STRIDE(J) * sizeof(float));
+  smgi_pose_unpack(smgi_pose_record(g, frame), J, pose);
   /* pelvis at the origin, identity: positions come out in pelvis space */
   pose[0] = pose[1] = pose[2] = 0.0f;
   pose[3] = pose[4] = pose[5] = 0.0f;

@@ -14,15 +14,31 @@
 #include "blob.h"
 #include "fixture_graph.h"
 #include "fuzz.h"
+#include "quat_pack.h"
 #include "smg.h"
 
 static volatile float g_sink; /* keeps the reads below from being elided */
 
 static void touch_view(const smgi_graph_data* g) {
   float acc = 0.0f;
-  uint64_t i, floats =
-                  (uint64_t)g->frame_count * SMGI_POSE_STRIDE(g->joint_count);
-  for (i = 0; i < floats; i += 7) acc += g->poses[i];
+  uint64_t i;
+  uint32_t f, j;
+  /* every root and every packed rotation of the view, decoded */
+  for (f = 0; f < g->frame_count; ++f) {
+    const unsigned char* rec = smgi_pose_record(g, f);
+    float root[3], q[4];
+    smgi_pose_root(rec, root);
+    acc += root[0] + root[1] + root[2];
+    for (j = 0; j < g->joint_count; ++j) {
+      float n2;
+      smgi_quat_unpack(smgi_pose_rot(rec, j), q);
+      /* the reader no longer checks rotations because every pattern
+       * decodes to a unit quaternion: hold it to that */
+      n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+      if (!(n2 > 0.999f && n2 < 1.001f)) abort();
+      acc += q[0] + q[3];
+    }
+  }
   for (i = 0; i < g->joint_count; ++i)
     acc += (float)strlen(g->strings + g->joints[i].name);
   for (i = 0; i < g->lower_edge_count; ++i)

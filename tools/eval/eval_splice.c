@@ -24,6 +24,7 @@
 #include "eval_ctx.h"
 #include "eval_metrics.h"
 #include "eval_run.h"
+#include "quat_pack.h"
 #include "smg_bake.h"
 #include "smg_format.h"
 #include "svg_plot.h"
@@ -52,6 +53,7 @@ typedef struct splice_blob {
   smg_graph* graph;
   uint32_t walk, dribble;
   uint32_t upper_first, upper_count; /* the original 06_10 clip's frames */
+  float* upper_poses; /* those frames unpacked: SMGI_POSE_FLOATS(J) each */
 } splice_blob;
 
 static smg_result bake_splice_blob(eval_ctx* ctx, splice_blob* sb,
@@ -119,11 +121,25 @@ static smg_result bake_splice_blob(eval_ctx* ctx, splice_blob* sb,
     snprintf(err, err_size, "blob has no original upper clip");
     return SMG_ERROR_NOT_FOUND;
   }
+  /* the blob's rotations are packed; the comparisons below want floats */
+  sb->upper_poses = (float*)malloc((size_t)sb->upper_count *
+                                   SMGI_POSE_FLOATS(sb->gd.joint_count) *
+                                   sizeof(float));
+  if (!sb->upper_poses) {
+    snprintf(err, err_size, "out of memory");
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  for (c = 0; c < sb->upper_count; ++c)
+    smgi_pose_unpack(smgi_pose_record(&sb->gd, sb->upper_first + c),
+                     sb->gd.joint_count,
+                     sb->upper_poses +
+                         (size_t)c * SMGI_POSE_FLOATS(sb->gd.joint_count));
   return SMG_OK;
 }
 
 static void splice_blob_free(splice_blob* sb) {
   if (sb->graph) smg_graph_destroy(sb->graph);
+  free(sb->upper_poses);
   smg_bake_result_free(&sb->bake);
   memset(sb, 0, sizeof(*sb));
 }
@@ -238,9 +254,7 @@ static int clip_phases(const splice_blob* sb, uint32_t lfoot, uint32_t ltoe,
     return 0;
   }
   for (i = 0; i < n; ++i) {
-    const float* pose =
-        sb->gd.poses +
-        (size_t)(sb->upper_first + i) * SMGI_POSE_STRIDE(J);
+    const float* pose = sb->upper_poses + (size_t)i * SMGI_POSE_FLOATS(J);
     const double* p;
     blob_fk(sb, pose, pos, NULL);
     p = pos[3 * ltoe + 1] < pos[3 * lfoot + 1] ? pos + 3 * ltoe
@@ -407,21 +421,20 @@ static int measure(const splice_blob* sb, const eval_trace* t,
     uint32_t next;
     if (t->action[f] != sb->dribble) continue;
     for (i = 0; i < sb->upper_count; ++i) {
-      const float* p = sb->gd.poses + (size_t)(sb->upper_first + i) *
-                                          SMGI_POSE_STRIDE(J);
+      const float* p = sb->upper_poses + (size_t)i * SMGI_POSE_FLOATS(J);
       double d = pose_distance(out, p, jm, m);
       if (d < best) best = d, bi = i;
     }
     /* Sub-frame position of the match: a parabola through the residuals
      * of the best frame and its neighbours. */
     if (bi > 0)
-      dm = pose_distance(out, sb->gd.poses + (size_t)(sb->upper_first + bi -
-                                                      1) * SMGI_POSE_STRIDE(J),
-                         jm, m);
+      dm = pose_distance(
+          out, sb->upper_poses + (size_t)(bi - 1) * SMGI_POSE_FLOATS(J), jm,
+          m);
     if (bi + 1 < sb->upper_count)
-      dp = pose_distance(out, sb->gd.poses + (size_t)(sb->upper_first + bi +
-                                                      1) * SMGI_POSE_STRIDE(J),
-                         jm, m);
+      dp = pose_distance(
+          out, sb->upper_poses + (size_t)(bi + 1) * SMGI_POSE_FLOATS(J), jm,
+          m);
     if (isfinite(dm) && isfinite(dp) && dm + dp - 2.0 * best > 1e-12) {
       frac = 0.5 * (dm - dp) / (dm + dp - 2.0 * best);
       if (frac > 0.5) frac = 0.5;
@@ -438,8 +451,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
      * original's, at the best whole frame: the Horn correction at work. */
     {
       const float* ob = out + 3 + 4 * base;
-      const float* gb = sb->gd.poses +
-                        (size_t)(sb->upper_first + bi) * SMGI_POSE_STRIDE(J) +
+      const float* gb = sb->upper_poses + (size_t)bi * SMGI_POSE_FLOATS(J) +
                         3 + 4 * base;
       double qa[4] = {ob[0], ob[1], ob[2], ob[3]};
       double qb[4] = {gb[0], gb[1], gb[2], gb[3]};
@@ -455,13 +467,10 @@ static int measure(const splice_blob* sb, const eval_trace* t,
     i = (uint32_t)floor(src);
     frac = src - (double)i;
     next = i + 1 < sb->upper_count ? i + 1 : i;
-    pose_a = sb->gd.poses + (size_t)(sb->upper_first + i) *
-                                SMGI_POSE_STRIDE(J);
+    pose_a = sb->upper_poses + (size_t)i * SMGI_POSE_FLOATS(J);
     blob_fk(sb, pose_a, gt_a, gt_rot_a);
-    blob_fk(sb,
-            sb->gd.poses + (size_t)(sb->upper_first + next) *
-                               SMGI_POSE_STRIDE(J),
-            gt_b, gt_rot_b);
+    blob_fk(sb, sb->upper_poses + (size_t)next * SMGI_POSE_FLOATS(J), gt_b,
+            gt_rot_b);
     spine_frames(gt_a, gt_rot_a, spine, ap, ag);
     spine_frames(gt_b, gt_rot_b, spine, bp, bg);
     for (k = 0; k < 3 * SPINE_JOINTS; ++k) {
@@ -581,8 +590,9 @@ static void figure_worst(eval_ctx* ctx, const splice_blob* sb,
   fig = svp_create(760, 520, title);
   if (!a || !ar || !b || !la || !lb || !fig || !isfinite(src)) goto done;
   /* Original: the matched 06_10 frame (nearest whole frame). */
-  blob_fk(sb, sb->gd.poses + (size_t)(sb->upper_first + (uint32_t)(src + 0.5)) *
-                                 SMGI_POSE_STRIDE(J),
+  blob_fk(sb,
+          sb->upper_poses +
+              (size_t)(uint32_t)(src + 0.5) * SMGI_POSE_FLOATS(J),
           a, ar);
   em_ground_frame(a, ar, go, gq);
   for (j = 0; j < J; ++j) em_to_frame(go, gq, a + 3 * j, la + 3 * j);
