@@ -292,179 +292,188 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
  * (dh = +dheading) and right (dh = -dheading) directions; node_turn is
  * best[T][n]. T is 90 frames at 30 Hz and a CMU graph has ~1500 edges, so
  * the programme is ~270k edge steps: the code below computes the very same
- * float operations (max is exact, so its order does not matter) in an
- * order that keeps the CPU busy.
+ * float operations (max is exact and, starting from +0 and keeping the
+ * larger, independent of order) in an order that keeps the CPU busy.
  *
  * Memory: per node, a left and a right row of best[] over time (time is
  * contiguous, so a block of 8 frames of best[t - fc][to] is one contiguous
  * read). Each row starts with TURN_PAD zeros that lanes with t < fc read
  * before their value is replaced by the proportional term.
  *
- * Blocks: frames t0 .. t0 + 7 are computed together, edge by edge. An edge
+ * Blocks: frames t0 .. t0 + 7 are computed together, node by node. An edge
  * with fc >= 8 reads only earlier blocks; one with fc < 8 also reads the
- * current block of its `to` node, so nodes are visited in an order where
- * every such `to` comes first (post-order of the graph of short edges). If
+ * current block of its `to` node, so nodes are visited by level (0: no
+ * short out-edge; else 1 + the highest level its short edges lead to),
+ * which puts every such `to` first - and far enough back that its block
+ * has left the store buffer (a read overlapping a recent store of other
+ * offsets waits for it). Within a level, nodes go by out-degree so the
+ * loop over a node's edges runs the same count many times in a row. If
  * short edges form a cycle there is no such order and the programme runs
  * one frame at a time (baked CMU and synthetic graphs have no cycle of
  * edges shorter than 11 frames). */
 #define TURN_BLOCK 8u
 #define TURN_PAD 8u
+#define TURN_DEGREE_KEYS 9u /* degrees 1..8+ sorted apart */
 
+typedef struct turn_node {
+  ptrdiff_t row;  /* index of best[0][node] in its left row */
+  uint32_t first; /* its edges: turn_edge[first .. first + count) */
+  uint32_t count;
+} turn_node;
 
 typedef struct turn_edge {
-  ptrdiff_t to_row;   /* index of best[0][to] in the left row */
-  ptrdiff_t from_row; /* index of best[0][from] in the left row */
-  float dh;           /* left heading change; the right row uses -dh */
-  float keep;         /* 0 for a node's first edge (its max restarts at
-                         0), else 1 */
+  ptrdiff_t src; /* index of best[-fc][to] in to's left row: + t reads
+                    best[t - fc][to] */
+  float dh;      /* left heading change; the right row uses -dh */
   uint32_t fc;
-  uint32_t unused;
 } turn_edge;
 
 /* A block where every edge has fc <= t0: no proportional terms. */
-static void turn_block(const turn_edge* te, uint32_t count, float* hist,
-                       size_t row, uint32_t t0) {
+static void turn_block(const turn_node* tn, uint32_t nodes,
+                       const turn_edge* te, float* hist, size_t row,
+                       uint32_t t0) {
+  for (uint32_t i = 0; i < nodes; ++i) {
+    const turn_edge* e = te + tn[i].first;
+    const turn_edge* end = e + tn[i].count;
+    float* o = hist + tn[i].row + t0;
 #if SMGI_DERIVED_SSE
-  /* _mm_max_ps(v, a) is v > a ? v : a lane by lane, as below */
-  __m128 al0 = _mm_setzero_ps(), al1 = al0, ar0 = al0, ar1 = al0;
-  for (uint32_t i = 0; i < count; ++i) {
-    const turn_edge* e = &te[i];
-    const float* sl = hist + e->to_row + ((ptrdiff_t)t0 - (ptrdiff_t)e->fc);
-    const float* sr = sl + row;
-    float* dl = hist + e->from_row + t0;
-    const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_set1_ps(-e->dh);
-    const __m128 keep = _mm_set1_ps(e->keep);
-    al0 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl)), _mm_mul_ps(al0, keep));
-    al1 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl + 4)),
-                     _mm_mul_ps(al1, keep));
-    ar0 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sr)), _mm_mul_ps(ar0, keep));
-    ar1 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sr + 4)),
-                     _mm_mul_ps(ar1, keep));
-    /* stored after every edge; the node's last edge leaves its max (no
-     * one reads the node's block before that: visiting order) */
-    _mm_storeu_ps(dl, al0);
-    _mm_storeu_ps(dl + 4, al1);
-    _mm_storeu_ps(dl + row, ar0);
-    _mm_storeu_ps(dl + row + 4, ar1);
-  }
+    /* _mm_max_ps(v, b) is v > b ? v : b lane by lane */
+    __m128 l0 = _mm_setzero_ps(), l1 = l0, r0 = l0, r1 = l0;
+    for (; e != end; ++e) {
+      const float* sl = hist + e->src + t0;
+      const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_set1_ps(-e->dh);
+      l0 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl)), l0);
+      l1 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl + 4)), l1);
+      r0 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sl + row)), r0);
+      r1 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sl + row + 4)), r1);
+    }
+    _mm_storeu_ps(o, l0);
+    _mm_storeu_ps(o + 4, l1);
+    _mm_storeu_ps(o + row, r0);
+    _mm_storeu_ps(o + row + 4, r1);
 #else
-  float al[TURN_BLOCK] = {0.0f}, ar[TURN_BLOCK] = {0.0f};
-  for (uint32_t i = 0; i < count; ++i) {
-    const turn_edge* e = &te[i];
-    const float* sl = hist + e->to_row + ((ptrdiff_t)t0 - (ptrdiff_t)e->fc);
-    const float* sr = sl + row;
-    float* dl = hist + e->from_row + t0;
-    const float dh = e->dh, nd = -dh, keep = e->keep;
-    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-      float v = dh + sl[j], a = al[j] * keep;
-      float w = nd + sr[j], b = ar[j] * keep;
-      al[j] = v > a ? v : a;
-      ar[j] = w > b ? w : b;
+    float l[TURN_BLOCK] = {0.0f}, r[TURN_BLOCK] = {0.0f};
+    for (; e != end; ++e) {
+      const float* sl = hist + e->src + t0;
+      const float dh = e->dh, nd = -dh;
+      for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+        const float v = dh + sl[j], w = nd + sl[row + j];
+        l[j] = v > l[j] ? v : l[j];
+        r[j] = w > r[j] ? w : r[j];
+      }
     }
-    /* stored after every edge; the node's last edge leaves its max (no
-     * one reads the node's block before that: visiting order) */
     for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-      dl[j] = al[j];
-      dl[row + j] = ar[j];
+      o[j] = l[j];
+      o[row + j] = r[j];
     }
-  }
 #endif
+  }
 }
 
 /* A block where some edges are longer than some of its frames: lanes with
  * t < fc take the proportional term, and read the pad or older frames
- * meanwhile (never past the row's start). */
-static void turn_block_early(const turn_edge* te, uint32_t count,
-                             float* hist, size_t row, uint32_t t0) {
+ * meanwhile (never before the row's start). */
+static void turn_block_early(const turn_node* tn, uint32_t nodes,
+                             const turn_edge* te, float* hist, size_t row,
+                             uint32_t t0) {
 #if SMGI_DERIVED_SSE
   const __m128 t_lo = _mm_setr_ps((float)t0, (float)(t0 + 1u),
                                   (float)(t0 + 2u), (float)(t0 + 3u));
   const __m128 t_hi = _mm_add_ps(t_lo, _mm_set1_ps(4.0f));
   const __m128 sign = _mm_set1_ps(-0.0f);
-  __m128 al0 = _mm_setzero_ps(), al1 = al0, ar0 = al0, ar1 = al0;
-  for (uint32_t i = 0; i < count; ++i) {
-    const turn_edge* e = &te[i];
-    ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
-    if (back < -(ptrdiff_t)TURN_PAD) back = -(ptrdiff_t)TURN_PAD;
-    const float* sl = hist + e->to_row + back;
-    const float* sr = sl + row;
-    float* dl = hist + e->from_row + t0;
-    const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_xor_ps(dh, sign);
-    const __m128 keep = _mm_set1_ps(e->keep), fc = _mm_set1_ps((float)e->fc);
-    /* full lanes: t >= fc (exact: both below 2^24) */
-    const __m128 f0 = _mm_cmpge_ps(t_lo, fc), f1 = _mm_cmpge_ps(t_hi, fc);
-    /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
-     * symmetric, so the right direction negates the left's */
-    const __m128 p0 = _mm_div_ps(_mm_mul_ps(dh, t_lo), fc);
-    const __m128 p1 = _mm_div_ps(_mm_mul_ps(dh, t_hi), fc);
-    __m128 v0 = _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(dh, _mm_loadu_ps(sl))),
-                          _mm_andnot_ps(f0, p0));
-    __m128 v1 = _mm_or_ps(_mm_and_ps(f1, _mm_add_ps(dh, _mm_loadu_ps(sl + 4))),
-                          _mm_andnot_ps(f1, p1));
-    __m128 w0 = _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(nd, _mm_loadu_ps(sr))),
-                          _mm_andnot_ps(f0, _mm_xor_ps(p0, sign)));
-    __m128 w1 = _mm_or_ps(_mm_and_ps(f1, _mm_add_ps(nd, _mm_loadu_ps(sr + 4))),
-                          _mm_andnot_ps(f1, _mm_xor_ps(p1, sign)));
-    al0 = _mm_max_ps(v0, _mm_mul_ps(al0, keep));
-    al1 = _mm_max_ps(v1, _mm_mul_ps(al1, keep));
-    ar0 = _mm_max_ps(w0, _mm_mul_ps(ar0, keep));
-    ar1 = _mm_max_ps(w1, _mm_mul_ps(ar1, keep));
-    _mm_storeu_ps(dl, al0);
-    _mm_storeu_ps(dl + 4, al1);
-    _mm_storeu_ps(dl + row, ar0);
-    _mm_storeu_ps(dl + row + 4, ar1);
-  }
 #else
-  float al[TURN_BLOCK] = {0.0f}, ar[TURN_BLOCK] = {0.0f}, tf[TURN_BLOCK];
+  float tf[TURN_BLOCK];
   for (uint32_t j = 0; j < TURN_BLOCK; ++j) tf[j] = (float)(t0 + j);
-  for (uint32_t i = 0; i < count; ++i) {
-    const turn_edge* e = &te[i];
-    ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
-    if (back < -(ptrdiff_t)TURN_PAD) back = -(ptrdiff_t)TURN_PAD;
-    const float* sl = hist + e->to_row + back;
-    const float* sr = sl + row;
-    float* dl = hist + e->from_row + t0;
-    const float dh = e->dh, nd = -dh, keep = e->keep, fcf = (float)e->fc;
-    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-      const int full = t0 + j >= e->fc;
-      /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
-       * symmetric */
-      float p = dh * tf[j] / fcf;
-      float v = full ? dh + sl[j] : p, a = al[j] * keep;
-      float w = full ? nd + sr[j] : -p, b = ar[j] * keep;
-      al[j] = v > a ? v : a;
-      ar[j] = w > b ? w : b;
-    }
-    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-      dl[j] = al[j];
-      dl[row + j] = ar[j];
-    }
-  }
 #endif
+  for (uint32_t i = 0; i < nodes; ++i) {
+    const turn_edge* e = te + tn[i].first;
+    const turn_edge* end = e + tn[i].count;
+    float* o = hist + tn[i].row + t0;
+#if SMGI_DERIVED_SSE
+    __m128 l0 = _mm_setzero_ps(), l1 = l0, r0 = l0, r1 = l0;
+#else
+    float l[TURN_BLOCK] = {0.0f}, r[TURN_BLOCK] = {0.0f};
+#endif
+    for (; e != end; ++e) {
+      ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
+      if (back < -(ptrdiff_t)TURN_PAD) back = -(ptrdiff_t)TURN_PAD;
+      const float* sl = hist + e->src + (ptrdiff_t)e->fc + back;
+#if SMGI_DERIVED_SSE
+      const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_xor_ps(dh, sign);
+      const __m128 fc = _mm_set1_ps((float)e->fc);
+      /* full lanes: t >= fc (exact: both below 2^24) */
+      const __m128 f0 = _mm_cmpge_ps(t_lo, fc), f1 = _mm_cmpge_ps(t_hi, fc);
+      /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
+       * symmetric, so the right direction negates the left's */
+      const __m128 p0 = _mm_div_ps(_mm_mul_ps(dh, t_lo), fc);
+      const __m128 p1 = _mm_div_ps(_mm_mul_ps(dh, t_hi), fc);
+      const __m128 v0 =
+          _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(dh, _mm_loadu_ps(sl))),
+                    _mm_andnot_ps(f0, p0));
+      const __m128 v1 =
+          _mm_or_ps(_mm_and_ps(f1, _mm_add_ps(dh, _mm_loadu_ps(sl + 4))),
+                    _mm_andnot_ps(f1, p1));
+      const __m128 w0 =
+          _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(nd, _mm_loadu_ps(sl + row))),
+                    _mm_andnot_ps(f0, _mm_xor_ps(p0, sign)));
+      const __m128 w1 = _mm_or_ps(
+          _mm_and_ps(f1, _mm_add_ps(nd, _mm_loadu_ps(sl + row + 4))),
+          _mm_andnot_ps(f1, _mm_xor_ps(p1, sign)));
+      l0 = _mm_max_ps(v0, l0);
+      l1 = _mm_max_ps(v1, l1);
+      r0 = _mm_max_ps(w0, r0);
+      r1 = _mm_max_ps(w1, r1);
+#else
+      const float dh = e->dh, nd = -dh, fcf = (float)e->fc;
+      for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+        const int full = t0 + j >= e->fc;
+        /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
+         * symmetric */
+        const float p = dh * tf[j] / fcf;
+        const float v = full ? dh + sl[j] : p;
+        const float w = full ? nd + sl[row + j] : -p;
+        l[j] = v > l[j] ? v : l[j];
+        r[j] = w > r[j] ? w : r[j];
+      }
+#endif
+    }
+#if SMGI_DERIVED_SSE
+    _mm_storeu_ps(o, l0);
+    _mm_storeu_ps(o + 4, l1);
+    _mm_storeu_ps(o + row, r0);
+    _mm_storeu_ps(o + row + 4, r1);
+#else
+    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
+      o[j] = l[j];
+      o[row + j] = r[j];
+    }
+#endif
+  }
 }
 
 /* The frame-at-a-time programme, for graphs with a cycle of short edges. */
-static void turn_frames(const turn_edge* te, uint32_t count, float* hist,
-                        size_t row, uint32_t T) {
+static void turn_frames(const turn_node* tn, uint32_t nodes,
+                        const turn_edge* te, float* hist, size_t row,
+                        uint32_t T) {
   for (uint32_t t = 1; t <= T; ++t) {
-    float al = 0.0f, ar = 0.0f;
-    for (uint32_t i = 0; i < count; ++i) {
-      const turn_edge* e = &te[i];
-      const float dh = e->dh, nd = -dh, keep = e->keep;
-      float v, w;
-      if (e->fc <= t) {
-        const float* s = hist + e->to_row + (t - e->fc);
-        v = dh + s[0];
-        w = nd + s[row];
-      } else {
-        v = dh * (float)t / (float)e->fc;
-        w = -v;
+    for (uint32_t i = 0; i < nodes; ++i) {
+      float l = 0.0f, r = 0.0f;
+      for (uint32_t k = 0; k < tn[i].count; ++k) {
+        const turn_edge* e = &te[tn[i].first + k];
+        float v, w;
+        if (e->fc <= t) {
+          const float* s = hist + e->src + t;
+          v = e->dh + s[0];
+          w = -e->dh + s[row];
+        } else {
+          v = e->dh * (float)t / (float)e->fc;
+          w = -v;
+        }
+        l = v > l ? v : l;
+        r = w > r ? w : r;
       }
-      float a = al * keep, b = ar * keep;
-      al = v > a ? v : a;
-      ar = w > b ? w : b;
-      hist[e->from_row + t] = al;
-      hist[e->from_row + t + row] = ar;
+      hist[tn[i].row + t] = l;
+      hist[tn[i].row + row + t] = r;
     }
   }
 }
@@ -484,29 +493,27 @@ static size_t turn_row(uint32_t T) {
 static size_t turn_scratch_size(const smgi_graph_data* d) {
   const size_t LN = d->lower_node_count, LE = d->lower_edge_count;
   const size_t row = turn_row(turn_horizon(d));
-  if (LN > SIZE_MAX / 64u / row) return 0;
-  return sizeof(turn_edge) * LE + sizeof(uint32_t) * 4u * LN +
+  if (LN > SIZE_MAX / 128u / row) return 0;
+  return sizeof(turn_edge) * LE + sizeof(turn_node) * LN +
+         sizeof(uint32_t) * (4u + TURN_DEGREE_KEYS) * (LN + 1u) +
          sizeof(float) * 2u * LN * row + 64u;
 }
 
-/* An order of the nodes where every edge shorter than TURN_BLOCK frames
- * leads to an earlier node: by level (0: no short out-edge, else 1 + the
- * largest level its short edges lead to), which also puts a node's block
- * far from the reads of it (a read of a block just stored with other
- * offsets waits for the store to reach the cache). Returns 0 if short
- * edges form a cycle. `state` (LN) and `stack` (2 LN) are scratch. */
-static int short_edge_order(const smgi_graph_data* d, uint32_t* order,
-                            uint32_t* state, uint32_t* stack) {
+/* level[n] (0: no out-edge shorter than TURN_BLOCK frames, else 1 + the
+ * highest level such an edge leads to) by depth-first search; 0 if short
+ * edges form a cycle. `stack` holds 2 LN. Returns the highest level + 1. */
+static uint32_t short_edge_levels(const smgi_graph_data* d, uint32_t* level,
+                                  uint32_t* stack) {
   const uint32_t LN = d->lower_node_count;
-  uint32_t max_level = 0;
-  /* state: 0 unseen, 1 on the DFS stack, 2 + level when done */
-  memset(state, 0, sizeof(uint32_t) * LN);
+  uint32_t levels = 1;
+  /* level[]: 0 unseen, 1 on the DFS stack, 2 + level when done */
+  memset(level, 0, sizeof(uint32_t) * LN);
   for (uint32_t root = 0; root < LN; ++root) {
-    if (state[root]) continue;
+    if (level[root]) continue;
     uint32_t top = 0;
     stack[0] = root;
     stack[1] = 0;
-    state[root] = 1;
+    level[root] = 1;
     for (;;) {
       const uint32_t n = stack[2u * top];
       const smgi_node* node = &d->lower_nodes[n];
@@ -514,33 +521,27 @@ static int short_edge_order(const smgi_graph_data* d, uint32_t* order,
       if (stack[2u * top + 1u] < node->edge_count) {
         const smgi_edge* e = &edges[stack[2u * top + 1u]++];
         if (e->frame_count >= TURN_BLOCK) continue;
-        if (state[e->to] == 1u) return 0; /* back to an open node */
-        if (state[e->to] == 0u) {
+        if (level[e->to] == 1u) return 0; /* back to an open node */
+        if (level[e->to] == 0u) {
           ++top;
           stack[2u * top] = e->to;
           stack[2u * top + 1u] = 0;
-          state[e->to] = 1u;
+          level[e->to] = 1u;
         }
         continue;
       }
-      uint32_t level = 0;
+      uint32_t lv = 0;
       for (uint32_t k = 0; k < node->edge_count; ++k)
-        if (edges[k].frame_count < TURN_BLOCK &&
-            state[edges[k].to] - 1u > level)
-          level = state[edges[k].to] - 1u;
-      state[n] = 2u + level;
-      if (level > max_level) max_level = level;
+        if (edges[k].frame_count < TURN_BLOCK && level[edges[k].to] - 1u > lv)
+          lv = level[edges[k].to] - 1u;
+      level[n] = 2u + lv;
+      if (lv + 1u > levels) levels = lv + 1u;
       if (top == 0) break;
       --top;
     }
   }
-  /* counting sort by level */
-  uint32_t* first = stack;
-  memset(first, 0, sizeof(uint32_t) * ((size_t)max_level + 2u));
-  for (uint32_t n = 0; n < LN; ++n) first[state[n] - 1u]++;
-  for (uint32_t l = 0; l <= max_level; ++l) first[l + 1u] += first[l];
-  for (uint32_t n = 0; n < LN; ++n) order[first[state[n] - 2u]++] = n;
-  return 1;
+  for (uint32_t n = 0; n < LN; ++n) level[n] -= 2u;
+  return levels;
 }
 
 static void build_turn(const smgi_graph_data* d, void* scratch,
@@ -549,45 +550,69 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   const uint32_t T = turn_horizon(d);
   const size_t row = turn_row(T);
   turn_edge* te = (turn_edge*)scratch;
-  uint32_t* order = (uint32_t*)(te + d->lower_edge_count);
-  uint32_t* state = order + LN;
-  uint32_t* stack = state + LN;
-  float* hist = (float*)(stack + 2u * (size_t)LN);
+  turn_node* tn = (turn_node*)(te + d->lower_edge_count);
+  uint32_t* level = (uint32_t*)(tn + LN);
+  uint32_t* stack = level + LN;      /* 2 LN, then reused for the sort */
+  uint32_t* order = stack + 2u * (size_t)LN;
+  uint32_t* first = order + LN;      /* TURN_DEGREE_KEYS * levels + 1 */
+  float* hist =
+      (float*)(first + (size_t)TURN_DEGREE_KEYS * (LN + 1u) + 1u);
   if (LN == 0) return;
 
-  int blocks = short_edge_order(d, order, state, stack);
-  if (!blocks)
-    for (uint32_t n = 0; n < LN; ++n) order[n] = n;
-  uint32_t count = 0, max_fc = 0;
-  for (uint32_t i = 0; i < LN; ++i) {
+  /* visiting order: by (level, degree) with a counting sort; a cycle of
+   * short edges leaves everything on level 0 and sorted by degree only */
+  const uint32_t levels = short_edge_levels(d, level, stack);
+  const int blocks = levels != 0;
+  if (!blocks) memset(level, 0, sizeof(uint32_t) * LN);
+  const size_t keys = (size_t)(blocks ? levels : 1u) * TURN_DEGREE_KEYS;
+  memset(first, 0, sizeof(uint32_t) * (keys + 1u));
+  uint32_t max_fc = 0, nodes = 0, edges = 0;
+  for (uint32_t n = 0; n < LN; ++n) {
+    const uint32_t deg = d->lower_nodes[n].edge_count;
+    if (deg == 0) continue;
+    const uint32_t dk = deg < TURN_DEGREE_KEYS ? deg : TURN_DEGREE_KEYS;
+    first[(size_t)level[n] * TURN_DEGREE_KEYS + dk]++;
+  }
+  for (size_t k = 0; k < keys; ++k) first[k + 1u] += first[k];
+  for (uint32_t n = 0; n < LN; ++n) {
+    const uint32_t deg = d->lower_nodes[n].edge_count;
+    float* r = hist + (size_t)2u * n * row;
+    if (deg == 0) {
+      /* never written: best[t] = 0 throughout */
+      memset(r, 0, sizeof(float) * 2u * row);
+      continue;
+    }
+    /* the pad and best[0] = 0 */
+    for (uint32_t j = 0; j <= TURN_PAD; ++j) r[j] = r[row + j] = 0.0f;
+    const uint32_t dk = deg < TURN_DEGREE_KEYS ? deg : TURN_DEGREE_KEYS;
+    order[first[(size_t)level[n] * TURN_DEGREE_KEYS + dk - 1u]++] = n;
+    ++nodes;
+  }
+  for (uint32_t i = 0; i < nodes; ++i) {
     const uint32_t n = order[i];
     const smgi_node* node = &d->lower_nodes[n];
-    float* r = hist + (size_t)2u * n * row;
-    /* the pad and best[0] = 0; a node without edges stays at 0 */
-    size_t zeros = node->edge_count ? TURN_PAD + 1u : row;
-    memset(r, 0, sizeof(float) * zeros);
-    memset(r + row, 0, sizeof(float) * zeros);
+    tn[i].row = (ptrdiff_t)((size_t)2u * n * row + TURN_PAD);
+    tn[i].first = edges;
+    tn[i].count = node->edge_count;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
       const smgi_edge* e = &d->lower_edges[node->first_edge + k];
-      turn_edge* o = &te[count++];
-      o->to_row = (ptrdiff_t)((size_t)2u * e->to * row + TURN_PAD);
-      o->from_row = (ptrdiff_t)((size_t)2u * n * row + TURN_PAD);
+      turn_edge* o = &te[edges++];
+      o->src = (ptrdiff_t)((size_t)2u * e->to * row + TURN_PAD) -
+               (ptrdiff_t)e->frame_count;
       o->dh = e->displacement[2];
-      o->keep = k ? 1.0f : 0.0f;
       o->fc = e->frame_count;
-      o->unused = 0;
       if (e->frame_count > max_fc) max_fc = e->frame_count;
     }
   }
   if (blocks) {
     for (uint32_t t0 = 1; t0 <= T; t0 += TURN_BLOCK) {
       if (t0 >= max_fc)
-        turn_block(te, count, hist, row, t0);
+        turn_block(tn, nodes, te, hist, row, t0);
       else
-        turn_block_early(te, count, hist, row, t0);
+        turn_block_early(tn, nodes, te, hist, row, t0);
     }
   } else {
-    turn_frames(te, count, hist, row, T);
+    turn_frames(tn, nodes, te, hist, row, T);
   }
   for (uint32_t n = 0; n < LN; ++n) {
     const float* r = hist + (size_t)2u * n * row + TURN_PAD + T;
