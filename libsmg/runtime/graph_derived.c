@@ -43,52 +43,59 @@
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
 /* Multi-source BFS on reversed edges: hops[n*L + l] = 0 where node n has an
- * out-edge labelled l, else 1 + min over out-edges of hops[to]. `in_first`
- * / `in_edges` is the reverse adjacency (CSR), `queue` node_count scratch. */
+ * out-edge labelled l, else 1 + min over out-edges of hops[to] (capped at
+ * SMGI_HOPS_UNREACHABLE). The sources of every label come from one pass
+ * over the edges. `in_first` / `in_from` is the reverse adjacency (CSR),
+ * `queue` node_count + 1 scratch (appends write one past the end). */
 static void compute_hops(const smgi_node* nodes, uint32_t node_count,
                          const smgi_edge* edges, uint32_t label_count,
-                         const uint32_t* in_first, const uint32_t* in_edges,
+                         const uint32_t* in_first, const uint32_t* in_from,
                          uint32_t* queue, uint8_t* hops) {
+  const size_t L = label_count;
+  memset(hops, SMGI_HOPS_UNREACHABLE, (size_t)node_count * L);
+  for (uint32_t n = 0; n < node_count; ++n) {
+    const smgi_edge* e = edges + nodes[n].first_edge;
+    for (uint32_t k = 0; k < nodes[n].edge_count; ++k)
+      if (e[k].label < label_count) hops[n * L + e[k].label] = 0;
+  }
+  /* Branch-free appends: whether a node is new is data, not control flow
+   * (a BFS visits each node's in-edges in a pattern nothing predicts). A
+   * node already reached has hops <= hn + 1, so min() leaves it alone. */
   for (uint32_t l = 0; l < label_count; ++l) {
     uint32_t head = 0, tail = 0;
     for (uint32_t n = 0; n < node_count; ++n) {
-      uint8_t h = SMGI_HOPS_UNREACHABLE;
-      for (uint32_t k = 0; k < nodes[n].edge_count; ++k) {
-        if (edges[nodes[n].first_edge + k].label == l) {
-          h = 0;
-          break;
-        }
-      }
-      hops[(size_t)n * label_count + l] = h;
-      if (h == 0) queue[tail++] = n;
+      queue[tail] = n;
+      tail += hops[n * L + l] == 0;
     }
     while (head < tail) {
-      uint32_t n = queue[head++];
-      uint8_t hn = hops[(size_t)n * label_count + l];
+      const uint32_t n = queue[head++];
+      const uint8_t hn = hops[n * L + l];
       if (hn + 1u >= SMGI_HOPS_UNREACHABLE) continue;
-      for (uint32_t k = in_first[n]; k < in_first[n + 1]; ++k) {
-        uint32_t from = edges[in_edges[k]].from;
-        uint8_t* hf = &hops[(size_t)from * label_count + l];
-        if (*hf == SMGI_HOPS_UNREACHABLE) {
-          *hf = (uint8_t)(hn + 1u);
-          queue[tail++] = from;
-        }
+      const uint8_t next = (uint8_t)(hn + 1u);
+      for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
+        const uint32_t from = in_from[k];
+        uint8_t* hf = &hops[from * L + l];
+        const uint8_t old = *hf;
+        queue[tail] = from;
+        tail += old == SMGI_HOPS_UNREACHABLE;
+        *hf = old < next ? old : next;
       }
     }
   }
 }
 
-/* Reverse adjacency of one graph into caller scratch: in_first has
- * node_count + 1 entries, in_edges edge_count. */
+/* Reverse adjacency of one graph into caller scratch: the nodes with an
+ * edge into n are in_from[in_first[n] .. in_first[n + 1]) (in_first has
+ * node_count + 1 entries, in_from edge_count). */
 static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
                           uint32_t node_count, uint32_t* in_first,
-                          uint32_t* in_edges) {
+                          uint32_t* in_from) {
   memset(in_first, 0, sizeof(uint32_t) * ((size_t)node_count + 1u));
   for (uint32_t e = 0; e < edge_count; ++e) in_first[edges[e].to + 1u]++;
   for (uint32_t n = 0; n < node_count; ++n) in_first[n + 1u] += in_first[n];
   for (uint32_t e = 0; e < edge_count; ++e) {
     /* in_first[to] is used as a cursor and restored below */
-    in_edges[in_first[edges[e].to]++] = e;
+    in_from[in_first[edges[e].to]++] = edges[e].from;
   }
   for (uint32_t n = node_count; n > 0; --n) in_first[n] = in_first[n - 1u];
   in_first[0] = 0;
@@ -127,7 +134,8 @@ static void find_natural(const smgi_graph_data* d, uint32_t* natural) {
 typedef struct walk_step {
   float a[4];  /* dx, dz, cosf(dh), sinf(dh) */
   float b[4];  /* dz, -dx, -sinf(dh), cosf(dh) */
-  uint32_t to; /* SMGI_NONE: no natural edge, every walk ends here */
+  const struct walk_step* next; /* to's step; NULL: no natural edge, every
+                                   walk ends here */
   float frames, h, arc;
 } walk_step;
 
@@ -171,7 +179,7 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
   for (uint32_t m = 0; m < LN; ++m) {
     walk_step* w = &ws[m];
     if (natural[m] == SMGI_NONE) {
-      w->to = SMGI_NONE;
+      w->next = NULL;
       continue;
     }
     const smgi_edge* E = &d->lower_edges[natural[m]];
@@ -184,7 +192,8 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
     w->b[1] = -E->displacement[0];
     w->b[2] = -s;
     w->b[3] = c;
-    w->to = E->to;
+    /* the walk follows pointers: one load per edge on its critical path */
+    w->next = &ws[E->to];
     w->frames = (float)E->frame_count;
     w->h = E->displacement[2];
     w->arc = E->arc_length;
@@ -199,8 +208,10 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
     float x = 0.0f, z = 0.0f, c = 1.0f, s = 0.0f;
 #endif
     float h = 0.0f, arc = 0.0f, frames = 0.0f;
-    /* `from`: where the last edge started (natural[from] is that edge) */
-    uint32_t cur = n, from = n, walked = 0;
+    /* cur: the step about to be taken; from: the last one taken (its edge
+     * is natural[from - ws]) */
+    const walk_step *cur = &ws[n], *from = cur;
+    uint32_t walked = 0;
     int looked = 0;
     for (uint32_t k = 0; k < K; ++k) {
       const float want = step * (float)(k + 1u);
@@ -217,9 +228,8 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
           limit = 256u - walked;
       }
       for (;;) {
-        while (hops < limit && frames < target) {
-          const walk_step* w = &ws[cur];
-          if (w->to == SMGI_NONE) break;
+        while (hops < limit && frames < target && cur->next) {
+          const walk_step* w = cur;
 #if SMGI_DERIVED_SSE
           const __m128 c = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(2, 2, 2, 2));
           const __m128 s = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(3, 3, 3, 3));
@@ -236,13 +246,12 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
           h = wrap_fast(h + w->h);
           arc += w->arc;
           frames += w->frames;
-          from = cur;
-          cur = w->to;
+          from = w;
+          cur = w->next;
           ++hops;
         }
         if (looked) break;
-        if (walked + hops >= 256u || !(frames < look_frames) ||
-            ws[cur].to == SMGI_NONE) {
+        if (walked + hops >= 256u || !(frames < look_frames) || !cur->next) {
           /* the look ends here: after 256 edges, past its frames or where
            * the continuation ends; the sample goes on */
 #if SMGI_DERIVED_SSE
@@ -267,7 +276,7 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
       put_sample(trail + 4u * i, x, z, h, arc);
 #endif
       trail_frames[i] = frames;
-      trail_edge[i] = natural[from];
+      trail_edge[i] = natural[from - ws];
     }
     /* not reached: the trail walks past the look's frames or to its end */
     if (!looked) {
@@ -295,52 +304,74 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
  * float operations (max is exact and, starting from +0 and keeping the
  * larger, independent of order) in an order that keeps the CPU busy.
  *
- * Memory: per node, a left and a right row of best[] over time (time is
- * contiguous, so a block of 8 frames of best[t - fc][to] is one contiguous
- * read). Each row starts with TURN_PAD zeros that lanes with t < fc read
- * before their value is replaced by the proportional term.
+ * Blocks: frames t0 .. t0 + 7 are computed together, node by node, the
+ * node's maxima kept in registers. An edge with fc >= 8 reads only earlier
+ * blocks; one with fc < 8 also reads the current block of its `to` node,
+ * so nodes are visited by level (0: no short out-edge; else 1 + the
+ * highest level its short edges lead to), which puts every such `to` first
+ * - and far enough back that its block has left the store buffer (a read
+ * overlapping a recent store of other offsets waits for it). Within a
+ * level, nodes go by out-degree so the loop over a node's edges runs the
+ * same count many times in a row. If short edges form a cycle there is no
+ * such order and the programme runs one frame at a time (baked CMU and
+ * synthetic graphs have no cycle of edges shorter than 11 frames).
  *
- * Blocks: frames t0 .. t0 + 7 are computed together, node by node. An edge
- * with fc >= 8 reads only earlier blocks; one with fc < 8 also reads the
- * current block of its `to` node, so nodes are visited by level (0: no
- * short out-edge; else 1 + the highest level its short edges lead to),
- * which puts every such `to` first - and far enough back that its block
- * has left the store buffer (a read overlapping a recent store of other
- * offsets waits for it). Within a level, nodes go by out-degree so the
- * loop over a node's edges runs the same count many times in a row. If
- * short edges form a cycle there is no such order and the programme runs
- * one frame at a time (baked CMU and synthetic graphs have no cycle of
- * edges shorter than 11 frames). */
+ * Memory: per node, a left and a right ring of the last W frames of best[]
+ * (W a power of two >= the longest edge that fits in T, plus a block), so
+ * the scratch is ~270 KiB on a CMU graph instead of all T frames. Time t
+ * lives at ring position t mod W; positions W .. W + 7 repeat 0 .. 7 (a
+ * block written across the end is written again at the start, and the
+ * other way round), so any 8 consecutive frames read contiguously. Each
+ * ring has TURN_SLACK zeros before it, which the lanes of the first blocks
+ * with t < fc read before the proportional term replaces them. */
 #define TURN_BLOCK 8u
-#define TURN_PAD 8u
+#define TURN_SLACK 8u
 #define TURN_DEGREE_KEYS 9u /* degrees 1..8+ sorted apart */
 
 typedef struct turn_node {
-  ptrdiff_t row;  /* index of best[0][node] in its left row */
+  ptrdiff_t ring; /* index of the node's left ring (the right one follows) */
   uint32_t first; /* its edges: turn_edge[first .. first + count) */
   uint32_t count;
 } turn_node;
 
 typedef struct turn_edge {
-  ptrdiff_t src; /* index of best[-fc][to] in to's left row: + t reads
-                    best[t - fc][to] */
-  float dh;      /* left heading change; the right row uses -dh */
+  ptrdiff_t src; /* index of the `to` node's left ring */
+  float dh;      /* left heading change; the right ring uses -dh */
   uint32_t fc;
 } turn_edge;
 
+/* The geometry of the rings: W = mask + 1 and the floats per ring. */
+typedef struct turn_rings {
+  uint32_t mask;
+  size_t len; /* TURN_SLACK + W + TURN_BLOCK + 1 (a block starting at 1
+                 is repeated at W + 1), rounded up to 4 */
+} turn_rings;
+
+/* Where a block starting at ring position p is written a second time: at
+ * p + W when it covers positions 0..7 (read as W..W+7), at p - W when it
+ * runs past W (those frames belong at the start); 0 when neither. */
+static ptrdiff_t turn_repeat(uint32_t p, uint32_t mask) {
+  if (p < TURN_BLOCK) return (ptrdiff_t)mask + 1;
+  if (p + TURN_BLOCK > mask + 1u) return -(ptrdiff_t)mask - 1;
+  return 0;
+}
+
 /* A block where every edge has fc <= t0: no proportional terms. */
 static void turn_block(const turn_node* tn, uint32_t nodes,
-                       const turn_edge* te, float* hist, size_t row,
+                       const turn_edge* te, float* hist, turn_rings rg,
                        uint32_t t0) {
+  const size_t row = rg.len;
+  const uint32_t p = t0 & rg.mask;
+  const ptrdiff_t repeat = turn_repeat(p, rg.mask);
   for (uint32_t i = 0; i < nodes; ++i) {
     const turn_edge* e = te + tn[i].first;
     const turn_edge* end = e + tn[i].count;
-    float* o = hist + tn[i].row + t0;
+    float* o = hist + tn[i].ring + p;
 #if SMGI_DERIVED_SSE
     /* _mm_max_ps(v, b) is v > b ? v : b lane by lane */
     __m128 l0 = _mm_setzero_ps(), l1 = l0, r0 = l0, r1 = l0;
     for (; e != end; ++e) {
-      const float* sl = hist + e->src + t0;
+      const float* sl = hist + e->src + ((t0 - e->fc) & rg.mask);
       const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_set1_ps(-e->dh);
       l0 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl)), l0);
       l1 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl + 4)), l1);
@@ -351,10 +382,17 @@ static void turn_block(const turn_node* tn, uint32_t nodes,
     _mm_storeu_ps(o + 4, l1);
     _mm_storeu_ps(o + row, r0);
     _mm_storeu_ps(o + row + 4, r1);
+    if (repeat) {
+      o += repeat;
+      _mm_storeu_ps(o, l0);
+      _mm_storeu_ps(o + 4, l1);
+      _mm_storeu_ps(o + row, r0);
+      _mm_storeu_ps(o + row + 4, r1);
+    }
 #else
     float l[TURN_BLOCK] = {0.0f}, r[TURN_BLOCK] = {0.0f};
     for (; e != end; ++e) {
-      const float* sl = hist + e->src + t0;
+      const float* sl = hist + e->src + ((t0 - e->fc) & rg.mask);
       const float dh = e->dh, nd = -dh;
       for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
         const float v = dh + sl[j], w = nd + sl[row + j];
@@ -365,17 +403,24 @@ static void turn_block(const turn_node* tn, uint32_t nodes,
     for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
       o[j] = l[j];
       o[row + j] = r[j];
+      if (repeat) {
+        o[repeat + (ptrdiff_t)j] = l[j];
+        o[repeat + (ptrdiff_t)(row + j)] = r[j];
+      }
     }
 #endif
   }
 }
 
 /* A block where some edges are longer than some of its frames: lanes with
- * t < fc take the proportional term, and read the pad or older frames
- * meanwhile (never before the row's start). */
+ * t < fc take the proportional term, and read the slack or older frames
+ * meanwhile. Such blocks end before W (t0 < min(longest edge, T + 1) and
+ * W >= both + 8), so frames here are not wrapped. */
 static void turn_block_early(const turn_node* tn, uint32_t nodes,
-                             const turn_edge* te, float* hist, size_t row,
+                             const turn_edge* te, float* hist, turn_rings rg,
                              uint32_t t0) {
+  const size_t row = rg.len;
+  const ptrdiff_t repeat = turn_repeat(t0, rg.mask);
 #if SMGI_DERIVED_SSE
   const __m128 t_lo = _mm_setr_ps((float)t0, (float)(t0 + 1u),
                                   (float)(t0 + 2u), (float)(t0 + 3u));
@@ -388,7 +433,7 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
   for (uint32_t i = 0; i < nodes; ++i) {
     const turn_edge* e = te + tn[i].first;
     const turn_edge* end = e + tn[i].count;
-    float* o = hist + tn[i].row + t0;
+    float* o = hist + tn[i].ring + t0;
 #if SMGI_DERIVED_SSE
     __m128 l0 = _mm_setzero_ps(), l1 = l0, r0 = l0, r1 = l0;
 #else
@@ -396,8 +441,8 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
 #endif
     for (; e != end; ++e) {
       ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
-      if (back < -(ptrdiff_t)TURN_PAD) back = -(ptrdiff_t)TURN_PAD;
-      const float* sl = hist + e->src + (ptrdiff_t)e->fc + back;
+      if (back < -(ptrdiff_t)TURN_SLACK) back = -(ptrdiff_t)TURN_SLACK;
+      const float* sl = hist + e->src + back;
 #if SMGI_DERIVED_SSE
       const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_xor_ps(dh, sign);
       const __m128 fc = _mm_set1_ps((float)e->fc);
@@ -442,10 +487,21 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
     _mm_storeu_ps(o + 4, l1);
     _mm_storeu_ps(o + row, r0);
     _mm_storeu_ps(o + row + 4, r1);
+    if (repeat) {
+      o += repeat;
+      _mm_storeu_ps(o, l0);
+      _mm_storeu_ps(o + 4, l1);
+      _mm_storeu_ps(o + row, r0);
+      _mm_storeu_ps(o + row + 4, r1);
+    }
 #else
     for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
       o[j] = l[j];
       o[row + j] = r[j];
+      if (repeat) {
+        o[repeat + (ptrdiff_t)j] = l[j];
+        o[repeat + (ptrdiff_t)(row + j)] = r[j];
+      }
     }
 #endif
   }
@@ -453,8 +509,9 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
 
 /* The frame-at-a-time programme, for graphs with a cycle of short edges. */
 static void turn_frames(const turn_node* tn, uint32_t nodes,
-                        const turn_edge* te, float* hist, size_t row,
+                        const turn_edge* te, float* hist, turn_rings rg,
                         uint32_t T) {
+  const size_t row = rg.len;
   for (uint32_t t = 1; t <= T; ++t) {
     for (uint32_t i = 0; i < nodes; ++i) {
       float l = 0.0f, r = 0.0f;
@@ -462,7 +519,7 @@ static void turn_frames(const turn_node* tn, uint32_t nodes,
         const turn_edge* e = &te[tn[i].first + k];
         float v, w;
         if (e->fc <= t) {
-          const float* s = hist + e->src + t;
+          const float* s = hist + e->src + ((t - e->fc) & rg.mask);
           v = e->dh + s[0];
           w = -e->dh + s[row];
         } else {
@@ -472,27 +529,37 @@ static void turn_frames(const turn_node* tn, uint32_t nodes,
         l = v > l ? v : l;
         r = w > r ? w : r;
       }
-      hist[tn[i].row + t] = l;
-      hist[tn[i].row + row + t] = r;
+      hist[tn[i].ring + (t & rg.mask)] = l;
+      hist[tn[i].ring + row + (t & rg.mask)] = r;
     }
   }
 }
 
-/* Frames of the horizon and the length of one best[] row. */
+/* Frames of the horizon. */
 static uint32_t turn_horizon(const smgi_graph_data* d) {
   const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
   return (uint32_t)(SMGI_TURN_SECONDS * fps + 0.5f);
 }
 
-static size_t turn_row(uint32_t T) {
-  uint32_t blocks = (T + TURN_BLOCK - 1u) / TURN_BLOCK;
-  return TURN_PAD + 1u + (size_t)blocks * TURN_BLOCK;
+static turn_rings turn_rings_of(const smgi_graph_data* d) {
+  const uint32_t T = turn_horizon(d);
+  uint32_t reach = 0, W = 2u * TURN_BLOCK;
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e)
+    if (d->lower_edges[e].frame_count > reach)
+      reach = d->lower_edges[e].frame_count;
+  /* edges longer than T never read best[] (lanes past T are not used) */
+  if (reach > T) reach = T;
+  while (W < reach + TURN_BLOCK) W <<= 1;
+  turn_rings rg;
+  rg.mask = W - 1u;
+  rg.len = ((size_t)TURN_SLACK + W + TURN_BLOCK + 1u + 3u) & ~(size_t)3u;
+  return rg;
 }
 
 /* Scratch bytes build_turn needs (0 on overflow). */
 static size_t turn_scratch_size(const smgi_graph_data* d) {
   const size_t LN = d->lower_node_count, LE = d->lower_edge_count;
-  const size_t row = turn_row(turn_horizon(d));
+  const size_t row = turn_rings_of(d).len;
   if (LN > SIZE_MAX / 128u / row) return 0;
   return sizeof(turn_edge) * LE + sizeof(turn_node) * LN +
          sizeof(uint32_t) * (4u + TURN_DEGREE_KEYS) * (LN + 1u) +
@@ -548,15 +615,15 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
                        float* node_turn) {
   const uint32_t LN = d->lower_node_count;
   const uint32_t T = turn_horizon(d);
-  const size_t row = turn_row(T);
+  const turn_rings rg = turn_rings_of(d);
+  const size_t row = rg.len;
   turn_edge* te = (turn_edge*)scratch;
   turn_node* tn = (turn_node*)(te + d->lower_edge_count);
   uint32_t* level = (uint32_t*)(tn + LN);
-  uint32_t* stack = level + LN;      /* 2 LN, then reused for the sort */
+  uint32_t* stack = level + LN; /* 2 LN */
   uint32_t* order = stack + 2u * (size_t)LN;
-  uint32_t* first = order + LN;      /* TURN_DEGREE_KEYS * levels + 1 */
-  float* hist =
-      (float*)(first + (size_t)TURN_DEGREE_KEYS * (LN + 1u) + 1u);
+  uint32_t* first = order + LN; /* TURN_DEGREE_KEYS * levels + 1 */
+  float* hist = (float*)(first + (size_t)TURN_DEGREE_KEYS * (LN + 1u) + 1u);
   if (LN == 0) return;
 
   /* visiting order: by (level, degree) with a counting sort; a cycle of
@@ -582,8 +649,8 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
       memset(r, 0, sizeof(float) * 2u * row);
       continue;
     }
-    /* the pad and best[0] = 0 */
-    for (uint32_t j = 0; j <= TURN_PAD; ++j) r[j] = r[row + j] = 0.0f;
+    /* the slack and best[0] = 0 */
+    for (uint32_t j = 0; j <= TURN_SLACK; ++j) r[j] = r[row + j] = 0.0f;
     const uint32_t dk = deg < TURN_DEGREE_KEYS ? deg : TURN_DEGREE_KEYS;
     order[first[(size_t)level[n] * TURN_DEGREE_KEYS + dk - 1u]++] = n;
     ++nodes;
@@ -591,14 +658,13 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   for (uint32_t i = 0; i < nodes; ++i) {
     const uint32_t n = order[i];
     const smgi_node* node = &d->lower_nodes[n];
-    tn[i].row = (ptrdiff_t)((size_t)2u * n * row + TURN_PAD);
+    tn[i].ring = (ptrdiff_t)((size_t)2u * n * row + TURN_SLACK);
     tn[i].first = edges;
     tn[i].count = node->edge_count;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
       const smgi_edge* e = &d->lower_edges[node->first_edge + k];
       turn_edge* o = &te[edges++];
-      o->src = (ptrdiff_t)((size_t)2u * e->to * row + TURN_PAD) -
-               (ptrdiff_t)e->frame_count;
+      o->src = (ptrdiff_t)((size_t)2u * e->to * row + TURN_SLACK);
       o->dh = e->displacement[2];
       o->fc = e->frame_count;
       if (e->frame_count > max_fc) max_fc = e->frame_count;
@@ -607,15 +673,15 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   if (blocks) {
     for (uint32_t t0 = 1; t0 <= T; t0 += TURN_BLOCK) {
       if (t0 >= max_fc)
-        turn_block(tn, nodes, te, hist, row, t0);
+        turn_block(tn, nodes, te, hist, rg, t0);
       else
-        turn_block_early(tn, nodes, te, hist, row, t0);
+        turn_block_early(tn, nodes, te, hist, rg, t0);
     }
   } else {
-    turn_frames(tn, nodes, te, hist, row, T);
+    turn_frames(tn, nodes, te, hist, rg, T);
   }
   for (uint32_t n = 0; n < LN; ++n) {
-    const float* r = hist + (size_t)2u * n * row + TURN_PAD + T;
+    const float* r = hist + (size_t)2u * n * row + TURN_SLACK + (T & rg.mask);
     node_turn[2u * n] = r[0];
     node_turn[2u * n + 1u] = r[row];
   }
@@ -693,7 +759,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t maxe = d->lower_edge_count > d->upper_edge_count
                       ? d->lower_edge_count
                       : d->upper_edge_count;
-  size_t scratch_size = sizeof(uint32_t) * ((size_t)maxn + 1u + maxe + maxn);
+  size_t scratch_size = sizeof(uint32_t) * (2u * (size_t)maxn + 2u + maxe);
   size_t walk_size = sizeof(walk_step) * (size_t)LN;
   size_t turn_size = turn_scratch_size(d);
   if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
@@ -728,15 +794,15 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
 
   build_edge_mid(d, edge_mid);
 
-  /* BFS scratch: reverse adjacency of either graph. */
+  /* BFS scratch: reverse adjacency of either graph and the queue. */
   uint32_t* in_first = (uint32_t*)scratch;
-  uint32_t* in_edges = in_first + maxn + 1u;
-  uint32_t* queue = in_edges + maxe;
-  build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_edges);
-  compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_edges,
+  uint32_t* in_from = in_first + maxn + 1u;
+  uint32_t* queue = in_from + maxe;
+  build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_from);
+  compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_from,
                queue, lower_hops);
-  build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_edges);
-  compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_edges,
+  build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
+  compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,
                queue, upper_hops);
 
   /* Splice index: SPLC is sorted by lower_frame (validated), so a counting
