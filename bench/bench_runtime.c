@@ -110,9 +110,13 @@ static void baseline_step(const smg_graph* g, player* p, float dt) {
   smgi_pose_root(fa, ra);
   smgi_pose_root(fb, rb);
   for (int k = 0; k < 3; ++k) p->root[k] = ra[k] + a * (rb[k] - ra[k]);
-  /* the same data as the characters read: packed rotations decoded
-   * straight into the nlerp */
-  for (uint32_t j = 0; j < J; ++j) {
+  /* the same data as the characters read, decoded the same way: packed
+   * rotations straight into the nlerp, four joints at a time */
+  uint32_t j = 0;
+  for (; j + 4 <= J; j += 4)
+    smgi_pose_nlerp4(smgi_pose_rot(fa, j), smgi_pose_rot(fb, j), a,
+                     p->rot + 4 * j);
+  for (; j < J; ++j) {
     float qa[4], qb[4];
     smgi_quat_unpack_raw(smgi_pose_rot(fa, j), qa);
     smgi_quat_unpack_raw(smgi_pose_rot(fb, j), qb);

@@ -81,6 +81,183 @@ static inline void smgi_quat_unpack(const unsigned char* p, float* q) {
   q[3] *= s;
 }
 
+/* ---- four joints at once ------------------------------------------------- */
+
+/* out[0 .. 16) = nlerp(unpack(a_j), unpack(b_j), t) for the four packed
+ * rotations at a and b (joints j .. j+3 of two records; 24 bytes each),
+ * bit for bit what smgi_quat_unpack_raw on both and then the runtime's
+ * smgi_q_nlerp (rmath.h) give joint by joint: same operations in the same
+ * order, lane by lane. Why: one joint at a time the decode is ~100
+ * dependent scalar instructions on top of the nlerp (a character step
+ * samples ~30-50 joints from two frames); four lanes at a time, with the
+ * dropped component put in place by masks instead of indexed loads, cost
+ * about as much as the float nlerp did in format 1.
+ *
+ * Plain C below, SSE2 where it is part of the ABI (x86-64) unless built
+ * with -DSMGI_QPACK_SSE=0; tests/core/test_quat_pack.c holds both to the
+ * joint-by-joint result. */
+#ifndef SMGI_QPACK_SSE
+#if defined(__SSE2__) || defined(_M_X64) || \
+    (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define SMGI_QPACK_SSE 1
+#else
+#define SMGI_QPACK_SSE 0
+#endif
+#endif
+#if SMGI_QPACK_SSE
+#include <emmintrin.h>
+#endif
+
+/* Four rotations' components, lane k = joint k. */
+static inline void smgi_quat_unpack4_plain(const unsigned char* p, float* x,
+                                           float* y, float* z, float* w) {
+  int k;
+  for (k = 0; k < 4; ++k) {
+    const unsigned char* q = p + 6 * k;
+    const uint32_t w0 = (uint32_t)q[0] | (uint32_t)q[1] << 8;
+    const uint32_t w1 = (uint32_t)q[2] | (uint32_t)q[3] << 8;
+    const uint32_t w2 = (uint32_t)q[4] | (uint32_t)q[5] << 8;
+    const uint32_t i = (w1 & 1u) | (w2 & 1u) << 1;
+    const float a =
+        (float)((int32_t)w0 - SMGI_QPACK_MID16) * SMGI_QPACK_STEP16;
+    const float b =
+        (float)((int32_t)(w1 >> 1) - SMGI_QPACK_MID15) * SMGI_QPACK_STEP15;
+    const float c =
+        (float)((int32_t)(w2 >> 1) - SMGI_QPACK_MID15) * SMGI_QPACK_STEP15;
+    const float r = 1.0f - (a * a + b * b + c * c);
+    const float big = sqrtf(r > 0.0f ? r : 0.0f);
+    /* q[k] = (big, a, b, c)[(k - i) & 3] */
+    x[k] = i == 0u ? big : i == 1u ? c : i == 2u ? b : a;
+    y[k] = i == 1u ? big : i == 2u ? c : i == 3u ? b : a;
+    z[k] = i == 2u ? big : i == 3u ? c : i == 0u ? b : a;
+    w[k] = i == 3u ? big : i == 0u ? c : i == 1u ? b : a;
+  }
+}
+
+static inline void smgi_pose_nlerp4_plain(const unsigned char* a,
+                                          const unsigned char* b, float t,
+                                          float* out) {
+  float ax[4], ay[4], az[4], aw[4], bx[4], by[4], bz[4], bw[4];
+  int k;
+  smgi_quat_unpack4_plain(a, ax, ay, az, aw);
+  smgi_quat_unpack4_plain(b, bx, by, bz, bw);
+  for (k = 0; k < 4; ++k) {
+    const float d = ax[k] * bx[k] + ay[k] * by[k] + az[k] * bz[k] +
+                    aw[k] * bw[k];
+    const float s = d < 0.0f ? -t : t;
+    const float u = 1.0f - t;
+    const float ox = u * ax[k] + s * bx[k];
+    const float oy = u * ay[k] + s * by[k];
+    const float oz = u * az[k] + s * bz[k];
+    const float ow = u * aw[k] + s * bw[k];
+    /* >= 0.5 for any decoded inputs (lengths >= 1, same hemisphere), so
+     * no degenerate case: the nlerp's fallback never triggers */
+    const float inv = 1.0f / sqrtf(ox * ox + oy * oy + oz * oz + ow * ow);
+    out[4 * k] = ox * inv;
+    out[4 * k + 1] = oy * inv;
+    out[4 * k + 2] = oz * inv;
+    out[4 * k + 3] = ow * inv;
+  }
+}
+
+#if SMGI_QPACK_SSE
+static inline __m128i smgi_qpack_lanes16(const unsigned char* p,
+                                         unsigned off) {
+  return _mm_setr_epi32((int)((uint32_t)p[off] | (uint32_t)p[off + 1] << 8),
+                        (int)((uint32_t)p[off + 6] |
+                              (uint32_t)p[off + 7] << 8),
+                        (int)((uint32_t)p[off + 12] |
+                              (uint32_t)p[off + 13] << 8),
+                        (int)((uint32_t)p[off + 18] |
+                              (uint32_t)p[off + 19] << 8));
+}
+
+static inline void smgi_quat_unpack4_sse(const unsigned char* p, __m128* x,
+                                         __m128* y, __m128* z, __m128* w) {
+  const __m128i one = _mm_set1_epi32(1);
+  const __m128i w0 = smgi_qpack_lanes16(p, 0);
+  const __m128i w1 = smgi_qpack_lanes16(p, 2);
+  const __m128i w2 = smgi_qpack_lanes16(p, 4);
+  const __m128i i = _mm_or_si128(_mm_and_si128(w1, one),
+                                 _mm_slli_epi32(_mm_and_si128(w2, one), 1));
+  const __m128 a = _mm_mul_ps(
+      _mm_cvtepi32_ps(_mm_sub_epi32(w0, _mm_set1_epi32(SMGI_QPACK_MID16))),
+      _mm_set1_ps(SMGI_QPACK_STEP16));
+  const __m128 b = _mm_mul_ps(
+      _mm_cvtepi32_ps(_mm_sub_epi32(_mm_srli_epi32(w1, 1),
+                                    _mm_set1_epi32(SMGI_QPACK_MID15))),
+      _mm_set1_ps(SMGI_QPACK_STEP15));
+  const __m128 c = _mm_mul_ps(
+      _mm_cvtepi32_ps(_mm_sub_epi32(_mm_srli_epi32(w2, 1),
+                                    _mm_set1_epi32(SMGI_QPACK_MID15))),
+      _mm_set1_ps(SMGI_QPACK_STEP15));
+  const __m128 r = _mm_sub_ps(
+      _mm_set1_ps(1.0f),
+      _mm_add_ps(_mm_add_ps(_mm_mul_ps(a, a), _mm_mul_ps(b, b)),
+                 _mm_mul_ps(c, c)));
+  /* max(r, 0) is r > 0 ? r : 0, as in the plain version */
+  const __m128 big = _mm_sqrt_ps(_mm_max_ps(r, _mm_setzero_ps()));
+  /* e_k: lanes whose dropped index is k (exactly one per lane) */
+  const __m128 e0 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, _mm_setzero_si128()));
+  const __m128 e1 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, one));
+  const __m128 e2 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, _mm_set1_epi32(2)));
+  const __m128 e3 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, _mm_set1_epi32(3)));
+#define SMGI_QPACK_PICK(v0, v1, v2, v3)                                    \
+  _mm_or_ps(_mm_or_ps(_mm_and_ps(e0, v0), _mm_and_ps(e1, v1)),            \
+            _mm_or_ps(_mm_and_ps(e2, v2), _mm_and_ps(e3, v3)))
+  *x = SMGI_QPACK_PICK(big, c, b, a);
+  *y = SMGI_QPACK_PICK(a, big, c, b);
+  *z = SMGI_QPACK_PICK(b, a, big, c);
+  *w = SMGI_QPACK_PICK(c, b, a, big);
+#undef SMGI_QPACK_PICK
+}
+
+static inline void smgi_pose_nlerp4_sse(const unsigned char* a,
+                                        const unsigned char* b, float t,
+                                        float* out) {
+  __m128 ax, ay, az, aw, bx, by, bz, bw, d, s, u, ox, oy, oz, ow, inv;
+  const __m128 tv = _mm_set1_ps(t);
+  smgi_quat_unpack4_sse(a, &ax, &ay, &az, &aw);
+  smgi_quat_unpack4_sse(b, &bx, &by, &bz, &bw);
+  d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)),
+                            _mm_mul_ps(az, bz)),
+                 _mm_mul_ps(aw, bw));
+  /* d < 0 ? -t : t: flip t's sign bit where d < 0 */
+  s = _mm_xor_ps(tv, _mm_and_ps(_mm_cmplt_ps(d, _mm_setzero_ps()),
+                                _mm_set1_ps(-0.0f)));
+  u = _mm_set1_ps(1.0f - t);
+  ox = _mm_add_ps(_mm_mul_ps(u, ax), _mm_mul_ps(s, bx));
+  oy = _mm_add_ps(_mm_mul_ps(u, ay), _mm_mul_ps(s, by));
+  oz = _mm_add_ps(_mm_mul_ps(u, az), _mm_mul_ps(s, bz));
+  ow = _mm_add_ps(_mm_mul_ps(u, aw), _mm_mul_ps(s, bw));
+  inv = _mm_div_ps(
+      _mm_set1_ps(1.0f),
+      _mm_sqrt_ps(_mm_add_ps(
+          _mm_add_ps(_mm_add_ps(_mm_mul_ps(ox, ox), _mm_mul_ps(oy, oy)),
+                     _mm_mul_ps(oz, oz)),
+          _mm_mul_ps(ow, ow))));
+  ox = _mm_mul_ps(ox, inv);
+  oy = _mm_mul_ps(oy, inv);
+  oz = _mm_mul_ps(oz, inv);
+  ow = _mm_mul_ps(ow, inv);
+  _MM_TRANSPOSE4_PS(ox, oy, oz, ow); /* lanes -> one quaternion each */
+  _mm_storeu_ps(out, ox);
+  _mm_storeu_ps(out + 4, oy);
+  _mm_storeu_ps(out + 8, oz);
+  _mm_storeu_ps(out + 12, ow);
+}
+#endif
+
+static inline void smgi_pose_nlerp4(const unsigned char* a,
+                                    const unsigned char* b, float t,
+                                    float* out) {
+#if SMGI_QPACK_SSE
+  smgi_pose_nlerp4_sse(a, b, t, out);
+#else
+  smgi_pose_nlerp4_plain(a, b, t, out);
+#endif
+}
+
 /* Encode q (normalised first, in double). Returns 1 when q was finite and
  * of unit length within 1e-3, the blob's old acceptance rule, else 0 (the
  * identity is written then, so the bytes are still defined): the baker

@@ -41,4 +41,21 @@ static inline const unsigned char* smgi_graph_pose(const smg_graph* g,
   return smgi_pose_record(&g->data, i);
 }
 
+/* Which joints smgi_sample_joints samples (joint 0, the root, never: its
+ * rotation is placed in the world first). */
+typedef enum smgi_joint_set {
+  SMGI_JOINTS_ALL,       /* 1 .. J-1 */
+  SMGI_JOINTS_NOT_UPPER, /* the lower body's own (an action replaces the
+                            upper body) */
+  SMGI_JOINTS_UPPER      /* SMG_BODY_UPPER joints only */
+} smgi_joint_set;
+
+/* out[4j .. 4j+4) = nlerp of joint j's rotations in POSE records ra and rb
+ * at t, for the joints of `set` (others untouched); packed rotations are
+ * decoded straight into the nlerp, four joints at a time where four
+ * consecutive joints are wanted (pose.c). */
+void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
+                        const unsigned char* rb, float t,
+                        smgi_joint_set set, float* out);
+
 #endif /* SMG_GRAPH_INTERNAL_H */

@@ -10,6 +10,37 @@
 
 #include "character_internal.h"
 
+void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
+                        const unsigned char* rb, float t,
+                        smgi_joint_set set, float* out) {
+  const uint32_t J = g->data.joint_count;
+  const smgi_joint* joints = g->data.joints;
+  const unsigned char* qa = smgi_pose_rot(ra, 0);
+  const unsigned char* qb = smgi_pose_rot(rb, 0);
+#define WANTED(j)                                                     \
+  (set == SMGI_JOINTS_ALL ||                                          \
+   (set == SMGI_JOINTS_UPPER) == (joints[j].body_part == SMG_BODY_UPPER))
+  uint32_t j = 1;
+  while (j < J) {
+    if (j + 4u <= J && WANTED(j) && WANTED(j + 1u) && WANTED(j + 2u) &&
+        WANTED(j + 3u)) {
+      smgi_pose_nlerp4(qa + SMGI_QPACK_BYTES * j, qb + SMGI_QPACK_BYTES * j,
+                       t, out + 4u * j);
+      j += 4u;
+    } else {
+      if (WANTED(j)) {
+        /* the same operations as one lane of smgi_pose_nlerp4 */
+        float ja[4], jb[4];
+        smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
+        smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
+        smgi_q_nlerp(ja, jb, t, out + 4u * j);
+      }
+      ++j;
+    }
+  }
+#undef WANTED
+}
+
 /* World root position/rotation and ground placement of one lower frame. */
 static void place(const smg_graph* g, uint32_t frame, smgi_xform2 M,
                   float* pos, float* rot, float* gx, float* gz, float* gh) {
@@ -56,16 +87,13 @@ void smgi_pose_compose(smg_character* ch) {
   ch->ground[0] = gax + a * (gbx - gax);
   ch->ground[1] = gaz + a * (gbz - gaz);
   ch->heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));
-  /* decode each joint of both frames straight into its nlerp (which
-   * normalises, so the raw decode is enough) */
-  const unsigned char* qa = smgi_pose_rot(smgi_graph_pose(g, fa), 0);
-  const unsigned char* qb = smgi_pose_rot(smgi_graph_pose(g, fb), 0);
-  for (uint32_t j = 1; j < J; ++j) {
-    float ja[4], jb[4];
-    smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
-    smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
-    smgi_q_nlerp(ja, jb, a, ch->rot + 4u * j);
-  }
+  /* Decode both frames' joints straight into their nlerps, four joints at
+   * a time. While an action plays, its sample replaces every upper-body
+   * joint below, so the locomotion's own are not sampled at all. */
+  smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), a,
+                     ch->action != 0 ? SMGI_JOINTS_NOT_UPPER
+                                     : SMGI_JOINTS_ALL,
+                     ch->rot);
   uint32_t flags = g->data.frames[a < 0.5f ? fa : fb].flags;
   ch->contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
                                                      : 0u) |

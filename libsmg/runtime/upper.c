@@ -128,17 +128,10 @@ void smgi_upper_sample(const smg_character* ch, float* out) {
   uint32_t fa = e->first_frame + i0;
   uint32_t fb = i0 + 1u < e->frame_count ? fa + 1u
                                          : edges[ch->unext].first_frame;
-  const unsigned char* qa = smgi_pose_rot(smgi_graph_pose(g, fa), 0);
-  const unsigned char* qb = smgi_pose_rot(smgi_graph_pose(g, fb), 0);
   const uint32_t J = ch->joint_count;
   const uint32_t sb = g->data.info->spine_base_joint;
-  for (uint32_t j = 1; j < J; ++j) {
-    if (g->data.joints[j].body_part != SMG_BODY_UPPER) continue;
-    float ja[4], jb[4]; /* raw decode: the nlerp normalises */
-    smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
-    smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
-    smgi_q_nlerp(ja, jb, a, out + 4u * j);
-  }
+  smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), a,
+                     SMGI_JOINTS_UPPER, out);
   if (sb < J && sb > 0) {
     /* local'(spine_base) = correction * local_upper(spine_base) */
     float q[4];

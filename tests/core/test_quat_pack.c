@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "quat_pack.h"
+#include "rmath.h"
 #include "test_env.h"
 
 /* Max rotation error of a pack + unpack, radians (docs/blob-format.md):
@@ -350,6 +351,57 @@ static void test_pose_records(void** state) {
   }
 }
 
+/* Four joints at a time (the runtime's sampling) equals decoding each
+ * joint and running the runtime's nlerp on it, bit for bit, in the SSE2
+ * and the plain build alike: on neighbouring rotations (what consecutive
+ * frames look like), unrelated ones (edge boundaries) and random bytes. */
+static void test_nlerp4_matches_joint_by_joint(void** state) {
+  uint32_t n = smgt_quick() ? 3000u : 100000u, it, k;
+  (void)state;
+  for (it = 0; it < n; ++it) {
+    unsigned char a[24], b[24];
+    float ref[16], plain[16], fast[16];
+    const float t = it % 7 == 0 ? 0.0f : it % 7 == 1 ? 1.0f : (float)rnd01();
+    for (k = 0; k < 4; ++k) {
+      float qa[4], qb[4];
+      random_quat(qa);
+      if (it % 3 == 0) {
+        random_quat(qb); /* unrelated, often the other hemisphere */
+      } else {
+        uint32_t c;
+        for (c = 0; c < 4; ++c)
+          qb[c] = qa[c] + (float)(0.1 * (rnd01() - 0.5));
+      }
+      if (it % 5 == 4) {
+        uint32_t c;
+        for (c = 0; c < 6; ++c) {
+          a[6 * k + c] = (unsigned char)rnd32();
+          b[6 * k + c] = (unsigned char)rnd32();
+        }
+      } else {
+        float nb = 0.0f;
+        uint32_t c;
+        for (c = 0; c < 4; ++c) nb += qb[c] * qb[c];
+        for (c = 0; c < 4; ++c) qb[c] /= sqrtf(nb);
+        assert_int_equal(smgi_quat_pack(qa, a + 6 * k), 1);
+        assert_int_equal(smgi_quat_pack(qb, b + 6 * k), 1);
+      }
+    }
+    for (k = 0; k < 4; ++k) {
+      float ja[4], jb[4];
+      smgi_quat_unpack_raw(a + 6 * k, ja);
+      smgi_quat_unpack_raw(b + 6 * k, jb);
+      smgi_q_nlerp(ja, jb, t, ref + 4 * k);
+    }
+    smgi_pose_nlerp4_plain(a, b, t, plain);
+    smgi_pose_nlerp4(a, b, t, fast);
+    assert_memory_equal(plain, ref, sizeof ref);
+    assert_memory_equal(fast, ref, sizeof ref);
+  }
+  printf("nlerp4: %s path checked\n", SMGI_QPACK_SSE ? "SSE2 and plain"
+                                                       : "plain");
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_random_rotations_within_bound),
@@ -359,6 +411,7 @@ int main(void) {
       cmocka_unit_test(test_rejects_non_unit),
       cmocka_unit_test(test_every_pattern_decodes_to_unit),
       cmocka_unit_test(test_pose_records),
+      cmocka_unit_test(test_nlerp4_matches_joint_by_joint),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
