@@ -8,7 +8,8 @@
  * care (tests/runtime/test_derived.c keeps the plain versions as oracles
  * and checks every table against them):
  *  - node_turn, a dynamic programme over 3 s of frames x every edge, runs
- *    eight frames at a time in both directions at once (build_turn);
+ *    eight frames at a time in both directions at once, over rings of the
+ *    last few frames (build_turn);
  *  - node_look and node_trail come from one walk per node that carries the
  *    cosine and sine of its heading instead of calling sincosf per edge
  *    (build_walks; x and z agree with composing transforms edge by edge to

@@ -64,7 +64,6 @@ typedef struct ref_tables {
   /* per trail sample: hops walked and ground distance covered (bound) */
   uint32_t* trail_hops;
   float* trail_dist;
-  uint32_t look_hops_bound;
   uint32_t agile_style, max_lower_degree;
 } ref_tables;
 
@@ -133,6 +132,9 @@ static smgi_xform2 ref_step(const smgi_edge* E) {
   return s;
 }
 
+/* looks that stopped after 256 edges (coverage report) */
+static unsigned g_looks_cut;
+
 static void ref_look(const smgi_graph_data* d, const uint32_t* natural,
                      float* look) {
   const float look_frames = SMGI_LOOK_SECONDS * ref_fps(d);
@@ -140,7 +142,8 @@ static void ref_look(const smgi_graph_data* d, const uint32_t* natural,
     smgi_xform2 acc = {0.0f, 0.0f, 0.0f};
     float arc = 0.0f, frames = 0.0f;
     uint32_t cur = n;
-    for (uint32_t hop = 0; hop < 256u && frames < look_frames; ++hop) {
+    uint32_t hop;
+    for (hop = 0; hop < 256u && frames < look_frames; ++hop) {
       uint32_t e = natural[cur];
       if (e == SMGI_NONE) break;
       const smgi_edge* E = &d->lower_edges[e];
@@ -149,6 +152,7 @@ static void ref_look(const smgi_graph_data* d, const uint32_t* natural,
       frames += (float)E->frame_count;
       cur = E->to;
     }
+    if (hop == 256u && frames < look_frames) g_looks_cut++;
     look[4u * n + 0u] = acc.x;
     look[4u * n + 1u] = acc.z;
     look[4u * n + 2u] = acc.h;
@@ -497,10 +501,12 @@ static float rng_range(uint64_t* s, float lo, float hi) {
 }
 
 /* Nodes and edges of one graph; `dag` keeps edges shorter than 8 frames
- * going to higher node indices (no cycle of them: the block path). */
+ * going to higher node indices (no cycle of them: the block path);
+ * `short_only` makes edges 1-2 frames (at high frame rates the look then
+ * stops after 256 edges). */
 static uint32_t rand_edges(uint64_t* s, smgi_node* nodes, uint32_t N,
                            smgi_edge* edges, uint32_t labels, int dag,
-                           uint32_t T) {
+                           int short_only, uint32_t T) {
   /* one edge in ten may be longer than node_turn's horizon T */
   const uint32_t long_fc = T + 40u < RG_FRAMES ? T + 40u : RG_FRAMES;
   uint32_t E = 0;
@@ -519,6 +525,7 @@ static uint32_t rand_edges(uint64_t* s, smgi_node* nodes, uint32_t N,
       e->frame_count = r < 5u   ? 1u + rng_next(s) % 7u
                        : r < 9u ? 8u + rng_next(s) % 24u
                                 : 1u + rng_next(s) % long_fc;
+      if (short_only) e->frame_count = 1u + rng_next(s) % 2u;
       if (dag && e->frame_count < 8u && e->to <= n) e->frame_count += 8u;
       /* some edges continue the node's own motion (natural), one in ten
        * turns far (heading wraps) */
@@ -540,10 +547,12 @@ static uint32_t rand_edges(uint64_t* s, smgi_node* nodes, uint32_t N,
 
 static void rand_graph_make(rand_graph* rg, uint64_t seed) {
   static const float rates[] = {30.0f, 24.0f, 60.0f, 29.97f, 7.5f,
-                                120.0f, 25.0f, 1.0f, 0.1f};
+                                120.0f, 25.0f, 1.0f, 0.1f, 500.0f};
   uint64_t s = seed;
   memset(rg, 0, sizeof *rg);
   rg->info.frame_rate = rates[rng_next(&s) % (sizeof rates / sizeof *rates)];
+  /* every 8th graph: 500 Hz with 1-2 frame edges, so looks stop at 256 */
+  if ((seed & 7u) == 0) rg->info.frame_rate = 500.0f;
   const uint32_t T = (uint32_t)(SMGI_TURN_SECONDS * rg->info.frame_rate + 0.5f);
   for (uint32_t f = 0; f < RG_FRAMES; ++f) {
     rg->frames[f].root2d[0] = rng_range(&s, -20.0f, 20.0f);
@@ -566,10 +575,10 @@ static void rand_graph_make(rand_graph* rg, uint64_t seed) {
   d->upper_edges = rg->upper_edges;
   d->lower_edge_count =
       rand_edges(&s, rg->lower_nodes, d->lower_node_count, rg->lower_edges,
-                 d->style_count, (int)(seed & 1u), T);
+                 d->style_count, (int)(seed & 1u), (seed & 6u) == 0, T);
   d->upper_edge_count =
       rand_edges(&s, rg->upper_nodes, d->upper_node_count, rg->upper_edges,
-                 d->action_count, 0, T);
+                 d->action_count, 0, 0, T);
   d->splice_count = rng_next(&s) % 64u;
   uint32_t f = 0; /* SPLC is sorted by lower_frame */
   for (uint32_t i = 0; i < d->splice_count; ++i) {
@@ -589,10 +598,20 @@ static void test_random_graphs(void** state) {
   dev_stats st;
   memset(&st, 0, sizeof st);
   const uint32_t trials = smgt_quick() ? 60u : 400u;
+  unsigned cyclic = 0;
+  g_looks_cut = 0;
   for (uint32_t i = 0; i < trials; ++i) {
     char name[64];
     snprintf(name, sizeof name, "random graph %u", i);
     rand_graph_make(rg, 0x5eed0000u + i);
+    {
+      /* which node_turn path this graph takes (coverage report) */
+      const uint32_t LN = rg->g.data.lower_node_count;
+      uint32_t* scratch = (uint32_t*)malloc(sizeof(uint32_t) * 3u * LN);
+      assert_non_null(scratch);
+      cyclic += short_edge_levels(&rg->g.data, scratch, scratch + LN) == 0;
+      free(scratch);
+    }
     ref_tables r;
     ref_build(&rg->g.data, &r);
     assert_int_equal(smgi_graph_derived_build(&rg->g), SMG_OK);
@@ -610,6 +629,11 @@ static void test_random_graphs(void** state) {
     ref_free(&r);
   }
   report("random graphs", &st);
+  printf("random graphs: %u of %u with a cycle of short edges (node_turn "
+         "frame by frame), %u looks cut at 256 edges\n",
+         cyclic, trials, g_looks_cut);
+  assert_true(cyclic > 0 && cyclic < trials);
+  assert_true(g_looks_cut > 0);
   free(rg);
 }
 
