@@ -563,45 +563,55 @@ static size_t turn_scratch_size(const smgi_graph_data* d) {
   const size_t row = turn_rings_of(d).len;
   if (LN > SIZE_MAX / 128u / row) return 0;
   return sizeof(turn_edge) * LE + sizeof(turn_node) * LN +
-         sizeof(uint32_t) * (4u + TURN_DEGREE_KEYS) * (LN + 1u) +
+         sizeof(uint32_t) * ((5u + TURN_DEGREE_KEYS) * (LN + 1u) + LE) +
          sizeof(float) * 2u * LN * row + 64u;
 }
 
 /* level[n] (0: no out-edge shorter than TURN_BLOCK frames, else 1 + the
- * highest level such an edge leads to) by depth-first search; 0 if short
- * edges form a cycle. `stack` holds 2 LN. Returns the highest level + 1. */
+ * highest level such an edge leads to) by depth-first search over a
+ * compact copy of the short edges (sto[sfirst[n] .. sfirst[n + 1]), built
+ * here: LN + 1 and LE entries); 0 if short edges form a cycle. `stack`
+ * holds 2 LN. Returns the highest level + 1. */
 static uint32_t short_edge_levels(const smgi_graph_data* d, uint32_t* level,
-                                  uint32_t* stack) {
+                                  uint32_t* stack, uint32_t* sfirst,
+                                  uint32_t* sto) {
   const uint32_t LN = d->lower_node_count;
-  uint32_t levels = 1;
+  uint32_t levels = 1, count = 0;
+  for (uint32_t n = 0; n < LN; ++n) {
+    const smgi_node* node = &d->lower_nodes[n];
+    const smgi_edge* e = d->lower_edges + node->first_edge;
+    sfirst[n] = count;
+    for (uint32_t k = 0; k < node->edge_count; ++k) {
+      sto[count] = e[k].to;
+      count += e[k].frame_count < TURN_BLOCK;
+    }
+  }
+  sfirst[LN] = count;
   /* level[]: 0 unseen, 1 on the DFS stack, 2 + level when done */
-  memset(level, 0, sizeof(uint32_t) * LN);
+  for (uint32_t n = 0; n < LN; ++n)
+    level[n] = sfirst[n] == sfirst[n + 1u] ? 2u : 0u; /* no short edge */
   for (uint32_t root = 0; root < LN; ++root) {
     if (level[root]) continue;
     uint32_t top = 0;
     stack[0] = root;
-    stack[1] = 0;
+    stack[1] = sfirst[root];
     level[root] = 1;
     for (;;) {
       const uint32_t n = stack[2u * top];
-      const smgi_node* node = &d->lower_nodes[n];
-      const smgi_edge* edges = d->lower_edges + node->first_edge;
-      if (stack[2u * top + 1u] < node->edge_count) {
-        const smgi_edge* e = &edges[stack[2u * top + 1u]++];
-        if (e->frame_count >= TURN_BLOCK) continue;
-        if (level[e->to] == 1u) return 0; /* back to an open node */
-        if (level[e->to] == 0u) {
+      if (stack[2u * top + 1u] < sfirst[n + 1u]) {
+        const uint32_t to = sto[stack[2u * top + 1u]++];
+        if (level[to] == 1u) return 0; /* back to an open node */
+        if (level[to] == 0u) {
           ++top;
-          stack[2u * top] = e->to;
-          stack[2u * top + 1u] = 0;
-          level[e->to] = 1u;
+          stack[2u * top] = to;
+          stack[2u * top + 1u] = sfirst[to];
+          level[to] = 1u;
         }
         continue;
       }
       uint32_t lv = 0;
-      for (uint32_t k = 0; k < node->edge_count; ++k)
-        if (edges[k].frame_count < TURN_BLOCK && level[edges[k].to] - 1u > lv)
-          lv = level[edges[k].to] - 1u;
+      for (uint32_t k = sfirst[n]; k < sfirst[n + 1u]; ++k)
+        if (level[sto[k]] - 1u > lv) lv = level[sto[k]] - 1u;
       level[n] = 2u + lv;
       if (lv + 1u > levels) levels = lv + 1u;
       if (top == 0) break;
@@ -624,12 +634,14 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   uint32_t* stack = level + LN; /* 2 LN */
   uint32_t* order = stack + 2u * (size_t)LN;
   uint32_t* first = order + LN; /* TURN_DEGREE_KEYS * levels + 1 */
-  float* hist = (float*)(first + (size_t)TURN_DEGREE_KEYS * (LN + 1u) + 1u);
+  uint32_t* sfirst = first + (size_t)TURN_DEGREE_KEYS * (LN + 1u) + 1u;
+  uint32_t* sto = sfirst + LN + 1u; /* LE */
+  float* hist = (float*)(sto + d->lower_edge_count);
   if (LN == 0) return;
 
   /* visiting order: by (level, degree) with a counting sort; a cycle of
    * short edges leaves everything on level 0 and sorted by degree only */
-  const uint32_t levels = short_edge_levels(d, level, stack);
+  const uint32_t levels = short_edge_levels(d, level, stack, sfirst, sto);
   const int blocks = levels != 0;
   if (!blocks) memset(level, 0, sizeof(uint32_t) * LN);
   const size_t keys = (size_t)(blocks ? levels : 1u) * TURN_DEGREE_KEYS;

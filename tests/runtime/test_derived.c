@@ -606,10 +606,13 @@ static void test_random_graphs(void** state) {
     rand_graph_make(rg, 0x5eed0000u + i);
     {
       /* which node_turn path this graph takes (coverage report) */
-      const uint32_t LN = rg->g.data.lower_node_count;
-      uint32_t* scratch = (uint32_t*)malloc(sizeof(uint32_t) * 3u * LN);
+      const size_t LN = rg->g.data.lower_node_count;
+      uint32_t* scratch = (uint32_t*)malloc(
+          sizeof(uint32_t) * (4u * LN + 1u + rg->g.data.lower_edge_count));
       assert_non_null(scratch);
-      cyclic += short_edge_levels(&rg->g.data, scratch, scratch + LN) == 0;
+      cyclic += short_edge_levels(&rg->g.data, scratch, scratch + LN,
+                                  scratch + 3u * LN, scratch + 4u * LN + 1u) ==
+                0;
       free(scratch);
     }
     ref_tables r;
