@@ -46,12 +46,13 @@
  * writes, length in [1, 1.23] for arbitrary bytes. Meant for callers that
  * normalise anyway (nlerp), which then cost no extra square root.
  *
- * Speed (this runs 60-100 times per character step): the words are
- * assembled from bytes (one 16-bit load each, no temporary), and the
- * dropped component is put in place by *loading* from a table filled with
- * constant-index stores, q[k] = t[(k - i) & 3]. Storing to q at a
- * variable index instead made the caller's wider loads of q wait on
- * store forwarding: 2x slower per joint. */
+ * Speed (the runtime's root joint and the joints left over by
+ * smgi_pose_nlerp4 below): the words are assembled from bytes (one 16-bit
+ * load each, no temporary), and the dropped component is put in place by
+ * *loading* from a table filled with constant-index stores,
+ * q[k] = t[(k - i) & 3]. Storing to q at a variable index instead made the
+ * caller's wider loads of q wait on store forwarding: 2x slower per
+ * joint. */
 static inline void smgi_quat_unpack_raw(const unsigned char* p, float* q) {
   const uint32_t w0 = (uint32_t)p[0] | (uint32_t)p[1] << 8;
   const uint32_t w1 = (uint32_t)p[2] | (uint32_t)p[3] << 8;
