@@ -317,97 +317,105 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
  * such order and the programme runs one frame at a time (baked CMU and
  * synthetic graphs have no cycle of edges shorter than 11 frames).
  *
- * Memory: per node, a left and a right ring of the last W frames of best[]
- * (W a power of two >= the longest edge that fits in T, plus a block), so
- * the scratch is ~270 KiB on a CMU graph instead of all T frames. Time t
- * lives at ring position t mod W; positions W .. W + 7 repeat 0 .. 7 (a
- * block written across the end is written again at the start, and the
- * other way round), so any 8 consecutive frames read contiguously. Each
- * ring has TURN_SLACK zeros before it, which the lanes of the first blocks
- * with t < fc read before the proportional term replaces them. */
+ * Memory: per node, one ring of the last W frames of best[], left and
+ * right interleaved (frame t at 2 (t mod W), its right value next to it:
+ * an edge's read of 8 frames in both directions is 64 contiguous bytes).
+ * W is a power of two >= the longest edge that fits in T, plus a block,
+ * so the scratch is ~270 KiB on a CMU graph instead of all T frames.
+ * Positions W .. W + 7 repeat 0 .. 7 (a block written across the end is
+ * written again at the start, and the other way round), so any 8
+ * consecutive frames read contiguously. Each ring has TURN_SLACK frames
+ * of zeros before it, which the lanes of the first blocks with t < fc
+ * read before the proportional term replaces them. */
 #define TURN_BLOCK 8u
 #define TURN_SLACK 8u
 #define TURN_DEGREE_KEYS 9u /* degrees 1..8+ sorted apart */
 
 typedef struct turn_node {
-  ptrdiff_t ring; /* index of the node's left ring (the right one follows) */
+  ptrdiff_t ring; /* float index of frame 0 in the node's ring */
   uint32_t first; /* its edges: turn_edge[first .. first + count) */
   uint32_t count;
 } turn_node;
 
 typedef struct turn_edge {
-  ptrdiff_t src; /* index of the `to` node's left ring */
-  float dh;      /* left heading change; the right ring uses -dh */
+  ptrdiff_t src; /* float index of frame 0 in the `to` node's ring */
+  float dh;      /* left heading change; the right values use -dh */
   uint32_t fc;
 } turn_edge;
 
 /* The geometry of the rings: W = mask + 1 and the floats per ring. */
 typedef struct turn_rings {
   uint32_t mask;
-  size_t len; /* TURN_SLACK + W + TURN_BLOCK + 1 (a block starting at 1
-                 is repeated at W + 1), rounded up to 4 */
+  size_t len; /* 2 (TURN_SLACK + W + TURN_BLOCK + 1) (a block starting at
+                 1 is repeated at W + 1), rounded up to 4 */
 } turn_rings;
 
-/* Where a block starting at ring position p is written a second time: at
- * p + W when it covers positions 0..7 (read as W..W+7), at p - W when it
- * runs past W (those frames belong at the start); 0 when neither. */
+/* Where (in frames) a block starting at ring position p is written a
+ * second time: at p + W when it covers positions 0..7 (read as W..W+7),
+ * at p - W when it runs past W (those frames belong at the start); 0 when
+ * neither. */
 static ptrdiff_t turn_repeat(uint32_t p, uint32_t mask) {
   if (p < TURN_BLOCK) return (ptrdiff_t)mask + 1;
   if (p + TURN_BLOCK > mask + 1u) return -(ptrdiff_t)mask - 1;
   return 0;
 }
 
+#if SMGI_DERIVED_SSE
+/* (dh, -dh, dh, -dh): one edge's step for a left/right pair of frames */
+static inline __m128 turn_pair(float dh) {
+  return _mm_xor_ps(_mm_set1_ps(dh), _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f));
+}
+
+/* full ? a : b lane by lane (full: all ones or all zeros) */
+static inline __m128 turn_pick(__m128 full, __m128 a, __m128 b) {
+  return _mm_or_ps(_mm_and_ps(full, a), _mm_andnot_ps(full, b));
+}
+#endif
+
 /* A block where every edge has fc <= t0: no proportional terms. */
 static void turn_block(const turn_node* tn, uint32_t nodes,
                        const turn_edge* te, float* hist, turn_rings rg,
                        uint32_t t0) {
-  const size_t row = rg.len;
   const uint32_t p = t0 & rg.mask;
-  const ptrdiff_t repeat = turn_repeat(p, rg.mask);
+  const ptrdiff_t repeat = 2 * turn_repeat(p, rg.mask);
   for (uint32_t i = 0; i < nodes; ++i) {
     const turn_edge* e = te + tn[i].first;
     const turn_edge* end = e + tn[i].count;
-    float* o = hist + tn[i].ring + p;
+    float* o = hist + tn[i].ring + 2u * p;
 #if SMGI_DERIVED_SSE
     /* _mm_max_ps(v, b) is v > b ? v : b lane by lane */
-    __m128 l0 = _mm_setzero_ps(), l1 = l0, r0 = l0, r1 = l0;
+    __m128 m0 = _mm_setzero_ps(), m1 = m0, m2 = m0, m3 = m0;
     for (; e != end; ++e) {
-      const float* sl = hist + e->src + ((t0 - e->fc) & rg.mask);
-      const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_set1_ps(-e->dh);
-      l0 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl)), l0);
-      l1 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(sl + 4)), l1);
-      r0 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sl + row)), r0);
-      r1 = _mm_max_ps(_mm_add_ps(nd, _mm_loadu_ps(sl + row + 4)), r1);
+      const float* s = hist + e->src + 2u * ((t0 - e->fc) & rg.mask);
+      const __m128 dh = turn_pair(e->dh);
+      m0 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(s)), m0);
+      m1 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(s + 4)), m1);
+      m2 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(s + 8)), m2);
+      m3 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(s + 12)), m3);
     }
-    _mm_storeu_ps(o, l0);
-    _mm_storeu_ps(o + 4, l1);
-    _mm_storeu_ps(o + row, r0);
-    _mm_storeu_ps(o + row + 4, r1);
+    _mm_storeu_ps(o, m0);
+    _mm_storeu_ps(o + 4, m1);
+    _mm_storeu_ps(o + 8, m2);
+    _mm_storeu_ps(o + 12, m3);
     if (repeat) {
       o += repeat;
-      _mm_storeu_ps(o, l0);
-      _mm_storeu_ps(o + 4, l1);
-      _mm_storeu_ps(o + row, r0);
-      _mm_storeu_ps(o + row + 4, r1);
+      _mm_storeu_ps(o, m0);
+      _mm_storeu_ps(o + 4, m1);
+      _mm_storeu_ps(o + 8, m2);
+      _mm_storeu_ps(o + 12, m3);
     }
 #else
-    float l[TURN_BLOCK] = {0.0f}, r[TURN_BLOCK] = {0.0f};
+    float m[2u * TURN_BLOCK] = {0.0f};
     for (; e != end; ++e) {
-      const float* sl = hist + e->src + ((t0 - e->fc) & rg.mask);
-      const float dh = e->dh, nd = -dh;
-      for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-        const float v = dh + sl[j], w = nd + sl[row + j];
-        l[j] = v > l[j] ? v : l[j];
-        r[j] = w > r[j] ? w : r[j];
+      const float* s = hist + e->src + 2u * ((t0 - e->fc) & rg.mask);
+      for (uint32_t j = 0; j < 2u * TURN_BLOCK; ++j) {
+        const float v = ((j & 1u) ? -e->dh : e->dh) + s[j];
+        m[j] = v > m[j] ? v : m[j];
       }
     }
-    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-      o[j] = l[j];
-      o[row + j] = r[j];
-      if (repeat) {
-        o[repeat + (ptrdiff_t)j] = l[j];
-        o[repeat + (ptrdiff_t)(row + j)] = r[j];
-      }
+    for (uint32_t j = 0; j < 2u * TURN_BLOCK; ++j) {
+      o[j] = m[j];
+      if (repeat) o[repeat + (ptrdiff_t)j] = m[j];
     }
 #endif
   }
@@ -420,13 +428,12 @@ static void turn_block(const turn_node* tn, uint32_t nodes,
 static void turn_block_early(const turn_node* tn, uint32_t nodes,
                              const turn_edge* te, float* hist, turn_rings rg,
                              uint32_t t0) {
-  const size_t row = rg.len;
-  const ptrdiff_t repeat = turn_repeat(t0, rg.mask);
+  const ptrdiff_t repeat = 2 * turn_repeat(t0, rg.mask);
 #if SMGI_DERIVED_SSE
   const __m128 t_lo = _mm_setr_ps((float)t0, (float)(t0 + 1u),
                                   (float)(t0 + 2u), (float)(t0 + 3u));
   const __m128 t_hi = _mm_add_ps(t_lo, _mm_set1_ps(4.0f));
-  const __m128 sign = _mm_set1_ps(-0.0f);
+  const __m128 right = _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f);
 #else
   float tf[TURN_BLOCK];
   for (uint32_t j = 0; j < TURN_BLOCK; ++j) tf[j] = (float)(t0 + j);
@@ -434,75 +441,72 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
   for (uint32_t i = 0; i < nodes; ++i) {
     const turn_edge* e = te + tn[i].first;
     const turn_edge* end = e + tn[i].count;
-    float* o = hist + tn[i].ring + t0;
+    float* o = hist + tn[i].ring + 2u * t0;
 #if SMGI_DERIVED_SSE
-    __m128 l0 = _mm_setzero_ps(), l1 = l0, r0 = l0, r1 = l0;
+    __m128 m0 = _mm_setzero_ps(), m1 = m0, m2 = m0, m3 = m0;
 #else
-    float l[TURN_BLOCK] = {0.0f}, r[TURN_BLOCK] = {0.0f};
+    float m[2u * TURN_BLOCK] = {0.0f};
 #endif
     for (; e != end; ++e) {
       ptrdiff_t back = (ptrdiff_t)t0 - (ptrdiff_t)e->fc;
       if (back < -(ptrdiff_t)TURN_SLACK) back = -(ptrdiff_t)TURN_SLACK;
-      const float* sl = hist + e->src + back;
+      const float* s = hist + e->src + 2 * back;
 #if SMGI_DERIVED_SSE
-      const __m128 dh = _mm_set1_ps(e->dh), nd = _mm_xor_ps(dh, sign);
+      const __m128 dh1 = _mm_set1_ps(e->dh), dh = _mm_xor_ps(dh1, right);
       const __m128 fc = _mm_set1_ps((float)e->fc);
-      /* full lanes: t >= fc (exact: both below 2^24) */
-      const __m128 f0 = _mm_cmpge_ps(t_lo, fc), f1 = _mm_cmpge_ps(t_hi, fc);
+      /* full frames: t >= fc (exact: both below 2^24), lanes per frame */
+      const __m128 f_lo = _mm_cmpge_ps(t_lo, fc);
+      const __m128 f_hi = _mm_cmpge_ps(t_hi, fc);
       /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
-       * symmetric, so the right direction negates the left's */
-      const __m128 p0 = _mm_div_ps(_mm_mul_ps(dh, t_lo), fc);
-      const __m128 p1 = _mm_div_ps(_mm_mul_ps(dh, t_hi), fc);
-      const __m128 v0 =
-          _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(dh, _mm_loadu_ps(sl))),
-                    _mm_andnot_ps(f0, p0));
-      const __m128 v1 =
-          _mm_or_ps(_mm_and_ps(f1, _mm_add_ps(dh, _mm_loadu_ps(sl + 4))),
-                    _mm_andnot_ps(f1, p1));
-      const __m128 w0 =
-          _mm_or_ps(_mm_and_ps(f0, _mm_add_ps(nd, _mm_loadu_ps(sl + row))),
-                    _mm_andnot_ps(f0, _mm_xor_ps(p0, sign)));
-      const __m128 w1 = _mm_or_ps(
-          _mm_and_ps(f1, _mm_add_ps(nd, _mm_loadu_ps(sl + row + 4))),
-          _mm_andnot_ps(f1, _mm_xor_ps(p1, sign)));
-      l0 = _mm_max_ps(v0, l0);
-      l1 = _mm_max_ps(v1, l1);
-      r0 = _mm_max_ps(w0, r0);
-      r1 = _mm_max_ps(w1, r1);
+       * symmetric, so the right values negate the left's */
+      const __m128 p_lo = _mm_div_ps(_mm_mul_ps(dh1, t_lo), fc);
+      const __m128 p_hi = _mm_div_ps(_mm_mul_ps(dh1, t_hi), fc);
+      /* frame lanes -> left/right pair lanes */
+      const __m128 f0 = _mm_unpacklo_ps(f_lo, f_lo);
+      const __m128 f1 = _mm_unpackhi_ps(f_lo, f_lo);
+      const __m128 f2 = _mm_unpacklo_ps(f_hi, f_hi);
+      const __m128 f3 = _mm_unpackhi_ps(f_hi, f_hi);
+      const __m128 p0 = _mm_xor_ps(_mm_unpacklo_ps(p_lo, p_lo), right);
+      const __m128 p1 = _mm_xor_ps(_mm_unpackhi_ps(p_lo, p_lo), right);
+      const __m128 p2 = _mm_xor_ps(_mm_unpacklo_ps(p_hi, p_hi), right);
+      const __m128 p3 = _mm_xor_ps(_mm_unpackhi_ps(p_hi, p_hi), right);
+      m0 = _mm_max_ps(turn_pick(f0, _mm_add_ps(dh, _mm_loadu_ps(s)), p0), m0);
+      m1 = _mm_max_ps(turn_pick(f1, _mm_add_ps(dh, _mm_loadu_ps(s + 4)), p1),
+                      m1);
+      m2 = _mm_max_ps(turn_pick(f2, _mm_add_ps(dh, _mm_loadu_ps(s + 8)), p2),
+                      m2);
+      m3 = _mm_max_ps(turn_pick(f3, _mm_add_ps(dh, _mm_loadu_ps(s + 12)), p3),
+                      m3);
 #else
-      const float dh = e->dh, nd = -dh, fcf = (float)e->fc;
+      const float fcf = (float)e->fc;
       for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
         const int full = t0 + j >= e->fc;
         /* (-dh * t) / fc == -((dh * t) / fc): rounding to nearest is
          * symmetric */
-        const float p = dh * tf[j] / fcf;
-        const float v = full ? dh + sl[j] : p;
-        const float w = full ? nd + sl[row + j] : -p;
-        l[j] = v > l[j] ? v : l[j];
-        r[j] = w > r[j] ? w : r[j];
+        const float p = e->dh * tf[j] / fcf;
+        const float v = full ? e->dh + s[2u * j] : p;
+        const float w = full ? -e->dh + s[2u * j + 1u] : -p;
+        m[2u * j] = v > m[2u * j] ? v : m[2u * j];
+        m[2u * j + 1u] = w > m[2u * j + 1u] ? w : m[2u * j + 1u];
       }
 #endif
     }
 #if SMGI_DERIVED_SSE
-    _mm_storeu_ps(o, l0);
-    _mm_storeu_ps(o + 4, l1);
-    _mm_storeu_ps(o + row, r0);
-    _mm_storeu_ps(o + row + 4, r1);
+    _mm_storeu_ps(o, m0);
+    _mm_storeu_ps(o + 4, m1);
+    _mm_storeu_ps(o + 8, m2);
+    _mm_storeu_ps(o + 12, m3);
     if (repeat) {
       o += repeat;
-      _mm_storeu_ps(o, l0);
-      _mm_storeu_ps(o + 4, l1);
-      _mm_storeu_ps(o + row, r0);
-      _mm_storeu_ps(o + row + 4, r1);
+      _mm_storeu_ps(o, m0);
+      _mm_storeu_ps(o + 4, m1);
+      _mm_storeu_ps(o + 8, m2);
+      _mm_storeu_ps(o + 12, m3);
     }
 #else
-    for (uint32_t j = 0; j < TURN_BLOCK; ++j) {
-      o[j] = l[j];
-      o[row + j] = r[j];
-      if (repeat) {
-        o[repeat + (ptrdiff_t)j] = l[j];
-        o[repeat + (ptrdiff_t)(row + j)] = r[j];
-      }
+    for (uint32_t j = 0; j < 2u * TURN_BLOCK; ++j) {
+      o[j] = m[j];
+      if (repeat) o[repeat + (ptrdiff_t)j] = m[j];
     }
 #endif
   }
@@ -512,7 +516,6 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
 static void turn_frames(const turn_node* tn, uint32_t nodes,
                         const turn_edge* te, float* hist, turn_rings rg,
                         uint32_t T) {
-  const size_t row = rg.len;
   for (uint32_t t = 1; t <= T; ++t) {
     for (uint32_t i = 0; i < nodes; ++i) {
       float l = 0.0f, r = 0.0f;
@@ -520,9 +523,9 @@ static void turn_frames(const turn_node* tn, uint32_t nodes,
         const turn_edge* e = &te[tn[i].first + k];
         float v, w;
         if (e->fc <= t) {
-          const float* s = hist + e->src + ((t - e->fc) & rg.mask);
+          const float* s = hist + e->src + 2u * ((t - e->fc) & rg.mask);
           v = e->dh + s[0];
-          w = -e->dh + s[row];
+          w = -e->dh + s[1];
         } else {
           v = e->dh * (float)t / (float)e->fc;
           w = -v;
@@ -530,8 +533,9 @@ static void turn_frames(const turn_node* tn, uint32_t nodes,
         l = v > l ? v : l;
         r = w > r ? w : r;
       }
-      hist[tn[i].ring + (t & rg.mask)] = l;
-      hist[tn[i].ring + row + (t & rg.mask)] = r;
+      float* o = hist + tn[i].ring + 2u * (t & rg.mask);
+      o[0] = l;
+      o[1] = r;
     }
   }
 }
@@ -553,7 +557,7 @@ static turn_rings turn_rings_of(const smgi_graph_data* d) {
   while (W < reach + TURN_BLOCK) W <<= 1;
   turn_rings rg;
   rg.mask = W - 1u;
-  rg.len = ((size_t)TURN_SLACK + W + TURN_BLOCK + 1u + 3u) & ~(size_t)3u;
+  rg.len = (2u * ((size_t)TURN_SLACK + W + TURN_BLOCK + 1u) + 3u) & ~(size_t)3u;
   return rg;
 }
 
@@ -564,7 +568,7 @@ static size_t turn_scratch_size(const smgi_graph_data* d) {
   if (LN > SIZE_MAX / 128u / row) return 0;
   return sizeof(turn_edge) * LE + sizeof(turn_node) * LN +
          sizeof(uint32_t) * ((5u + TURN_DEGREE_KEYS) * (LN + 1u) + LE) +
-         sizeof(float) * 2u * LN * row + 64u;
+         sizeof(float) * LN * row + 64u;
 }
 
 /* level[n] (0: no out-edge shorter than TURN_BLOCK frames, else 1 + the
@@ -656,14 +660,14 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   for (size_t k = 0; k < keys; ++k) first[k + 1u] += first[k];
   for (uint32_t n = 0; n < LN; ++n) {
     const uint32_t deg = d->lower_nodes[n].edge_count;
-    float* r = hist + (size_t)2u * n * row;
+    float* r = hist + (size_t)n * row;
     if (deg == 0) {
       /* never written: best[t] = 0 throughout */
-      memset(r, 0, sizeof(float) * 2u * row);
+      memset(r, 0, sizeof(float) * row);
       continue;
     }
     /* the slack and best[0] = 0 */
-    for (uint32_t j = 0; j <= TURN_SLACK; ++j) r[j] = r[row + j] = 0.0f;
+    for (uint32_t j = 0; j < 2u * (TURN_SLACK + 1u); ++j) r[j] = 0.0f;
     const uint32_t dk = deg < TURN_DEGREE_KEYS ? deg : TURN_DEGREE_KEYS;
     order[first[(size_t)level[n] * TURN_DEGREE_KEYS + dk - 1u]++] = n;
     ++nodes;
@@ -671,13 +675,13 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   for (uint32_t i = 0; i < nodes; ++i) {
     const uint32_t n = order[i];
     const smgi_node* node = &d->lower_nodes[n];
-    tn[i].ring = (ptrdiff_t)((size_t)2u * n * row + TURN_SLACK);
+    tn[i].ring = (ptrdiff_t)((size_t)n * row + 2u * TURN_SLACK);
     tn[i].first = edges;
     tn[i].count = node->edge_count;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
       const smgi_edge* e = &d->lower_edges[node->first_edge + k];
       turn_edge* o = &te[edges++];
-      o->src = (ptrdiff_t)((size_t)2u * e->to * row + TURN_SLACK);
+      o->src = (ptrdiff_t)((size_t)e->to * row + 2u * TURN_SLACK);
       o->dh = e->displacement[2];
       o->fc = e->frame_count;
       if (e->frame_count > max_fc) max_fc = e->frame_count;
@@ -694,9 +698,10 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
     turn_frames(tn, nodes, te, hist, rg, T);
   }
   for (uint32_t n = 0; n < LN; ++n) {
-    const float* r = hist + (size_t)2u * n * row + TURN_SLACK + (T & rg.mask);
+    const float* r =
+        hist + (size_t)n * row + 2u * (TURN_SLACK + (T & rg.mask));
     node_turn[2u * n] = r[0];
-    node_turn[2u * n + 1u] = r[row];
+    node_turn[2u * n + 1u] = r[1];
   }
 }
 
