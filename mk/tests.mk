@@ -52,8 +52,11 @@ test-install: $(LIBSMG_A) $(LIBSMG_SO)
 
 # Unit tests under AddressSanitizer + UBSan, in their own build tree.
 SANITIZE_FLAGS := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+# The unit tests also read the default blob and run smg-synth from their
+# build directory: make those in the sanitizer build too.
 sanitize:
-	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize OPT="$(SANITIZE_FLAGS)" test-unit
+	$(MAKE) --no-print-directory BUILD=$(BUILD)/sanitize OPT="$(SANITIZE_FLAGS)" \
+	  $(BUILD)/sanitize/default.smg $(BUILD)/sanitize/smg-synth test-unit
 
 # Graph load cost vs a memcpy baseline, on the default blob when it exists.
 BENCH_TARGETS += bench-load
