@@ -373,6 +373,27 @@ static inline __m128 turn_pick(__m128 full, __m128 a, __m128 b) {
 }
 #endif
 
+/* Store a block's 2 * TURN_BLOCK results at o and, when the ring wraps
+ * inside the block's reach, again `repeat` floats on (both kernels). */
+#if SMGI_DERIVED_SSE
+static void turn_store_sse(float* o, ptrdiff_t repeat, __m128 m0, __m128 m1,
+                           __m128 m2, __m128 m3) {
+  for (int k = 0; k < (repeat ? 2 : 1); ++k, o += repeat) {
+    _mm_storeu_ps(o, m0);
+    _mm_storeu_ps(o + 4, m1);
+    _mm_storeu_ps(o + 8, m2);
+    _mm_storeu_ps(o + 12, m3);
+  }
+}
+#else
+static void turn_store(float* o, ptrdiff_t repeat, const float* m) {
+  for (uint32_t j = 0; j < 2u * TURN_BLOCK; ++j) {
+    o[j] = m[j];
+    if (repeat) o[repeat + (ptrdiff_t)j] = m[j];
+  }
+}
+#endif
+
 /* A block where every edge has fc <= t0: no proportional terms. */
 static void turn_block(const turn_node* tn, uint32_t nodes,
                        const turn_edge* te, float* hist, turn_rings rg,
@@ -394,17 +415,7 @@ static void turn_block(const turn_node* tn, uint32_t nodes,
       m2 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(s + 8)), m2);
       m3 = _mm_max_ps(_mm_add_ps(dh, _mm_loadu_ps(s + 12)), m3);
     }
-    _mm_storeu_ps(o, m0);
-    _mm_storeu_ps(o + 4, m1);
-    _mm_storeu_ps(o + 8, m2);
-    _mm_storeu_ps(o + 12, m3);
-    if (repeat) {
-      o += repeat;
-      _mm_storeu_ps(o, m0);
-      _mm_storeu_ps(o + 4, m1);
-      _mm_storeu_ps(o + 8, m2);
-      _mm_storeu_ps(o + 12, m3);
-    }
+    turn_store_sse(o, repeat, m0, m1, m2, m3);
 #else
     float m[2u * TURN_BLOCK] = {0.0f};
     for (; e != end; ++e) {
@@ -414,10 +425,7 @@ static void turn_block(const turn_node* tn, uint32_t nodes,
         m[j] = v > m[j] ? v : m[j];
       }
     }
-    for (uint32_t j = 0; j < 2u * TURN_BLOCK; ++j) {
-      o[j] = m[j];
-      if (repeat) o[repeat + (ptrdiff_t)j] = m[j];
-    }
+    turn_store(o, repeat, m);
 #endif
   }
 }
@@ -493,22 +501,9 @@ static void turn_block_early(const turn_node* tn, uint32_t nodes,
 #endif
     }
 #if SMGI_DERIVED_SSE
-    _mm_storeu_ps(o, m0);
-    _mm_storeu_ps(o + 4, m1);
-    _mm_storeu_ps(o + 8, m2);
-    _mm_storeu_ps(o + 12, m3);
-    if (repeat) {
-      o += repeat;
-      _mm_storeu_ps(o, m0);
-      _mm_storeu_ps(o + 4, m1);
-      _mm_storeu_ps(o + 8, m2);
-      _mm_storeu_ps(o + 12, m3);
-    }
+    turn_store_sse(o, repeat, m0, m1, m2, m3);
 #else
-    for (uint32_t j = 0; j < 2u * TURN_BLOCK; ++j) {
-      o[j] = m[j];
-      if (repeat) o[repeat + (ptrdiff_t)j] = m[j];
-    }
+    turn_store(o, repeat, m);
 #endif
   }
 }
