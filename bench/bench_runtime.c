@@ -111,18 +111,16 @@ static void baseline_step(const smg_graph* g, player* p, float dt) {
   smgi_pose_root(fa, ra);
   smgi_pose_root(fb, rb);
   for (int k = 0; k < 3; ++k) p->root[k] = ra[k] + a * (rb[k] - ra[k]);
-  /* the same data as the characters read, decoded the same way: packed
-   * rotations straight into the nlerp, four joints at a time */
-  uint32_t j = 0;
-  for (; j + 4 <= J; j += 4)
-    smgi_pose_nlerp4(smgi_pose_rot(fa, j), smgi_pose_rot(fb, j), a,
-                     p->rot + 4 * j);
-  for (; j < J; ++j) {
+  /* the same data as the characters read, decoded by the runtime's own
+   * sampler (packed rotations straight into the nlerp, four joints at a
+   * time); it leaves the root joint to the caller */
+  {
     float qa[4], qb[4];
-    smgi_quat_unpack_raw(smgi_pose_rot(fa, j), qa);
-    smgi_quat_unpack_raw(smgi_pose_rot(fb, j), qb);
-    nlerp(qa, qb, a, p->rot + 4 * j);
+    smgi_quat_unpack_raw(smgi_pose_rot(fa, 0), qa);
+    smgi_quat_unpack_raw(smgi_pose_rot(fb, 0), qb);
+    nlerp(qa, qb, a, p->rot);
   }
+  smgi_sample_joints(g, fa, fb, a, SMGI_JOINTS_ALL, p->rot);
   mat_from(p->rot, p->root, p->mats);
   for (uint32_t j = 1; j < J; ++j) {
     float local[16];
@@ -418,13 +416,21 @@ static void run_graph(const char* name, const void* blob, size_t size) {
          "without checksum %.1f us (target <= 1000 us)\n",
          bench_load(blob, size, 100, 0),
          bench_load(blob, size, 100, SMG_GRAPH_SKIP_CHECKSUM));
-  size_t bytes = 0;
+  /* the default desc, its default path buffer included; the share
+   * without the path from a 16-point buffer (12 bytes a point, 16-byte
+   * aligned: exact) */
+  size_t bytes = 0, small = 0;
+  smg_character_desc md;
+  memset(&md, 0, sizeof md);
+  md.struct_size = sizeof md;
+  md.path_capacity = 16;
   smg_character_memory_size(g, NULL, &bytes);
-  /* the default desc: its path buffer (path_capacity 0 = 512 points, 12
-   * bytes each) included */
+  smg_character_memory_size(g, &md, &small);
+  size_t no_path = small - 16u * 12u;
   printf("per-character memory (default desc): %zu bytes, of which the "
-         "512-point path buffer %u; %zu bytes without it (target <= 16384)\n",
-         bytes, 512u * 12u, bytes - 512u * 12u);
+         "%zu-point path buffer %zu; %zu bytes without it (target <= "
+         "16384)\n",
+         bytes, (bytes - no_path) / 12u, bytes - no_path, no_path);
   smg_graph_destroy(g);
 }
 

@@ -20,8 +20,6 @@
 
 /* Largest section alignment accepted (powers of two from 16 up to this). */
 #define MAX_SECTION_ALIGN 4096u
-/* How far from 1 a stored quaternion's length may be. */
-#define UNIT_TOLERANCE 1e-3f
 /* Magnitude limits. Finite is not enough: a heading of 1e30 rad or a
  * position of 1e30 m is finite but meaningless (float spacing there is
  * astronomically coarse) and makes angle wrapping or accumulation in the
@@ -74,7 +72,7 @@ static int unit_quat(const float* q) {
       !isfinite(q[3]))
     return 0;
   n = sqrtf(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  return fabsf(n - 1.0f) <= UNIT_TOLERANCE;
+  return fabsf(n - 1.0f) <= SMGI_QUAT_UNIT_TOLERANCE;
 }
 
 /* ---- section table -------------------------------------------------------- */

@@ -8,9 +8,6 @@
 
 #include "quat_pack.h"
 
-/* Tolerance on |q| for a rotation to count as unit (the v1 reader's). */
-#define UNIT_TOLERANCE 1e-3
-
 /* round(v / step) + mid, clamped to the code range [0, 2 * mid]. */
 static uint32_t quantise(double v, double mid) {
   double c = floor(v * mid / 0.70710678118654752 + 0.5) + mid;
@@ -30,7 +27,7 @@ int smgi_quat_pack(const float* qf, unsigned char* out) {
   }
   n = sqrt(n2);
   /* NaN fails the comparison, inf gives an infinite norm */
-  ok = fabs(n - 1.0) <= UNIT_TOLERANCE;
+  ok = fabs(n - 1.0) <= (double)SMGI_QUAT_UNIT_TOLERANCE;
   if (!ok) {
     q[0] = q[1] = q[2] = 0.0;
     q[3] = 1.0;

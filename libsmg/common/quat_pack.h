@@ -36,6 +36,10 @@
 #include "smg_format.h"
 
 #define SMGI_QPACK_BYTES 6u
+/* How far from 1 a float quaternion's length may be to count as a unit
+ * rotation: what the baker packs and the reader accepts (splice
+ * corrections) alike. */
+#define SMGI_QUAT_UNIT_TOLERANCE 1e-3f
 #define SMGI_QPACK_MID16 32767
 #define SMGI_QPACK_MID15 16383
 #define SMGI_QPACK_STEP16 (0.70710678118654752f / 32767.0f)
@@ -47,7 +51,7 @@
  * normalise anyway (nlerp), which then cost no extra square root.
  *
  * Speed (the runtime's root joint and the joints left over by
- * smgi_pose_nlerp4 below): the words are assembled from bytes (one 16-bit
+ * smgi_pose_nlerp4_sse below): the words are assembled from bytes (one 16-bit
  * load each, no temporary), and the dropped component is put in place by
  * *loading* from a table filled with constant-index stores,
  * q[k] = t[(k - i) & 3]. Storing to q at a variable index instead made the
@@ -84,19 +88,19 @@ static inline void smgi_quat_unpack(const unsigned char* p, float* q) {
 
 /* ---- four joints at once ------------------------------------------------- */
 
-/* out[0 .. 16) = nlerp(unpack(a_j), unpack(b_j), t) for the four packed
- * rotations at a and b (joints j .. j+3 of two records; 24 bytes each),
- * bit for bit what smgi_quat_unpack_raw on both and then the runtime's
- * smgi_q_nlerp (rmath.h) give joint by joint: same operations in the same
- * order, lane by lane. Why: one joint at a time the decode is ~100
- * dependent scalar instructions on top of the nlerp (a character step
- * samples ~30-50 joints from two frames); four lanes at a time, with the
- * dropped component put in place by masks instead of indexed loads, cost
- * about as much as the float nlerp did in format 1.
+/* smgi_pose_nlerp4_sse: out[0 .. 16) = nlerp(unpack(a_j), unpack(b_j), t)
+ * for the four packed rotations at a and b (joints j .. j+3 of two
+ * records; 24 bytes each), bit for bit what smgi_quat_unpack_raw on both
+ * and then the runtime's smgi_q_nlerp (rmath.h) give joint by joint: same
+ * operations in the same order, lane by lane. Why: one joint at a time the
+ * decode is ~100 dependent scalar instructions on top of the nlerp (a
+ * character step samples ~30-50 joints from two frames); four lanes at a
+ * time, with the dropped component put in place by masks instead of
+ * indexed loads, cost about as much as the float nlerp did in format 1.
  *
- * Plain C below, SSE2 where it is part of the ABI (x86-64) unless built
- * with -DSMGI_QPACK_SSE=0; tests/core/test_quat_pack.c holds both to the
- * joint-by-joint result. */
+ * SSE2 where it is part of the ABI (x86-64) unless built with
+ * -DSMGI_QPACK_SSE=0; other builds sample joint by joint (pose.c), which
+ * is the reference tests/core/test_quat_pack.c holds this to. */
 #ifndef SMGI_QPACK_SSE
 #if defined(__SSE2__) || defined(_M_X64) || \
     (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
@@ -108,58 +112,6 @@ static inline void smgi_quat_unpack(const unsigned char* p, float* q) {
 #if SMGI_QPACK_SSE
 #include <emmintrin.h>
 #endif
-
-/* Four rotations' components, lane k = joint k. */
-static inline void smgi_quat_unpack4_plain(const unsigned char* p, float* x,
-                                           float* y, float* z, float* w) {
-  int k;
-  for (k = 0; k < 4; ++k) {
-    const unsigned char* q = p + 6 * k;
-    const uint32_t w0 = (uint32_t)q[0] | (uint32_t)q[1] << 8;
-    const uint32_t w1 = (uint32_t)q[2] | (uint32_t)q[3] << 8;
-    const uint32_t w2 = (uint32_t)q[4] | (uint32_t)q[5] << 8;
-    const uint32_t i = (w1 & 1u) | (w2 & 1u) << 1;
-    const float a =
-        (float)((int32_t)w0 - SMGI_QPACK_MID16) * SMGI_QPACK_STEP16;
-    const float b =
-        (float)((int32_t)(w1 >> 1) - SMGI_QPACK_MID15) * SMGI_QPACK_STEP15;
-    const float c =
-        (float)((int32_t)(w2 >> 1) - SMGI_QPACK_MID15) * SMGI_QPACK_STEP15;
-    const float r = 1.0f - (a * a + b * b + c * c);
-    const float big = sqrtf(r > 0.0f ? r : 0.0f);
-    /* q[k] = (big, a, b, c)[(k - i) & 3] */
-    x[k] = i == 0u ? big : i == 1u ? c : i == 2u ? b : a;
-    y[k] = i == 1u ? big : i == 2u ? c : i == 3u ? b : a;
-    z[k] = i == 2u ? big : i == 3u ? c : i == 0u ? b : a;
-    w[k] = i == 3u ? big : i == 0u ? c : i == 1u ? b : a;
-  }
-}
-
-static inline void smgi_pose_nlerp4_plain(const unsigned char* a,
-                                          const unsigned char* b, float t,
-                                          float* out) {
-  float ax[4], ay[4], az[4], aw[4], bx[4], by[4], bz[4], bw[4];
-  int k;
-  smgi_quat_unpack4_plain(a, ax, ay, az, aw);
-  smgi_quat_unpack4_plain(b, bx, by, bz, bw);
-  for (k = 0; k < 4; ++k) {
-    const float d = ax[k] * bx[k] + ay[k] * by[k] + az[k] * bz[k] +
-                    aw[k] * bw[k];
-    const float s = d < 0.0f ? -t : t;
-    const float u = 1.0f - t;
-    const float ox = u * ax[k] + s * bx[k];
-    const float oy = u * ay[k] + s * by[k];
-    const float oz = u * az[k] + s * bz[k];
-    const float ow = u * aw[k] + s * bw[k];
-    /* >= 0.5 for any decoded inputs (lengths >= 1, same hemisphere), so
-     * no degenerate case: the nlerp's fallback never triggers */
-    const float inv = 1.0f / sqrtf(ox * ox + oy * oy + oz * oz + ow * ow);
-    out[4 * k] = ox * inv;
-    out[4 * k + 1] = oy * inv;
-    out[4 * k + 2] = oz * inv;
-    out[4 * k + 3] = ow * inv;
-  }
-}
 
 #if SMGI_QPACK_SSE
 static inline __m128i smgi_qpack_lanes16(const unsigned char* p,
@@ -248,16 +200,6 @@ static inline void smgi_pose_nlerp4_sse(const unsigned char* a,
   _mm_storeu_ps(out + 12, ow);
 }
 #endif
-
-static inline void smgi_pose_nlerp4(const unsigned char* a,
-                                    const unsigned char* b, float t,
-                                    float* out) {
-#if SMGI_QPACK_SSE
-  smgi_pose_nlerp4_sse(a, b, t, out);
-#else
-  smgi_pose_nlerp4_plain(a, b, t, out);
-#endif
-}
 
 /* Encode q (normalised first, in double). Returns 1 when q was finite and
  * of unit length within 1e-3, the blob's old acceptance rule, else 0 (the

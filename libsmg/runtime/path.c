@@ -214,15 +214,15 @@ int smgi_all_finite(const float* v, uint32_t count) {
  * whole block; only blocks that pass are refined segment by segment. The
  * rejections only skip segments that cannot win, so the answer is that of
  * testing every segment in order (lengths from arc-length differences get
- * a slack for float rounding). Returns the segment and the parameter u
- * along it. */
-static uint32_t nearest_segment(const smgi_path* p, uint32_t first,
-                                uint32_t last, float px, float pz,
-                                float* out_u, float* out_dist) {
+ * a slack for float rounding). Returns the arc length there; *out_seg and
+ * *out_dist get the segment and the distance. */
+static float nearest_segment(const smgi_path* p, uint32_t first,
+                             uint32_t last, float px, float pz,
+                             uint32_t* out_seg, float* out_dist) {
   const float* X = p->xz;
   const float* cum = p->cum;
   const float slack = 1e-6f + 4e-7f * cum[last + 1u];
-  float best2 = INFINITY, best = INFINITY, u_best = 0.0f, t = INFINITY;
+  float best2 = INFINITY, best = INFINITY, s_best = cum[first], t = INFINITY;
   uint32_t best_seg = first;
   for (uint32_t b = first; b <= last; b += PROJECT_BLOCK) {
     uint32_t e = last - b >= PROJECT_BLOCK ? b + PROJECT_BLOCK - 1u : last;
@@ -230,31 +230,28 @@ static uint32_t nearest_segment(const smgi_path* p, uint32_t first,
     float hb = t + (cum[e + 1u] - cum[b]) + slack;
     if (qx * qx + qz * qz >= hb * hb) continue;
     for (uint32_t i = b; i <= e; ++i) {
-      float ax = X[2u * i], az = X[2u * i + 1u];
-      qx = px - ax;
-      qz = pz - az;
+      qx = px - X[2u * i];
+      qz = pz - X[2u * i + 1u];
       float h = t + (cum[i + 1u] - cum[i]) + slack;
       if (qx * qx + qz * qz >= h * h) continue;
-      float dx = X[2u * i + 2u] - ax, dz = X[2u * i + 3u] - az;
-      float l2 = dx * dx + dz * dz;
-      float u = 0.0f;
-      if (l2 > 1e-18f) u = smgi_clampf((qx * dx + qz * dz) / l2, 0.0f, 1.0f);
-      float ex = ax + u * dx - px, ez = az + u * dz - pz;
-      float d2 = ex * ex + ez * ez;
+      float si;
+      float d2 = seg_dist2(p, i, px, pz, &si);
       if (d2 < best2 && (best2 == INFINITY || d2 < t * t)) {
         best2 = d2;
         best = sqrtf(d2);
-        u_best = u;
+        s_best = si;
         best_seg = i;
         t = best - PROJECT_TIE;
-        if (t <= 0.0f) goto done; /* on the path: no later pass can win */
+        if (t <= 0.0f) { /* on the path: no later pass can win */
+          b = last;      /* ends the outer loop after this block */
+          break;
+        }
       }
     }
   }
-done:
-  *out_u = u_best;
+  *out_seg = best_seg;
   *out_dist = best;
-  return best_seg;
+  return s_best;
 }
 
 /* out[k] = length of the segment from point k to point k + 1 of P (x, z
@@ -339,12 +336,7 @@ float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
   p->length = cum[end - 1u];
   if (!project) return 0.0f;
   if (end < 2u) return smgi_path_project_local(p, px, pz, seg, out_dist);
-  float u_best = 0.0f, best = INFINITY;
-  uint32_t best_seg =
-      nearest_segment(p, j0 - 1u, end - 2u, px, pz, &u_best, &best);
-  *seg = best_seg;
-  *out_dist = best;
-  return cum[best_seg] + u_best * (cum[best_seg + 1u] - cum[best_seg]);
+  return nearest_segment(p, j0 - 1u, end - 2u, px, pz, seg, out_dist);
 }
 
 float smgi_path_project_global(const smgi_path* p, float x, float z,

@@ -22,14 +22,17 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
    (set == SMGI_JOINTS_UPPER) == (joints[j].body_part == SMG_BODY_UPPER))
   uint32_t j = 1;
   while (j < J) {
+#if SMGI_QPACK_SSE
     if (j + 4u <= J && WANTED(j) && WANTED(j + 1u) && WANTED(j + 2u) &&
         WANTED(j + 3u)) {
-      smgi_pose_nlerp4(qa + SMGI_QPACK_BYTES * j, qb + SMGI_QPACK_BYTES * j,
-                       t, out + 4u * j);
+      smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * j,
+                           qb + SMGI_QPACK_BYTES * j, t, out + 4u * j);
       j += 4u;
-    } else {
+    } else
+#endif
+    {
       if (WANTED(j)) {
-        /* the same operations as one lane of smgi_pose_nlerp4 */
+        /* the same operations as one lane of smgi_pose_nlerp4_sse */
         float ja[4], jb[4];
         smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
         smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
