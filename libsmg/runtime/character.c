@@ -106,6 +106,24 @@ SMG_API smg_result smg_character_memory_size(const smg_graph* graph,
   return SMG_OK;
 }
 
+/* The character's planning phase (0..1 of a step, see smgi_plan), from
+ * what tells characters apart in their desc: seed, start position and
+ * heading. Deterministic, so equal descs still give equal characters. */
+static float plan_phase(const smg_character_desc* d) {
+  const float v[4] = {d->position[0], d->position[1], d->position[2],
+                      d->heading};
+  uint32_t h = d->seed * 0x9e3779b9u;
+  for (int i = 0; i < 4; ++i) {
+    uint32_t b;
+    memcpy(&b, &v[i], sizeof b);
+    h = (h ^ b) * 0x85ebca6bu;
+    h ^= h >> 13;
+  }
+  h *= 0xc2b2ae35u;
+  h ^= h >> 16;
+  return (float)(h >> 8) * (1.0f / 16777216.0f);
+}
+
 SMG_API smg_result smg_character_create(smg_graph* graph,
                                         const smg_character_desc* desc,
                                         smg_character** out_character) {
@@ -130,6 +148,7 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->flags = d.flags;
   ch->ik_enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
   ch->rng = d.seed ? d.seed : 0x9e3779b9u;
+  ch->plan_phase = plan_phase(&d);
   ch->horizon = d.horizon;
   ch->error_threshold = d.error_threshold;
   ch->fps = graph->data.info->frame_rate;

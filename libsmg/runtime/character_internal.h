@@ -80,6 +80,7 @@ struct smg_character {
   uint32_t flags;
   uint32_t ik_enabled;
   uint32_t rng;
+  float plan_phase;        /* 0..1 of a step added to the horizon (planner.c) */
   float horizon;           /* seconds */
   float error_threshold;   /* metres */
   float fps;
@@ -169,9 +170,9 @@ float smgi_next_constraint_arc(const smg_character* ch, float s);
 
 /* ---- planner.c ---- */
 /* Plan until the horizon is covered or `budget` candidate evaluations were
- * spent; `min_frames` of lookahead beyond the playhead are guaranteed
- * regardless of budget. */
-void smgi_plan(smg_character* ch, uint32_t budget, float min_frames);
+ * spent; this step's `step_frames` (plus one to interpolate) of lookahead
+ * beyond the playhead are guaranteed regardless of budget. */
+void smgi_plan(smg_character* ch, uint32_t budget, float step_frames);
 /* Path or constraints changed: drop planned entries, keep the head. */
 void smgi_replan(smg_character* ch);
 /* First edge at create. */

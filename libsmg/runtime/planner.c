@@ -762,9 +762,21 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
   return c[best_r].edge != last.edge;
 }
 
-void smgi_plan(smg_character* ch, uint32_t budget, float min_frames) {
+void smgi_plan(smg_character* ch, uint32_t budget, float step_frames) {
   cand c[SMGI_MAX_CANDIDATES];
-  const float horizon_frames = ch->horizon * ch->fps;
+  /* this step's frames plus one to interpolate towards */
+  const float min_frames = step_frames + 2.0f;
+  /* The plan is topped up on the step where what is planned ahead falls
+   * below the horizon. Characters created together and stepped with one
+   * fixed dt would all cross it on the same steps - with 30 fps data and
+   * 60 Hz steps only ever on every other step, whose frames then carried
+   * all of a crowd's searches (2.5x the cost of the frames between). A
+   * per-character phase spreads the crossings over the steps. The plan
+   * ends on whole frames, so the phase spans a frame or a step, whichever
+   * is longer: with half-frame steps, only a threshold that moves by a
+   * whole frame meets both kinds of step. */
+  const float span = step_frames > 1.0f ? step_frames : 1.0f;
+  const float horizon_frames = ch->horizon * ch->fps + ch->plan_phase * span;
   for (;;) {
     if (ch->q_count == 0 || ch->q_count >= SMGI_QUEUE_CAP) return;
     float ahead = smgi_frames_ahead(ch);

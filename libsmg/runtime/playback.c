@@ -57,9 +57,9 @@ static void update_progress(smg_character* ch) {
 smg_result smgi_step(smg_character* ch, float dt) {
   const smgi_edge* edges = ch->graph->data.lower_edges;
   float frames = dt * ch->fps;
-  /* keep the horizon planned; guarantee this step's frames plus one for
-   * interpolation whatever the budget */
-  smgi_plan(ch, SMGI_PLAN_BUDGET, frames + 2.0f);
+  /* keep the horizon planned; this step's frames are guaranteed whatever
+   * the budget */
+  smgi_plan(ch, SMGI_PLAN_BUDGET, frames);
 
   ch->t += frames;
   for (;;) {
