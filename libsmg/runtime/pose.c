@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "character_internal.h"
+#include "pose_simd.h"
 
 void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
                         const unsigned char* rb, float t,
@@ -130,27 +131,49 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
   wpos[1] = root[1];
   wpos[2] = root[2];
   memcpy(wrot, rot, sizeof(float) * 4u);
+#if SMGI_POSE_SSE
+  /* The previous joint's transform stays in registers: in a skeleton most
+   * joints are their predecessor's child (chains), and the others reload
+   * their parent with the access sizes it was stored with. */
+  __m128 prev_rot = _mm_loadu_ps(rot), prev_pos = smgi_load3_sse(root);
   for (uint32_t j = 1; j < J; ++j) {
-    uint32_t p = (uint32_t)joints[j].parent;
-    float o[3];
-    smgi_q_rotate(wrot + 4u * p, joints[j].offset, o);
-    wpos[3u * j] = wpos[3u * p] + o[0];
-    wpos[3u * j + 1u] = wpos[3u * p + 1u] + o[1];
-    wpos[3u * j + 2u] = wpos[3u * p + 2u] + o[2];
-    smgi_q_mul(wrot + 4u * p, rot + 4u * j, wrot + 4u * j);
+    const uint32_t p = (uint32_t)joints[j].parent;
+    __m128 prot = prev_rot, ppos = prev_pos;
+    if (p != j - 1u) {
+      prot = _mm_loadu_ps(wrot + 4u * p);
+      ppos = smgi_load3_sse(wpos + 3u * p);
+    }
+    /* offset[3] is followed by mass_ratio: a 16-byte load stays inside
+     * the joint record, lane 3 is ignored */
+    prev_rot = smgi_fk_joint_sse(prot, ppos, _mm_loadu_ps(joints[j].offset),
+                                 rot + 4u * j, wpos + 3u * j, wrot + 4u * j,
+                                 &prev_pos);
   }
+#else
+  for (uint32_t j = 1; j < J; ++j) {
+    const uint32_t p = (uint32_t)joints[j].parent;
+    smgi_fk_joint_c(wrot + 4u * p, wpos + 3u * p, joints[j].offset,
+                    rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
+  }
+#endif
 }
 
 void smgi_fk_masked(smg_character* ch, uint8_t bit) {
   const smgi_joint* joints = ch->graph->data.joints;
+  float* wpos = ch->wpos;
+  float* wrot = ch->wrot;
   for (uint32_t j = 1; j < ch->joint_count; ++j) {
     if (!(ch->leg_mask[j] & bit)) continue;
-    uint32_t p = (uint32_t)joints[j].parent;
-    float o[3];
-    smgi_q_rotate(ch->wrot + 4u * p, joints[j].offset, o);
-    ch->wpos[3u * j] = ch->wpos[3u * p] + o[0];
-    ch->wpos[3u * j + 1u] = ch->wpos[3u * p + 1u] + o[1];
-    ch->wpos[3u * j + 2u] = ch->wpos[3u * p + 2u] + o[2];
-    smgi_q_mul(ch->wrot + 4u * p, ch->rot + 4u * j, ch->wrot + 4u * j);
+    const uint32_t p = (uint32_t)joints[j].parent;
+#if SMGI_POSE_SSE
+    __m128 unused;
+    (void)smgi_fk_joint_sse(_mm_loadu_ps(wrot + 4u * p),
+                            smgi_load3_sse(wpos + 3u * p),
+                            _mm_loadu_ps(joints[j].offset), ch->rot + 4u * j,
+                            wpos + 3u * j, wrot + 4u * j, &unused);
+#else
+    smgi_fk_joint_c(wrot + 4u * p, wpos + 3u * p, joints[j].offset,
+                    ch->rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
+#endif
   }
 }
