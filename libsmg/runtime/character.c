@@ -49,7 +49,9 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   l->queue = o;
   o += align16(sizeof(smgi_qentry) * SMGI_QUEUE_CAP);
   l->tmp = o;
-  o += align16(sizeof(float) * 4u * J);
+  /* crossfade scratch: on the stack for skeletons up to
+   * SMGI_POSE_STACK_JOINTS joints (pose.c) */
+  if (J > SMGI_POSE_STACK_JOINTS) o += align16(sizeof(float) * 4u * J);
   l->snap = o;
   o += align16(sizeof(float) * 4u * J);
   l->constraints = o;
@@ -160,7 +162,7 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->next_id = 1;
   ch->queue = (smgi_qentry*)(mem + l.queue);
   ch->rot = (float*)(mem + l.rot);
-  ch->tmp = (float*)(mem + l.tmp);
+  ch->tmp = J > SMGI_POSE_STACK_JOINTS ? (float*)(mem + l.tmp) : NULL;
   ch->snap = (float*)(mem + l.snap);
   ch->wpos = (float*)(mem + l.wpos);
   ch->wrot = (float*)(mem + l.wrot);

@@ -60,24 +60,53 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
 #undef WANTED
 }
 
+/* A queue entry's frame -> world transform with its trigonometry done:
+ * both sampled frames usually share one entry, so its sines and cosines
+ * are computed once per step instead of twice. */
+typedef struct placement {
+  smgi_xform2 M;
+  float c, s;   /* cos, sin of M.h (smgi_rot2) */
+  float yaw[4]; /* smgi_q_yaw(M.h) */
+} placement;
+
+static void placement_init(smgi_xform2 M, placement* pl) {
+  pl->M = M;
+  pl->c = cosf(M.h);
+  pl->s = sinf(M.h);
+  smgi_q_yaw(M.h, pl->yaw);
+}
+
+/* smgi_xf_point(pl->M, px, pz, ox, oz), same operations */
+static void placement_point(const placement* pl, float px, float pz,
+                            float* ox, float* oz) {
+  const float x = pl->c * px + pl->s * pz;
+  const float z = -pl->s * px + pl->c * pz;
+  *ox = pl->M.x + x;
+  *oz = pl->M.z + z;
+}
+
 /* World root position/rotation and ground placement of one lower frame. */
-static void place(const smg_graph* g, uint32_t frame, smgi_xform2 M,
+static void place(const smg_graph* g, uint32_t frame, const placement* pl,
                   float* pos, float* rot, float* gx, float* gz, float* gh) {
   const unsigned char* rec = smgi_graph_pose(g, frame);
-  float p[3], x, z, q[4], r0[4];
+  float p[3], x, z, r0[4];
   smgi_pose_root(rec, p);
-  smgi_xf_point(M, p[0], p[2], &x, &z);
+  placement_point(pl, p[0], p[2], &x, &z);
   pos[0] = x;
   pos[1] = p[1] - g->data.info->ground_height;
   pos[2] = z;
-  smgi_q_yaw(M.h, q);
   /* raw decode: the caller's nlerp normalises */
   smgi_quat_unpack_raw(smgi_pose_rot(rec, 0), r0);
-  smgi_q_mul(q, r0, rot);
+  smgi_q_mul(pl->yaw, r0, rot);
   const float* r = g->data.frames[frame].root2d;
-  smgi_xf_point(M, r[0], r[1], gx, gz);
-  *gh = M.h + r[2];
+  placement_point(pl, r[0], r[1], gx, gz);
+  *gh = pl->M.h + r[2];
 }
+
+/* Upper-body rotations are written straight into the pose unless a
+ * crossfade needs them apart; the scratch for that lives on the stack up
+ * to this many joints (ch->tmp is allocated only for bigger skeletons). */
+#define POSE_STACK_JOINTS SMGI_POSE_STACK_JOINTS
 
 void smgi_pose_compose(smg_character* ch) {
   const smg_graph* g = ch->graph;
@@ -90,17 +119,20 @@ void smgi_pose_compose(smg_character* ch) {
   float a = ch->t - (float)i0;
   a = smgi_clampf(a, 0.0f, 1.0f);
   uint32_t fa = e->first_frame + i0, fb = fa;
-  smgi_xform2 Mb = h->M;
+  placement pa_pl, pb_pl;
+  placement_init(h->M, &pa_pl);
+  const placement* plb = &pa_pl;
   if (i0 + 1u < e->frame_count) {
     fb = fa + 1u;
   } else if (ch->q_count > 1u) {
     const smgi_qentry* n = smgi_q_at(ch, 1);
     fb = edges[n->edge].first_frame;
-    Mb = n->M;
+    placement_init(n->M, &pb_pl);
+    plb = &pb_pl;
   }
   float pa[3], pb[3], ra[4], rb[4], gax, gaz, gah, gbx, gbz, gbh;
-  place(g, fa, h->M, pa, ra, &gax, &gaz, &gah);
-  place(g, fb, Mb, pb, rb, &gbx, &gbz, &gbh);
+  place(g, fa, &pa_pl, pa, ra, &gax, &gaz, &gah);
+  place(g, fb, plb, pb, rb, &gbx, &gbz, &gbh);
   for (int k = 0; k < 3; ++k) ch->root[k] = pa[k] + a * (pb[k] - pa[k]);
   smgi_q_nlerp(ra, rb, a, ch->rot);
   ch->ground[0] = gax + a * (gbx - gax);
@@ -121,13 +153,27 @@ void smgi_pose_compose(smg_character* ch) {
 
   /* upper body */
   if (ch->action == 0 && ch->fade >= 1.0f) return;
-  if (ch->action != 0) smgi_upper_sample(ch, ch->tmp);
   /* smoothstep keeps the crossfade's velocity continuous at both ends */
   float w = ch->fade >= 1.0f ? 1.0f : ch->fade * ch->fade * (3.0f - 2.0f * ch->fade);
+  const smgi_joint* joints = g->data.joints;
+  if (ch->action != 0 && w >= 1.0f) {
+    /* no crossfade: the action's upper body goes straight into the pose
+     * (the upper joints were not written above). Only when the spine-base
+     * correction lands on an upper joint too, as in every baked skeleton;
+     * otherwise the general path below keeps it off the pose. */
+    const uint32_t sb = g->data.info->spine_base_joint;
+    if (sb == 0 || sb >= J || joints[sb].body_part == SMG_BODY_UPPER) {
+      smgi_upper_sample(ch, ch->rot);
+      return;
+    }
+  }
+  float stack_tmp[4u * POSE_STACK_JOINTS];
+  float* tmp = J <= POSE_STACK_JOINTS ? stack_tmp : ch->tmp;
+  if (ch->action != 0) smgi_upper_sample(ch, tmp);
   for (uint32_t j = 1; j < J; ++j) {
-    if (g->data.joints[j].body_part != SMG_BODY_UPPER) continue;
+    if (joints[j].body_part != SMG_BODY_UPPER) continue;
     float* out = ch->rot + 4u * j;
-    const float* target = ch->action != 0 ? ch->tmp + 4u * j : out;
+    const float* target = ch->action != 0 ? tmp + 4u * j : out;
     if (w >= 1.0f) {
       memcpy(out, target, sizeof(float) * 4u);
     } else {
