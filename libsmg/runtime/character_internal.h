@@ -200,6 +200,11 @@ int smgi_q_locate(const smg_character* ch, uint32_t k, uint32_t* entry,
 smg_result smgi_step(smg_character* ch, float dt);
 
 /* ---- pose.c ---- */
+/* Prefetch the pose buffers the step rewrites and the lower-body records
+ * it will sample. Called before planning: in a big crowd these lines were
+ * evicted since the character's last step, and the planner's work hides
+ * the fetches. A hint only (no effect on results). */
+void smgi_pose_prefetch(const smg_character* ch);
 void smgi_pose_compose(smg_character* ch);
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot);

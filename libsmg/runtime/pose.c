@@ -184,6 +184,46 @@ void smgi_pose_compose(smg_character* ch) {
   }
 }
 
+/* Start fetching what this step's pose will touch (see the header). */
+void smgi_pose_prefetch(const smg_character* ch) {
+#if defined(__GNUC__) || defined(__clang__)
+#define PREFETCH_RANGE(ptr, bytes, rw)                                   \
+  do {                                                                   \
+    const char* p_ = (const char*)(ptr);                                 \
+    const size_t n_ = (size_t)(bytes);                                   \
+    for (size_t o_ = 0; o_ < n_; o_ += 64u) __builtin_prefetch(p_ + o_, rw, 3); \
+    __builtin_prefetch(p_ + n_ - 1u, rw, 3);                             \
+  } while (0)
+  const uint32_t J = ch->joint_count;
+  /* the character itself: its fields are read one after the other, so
+   * each line would otherwise miss only when first used */
+  PREFETCH_RANGE(ch, sizeof *ch, 1);
+  /* the pose and its world transforms: rewritten */
+  PREFETCH_RANGE(ch->rot, sizeof(float) * 4u * J, 1);
+  PREFETCH_RANGE(ch->wpos, sizeof(float) * 3u * J, 1);
+  PREFETCH_RANGE(ch->wrot, sizeof(float) * 4u * J, 1);
+  /* the queue entries the pose is placed with */
+  PREFETCH_RANGE(smgi_q_at_c(ch, 0), sizeof(smgi_qentry), 0);
+  if (ch->q_count > 1u) PREFETCH_RANGE(smgi_q_at_c(ch, 1), sizeof(smgi_qentry), 0);
+  /* the path around the character's projection (progress tracking) */
+  if (ch->seg + 2u < ch->path.count) {
+    PREFETCH_RANGE(ch->path.xz + 2u * ch->seg, sizeof(float) * 6u, 0);
+    PREFETCH_RANGE(ch->path.cum + ch->seg, sizeof(float) * 3u, 0);
+  }
+  /* the lower-body records the playhead is at and goes to next */
+  const smg_graph* g = ch->graph;
+  const smgi_qentry* h = smgi_q_at_c(ch, 0);
+  const smgi_edge* e = &g->data.lower_edges[h->edge];
+  const uint32_t i0 = (uint32_t)ch->t;
+  if (i0 + 1u < e->frame_count)
+    PREFETCH_RANGE(smgi_graph_pose(g, e->first_frame + i0),
+                   2u * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
+#undef PREFETCH_RANGE
+#else
+  (void)ch;
+#endif
+}
+
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot) {
   const uint32_t J = g->data.joint_count;
