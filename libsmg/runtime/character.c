@@ -391,9 +391,14 @@ SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
     ground = _mm_setr_ps(ch->ground[0], 0.0f, ch->ground[1], 0.0f);
   }
   uint32_t j = 0;
-  for (; j + 4u <= J; j += 4u)
-    smgi_mat4_from_world_sse(wrot + 4u * j, wpos + 3u * j, world, yaw, ground,
-                             matrices + 16u * j);
+  if (world) {
+    for (; j + 4u <= J; j += 4u)
+      smgi_mat4_world_sse(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
+  } else {
+    for (; j + 4u <= J; j += 4u)
+      smgi_mat4_character_sse(wrot + 4u * j, wpos + 3u * j, yaw, ground,
+                              matrices + 16u * j);
+  }
   if (j < J) {
     const uint32_t n = J - j;
     float q[16] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -401,7 +406,10 @@ SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
     float m[64];
     memcpy(q, wrot + 4u * j, sizeof(float) * 4u * n);
     memcpy(p, wpos + 3u * j, sizeof(float) * 3u * n);
-    smgi_mat4_from_world_sse(q, p, world, yaw, ground, m);
+    if (world)
+      smgi_mat4_world_sse(q, p, m);
+    else
+      smgi_mat4_character_sse(q, p, yaw, ground, m);
     memcpy(matrices + 16u * j, m, sizeof(float) * 16u * n);
   }
 #else

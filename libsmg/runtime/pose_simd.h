@@ -188,28 +188,31 @@ static inline void smgi_mat4_from_sse(__m128 q0, __m128 q1, __m128 q2,
 #undef SMGI_MAT_STORE
 }
 
-/* Model matrices of four joints from their world rotations q[0 .. 16)
- * and positions p[0 .. 12). In character space (world == 0) the inverse
- * of the ground placement is applied first: rotation yaw, translation
- * -ground (x, 0, z). */
-static inline void smgi_mat4_from_world_sse(const float* q, const float* p,
-                                            int world, __m128 yaw,
-                                            __m128 ground, float* m) {
-  __m128 q0 = _mm_loadu_ps(q), q1 = _mm_loadu_ps(q + 4),
-         q2 = _mm_loadu_ps(q + 8), q3 = _mm_loadu_ps(q + 12);
-  __m128 t0 = smgi_load3_sse(p), t1 = smgi_load3_sse(p + 3),
-         t2 = smgi_load3_sse(p + 6), t3 = smgi_load3_sse(p + 9);
-  if (!world) {
-    q0 = smgi_q_mul_sse(yaw, q0);
-    q1 = smgi_q_mul_sse(yaw, q1);
-    q2 = smgi_q_mul_sse(yaw, q2);
-    q3 = smgi_q_mul_sse(yaw, q3);
-    t0 = smgi_q_rotate_sse(yaw, _mm_sub_ps(t0, ground));
-    t1 = smgi_q_rotate_sse(yaw, _mm_sub_ps(t1, ground));
-    t2 = smgi_q_rotate_sse(yaw, _mm_sub_ps(t2, ground));
-    t3 = smgi_q_rotate_sse(yaw, _mm_sub_ps(t3, ground));
-  }
-  smgi_mat4_from_sse(q0, q1, q2, q3, t0, t1, t2, t3, m);
+/* World-space model matrices of four joints from their world rotations
+ * q[0 .. 16) and positions p[0 .. 12). */
+static inline void smgi_mat4_world_sse(const float* q, const float* p,
+                                       float* m) {
+  smgi_mat4_from_sse(_mm_loadu_ps(q), _mm_loadu_ps(q + 4),
+                     _mm_loadu_ps(q + 8), _mm_loadu_ps(q + 12),
+                     smgi_load3_sse(p), smgi_load3_sse(p + 3),
+                     smgi_load3_sse(p + 6), smgi_load3_sse(p + 9), m);
+}
+
+/* The same in character space: the inverse of the ground placement first
+ * (rotation yaw, translation -ground = (x, 0, z)). A separate function
+ * from the world one, which has no registers to spare for yaw and ground. */
+static inline void smgi_mat4_character_sse(const float* q, const float* p,
+                                           __m128 yaw, __m128 ground,
+                                           float* m) {
+  smgi_mat4_from_sse(
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q)),
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 4)),
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 8)),
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 12)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p), ground)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 3), ground)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 6), ground)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 9), ground)), m);
 }
 
 #endif /* SMGI_POSE_SSE */

@@ -80,8 +80,11 @@ static void test_joint_math(void** state) {
                 gz = frand(-90.0f, 90.0f);
     smgi_q_yaw(-heading, yaw);
     for (int world = 0; world < 2; ++world) {
-      smgi_mat4_from_world_sse(q, p, world, _mm_loadu_ps(yaw),
-                               _mm_setr_ps(gx, 0.0f, gz, 0.0f), m);
+      if (world)
+        smgi_mat4_world_sse(q, p, m);
+      else
+        smgi_mat4_character_sse(q, p, _mm_loadu_ps(yaw),
+                                _mm_setr_ps(gx, 0.0f, gz, 0.0f), m);
       for (int k = 0; k < 4; ++k) {
         if (world) {
           smgi_mat_from_c(q + 4 * k, p + 3 * k, ref + 16 * k);
