@@ -195,13 +195,22 @@ void smgi_pose_prefetch(const smg_character* ch) {
     __builtin_prefetch(p_ + n_ - 1u, rw, 3);                             \
   } while (0)
   const uint32_t J = ch->joint_count;
-  /* the character itself: its fields are read one after the other, so
-   * each line would otherwise miss only when first used */
-  PREFETCH_RANGE(ch, sizeof *ch, 1);
-  /* the pose and its world transforms: rewritten */
-  PREFETCH_RANGE(ch->rot, sizeof(float) * 4u * J, 1);
-  PREFETCH_RANGE(ch->wpos, sizeof(float) * 3u * J, 1);
-  PREFETCH_RANGE(ch->wrot, sizeof(float) * 4u * J, 1);
+  /* The character itself (its fields are read one after the other, so
+   * each line would otherwise miss only when first used), then the pose
+   * and its world transforms, which are rewritten. character.c lays them
+   * out in that order in one block: one range then, else three. */
+  const char* c0 = (const char*)ch;
+  const char* c1 = (const char*)(ch->wrot + 4u * J);
+  if ((const char*)ch->rot > c0 && (const char*)ch->wpos > c0 &&
+      (const char*)ch->wrot > c0 && c1 > c0 &&
+      (size_t)(c1 - c0) <= sizeof *ch + sizeof(float) * 12u * J + 64u) {
+    PREFETCH_RANGE(c0, c1 - c0, 1);
+  } else {
+    PREFETCH_RANGE(ch, sizeof *ch, 1);
+    PREFETCH_RANGE(ch->rot, sizeof(float) * 4u * J, 1);
+    PREFETCH_RANGE(ch->wpos, sizeof(float) * 3u * J, 1);
+    PREFETCH_RANGE(ch->wrot, sizeof(float) * 4u * J, 1);
+  }
   /* the queue entries the pose is placed with */
   PREFETCH_RANGE(smgi_q_at_c(ch, 0), sizeof(smgi_qentry), 0);
   if (ch->q_count > 1u) PREFETCH_RANGE(smgi_q_at_c(ch, 1), sizeof(smgi_qentry), 0);
@@ -261,9 +270,15 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
 
 void smgi_fk_masked(smg_character* ch, uint8_t bit) {
   const smgi_joint* joints = ch->graph->data.joints;
+  const smgi_info* info = ch->graph->data.info;
   float* wpos = ch->wpos;
   float* wrot = ch->wrot;
-  for (uint32_t j = 1; j < ch->joint_count; ++j) {
+  /* leg_mask bit f is set from hip f down (character.c), and children
+   * follow their parents, so no joint before that hip has it */
+  uint32_t first = 1u;
+  if (bit == 1u && info->left_leg[0] > first) first = info->left_leg[0];
+  if (bit == 2u && info->right_leg[0] > first) first = info->right_leg[0];
+  for (uint32_t j = first; j < ch->joint_count; ++j) {
     if (!(ch->leg_mask[j] & bit)) continue;
     const uint32_t p = (uint32_t)joints[j].parent;
 #if SMGI_POSE_SSE
