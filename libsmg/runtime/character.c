@@ -164,6 +164,7 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->wpos = (float*)(mem + l.wpos);
   ch->wrot = (float*)(mem + l.wrot);
   ch->leg_mask = mem + l.mask;
+  smgi_ik_reset(ch);
   {
     /* joints at or below each hip: IK re-runs FK for them */
     const smgi_info* info = graph->data.info;

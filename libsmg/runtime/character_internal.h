@@ -69,8 +69,11 @@ typedef struct smgi_pending_splice {
 
 typedef struct smgi_foot {
   uint32_t planted;    /* contact currently anchored */
-  float anchor[3];     /* world ankle position at contact start */
+  float anchor[3];     /* world toe position at contact start */
   float weight;        /* IK blend weight 0..1 */
+  float fix[2][4];     /* world-space hip and knee rotations the last solve
+                          added (identity when the foot was not solved): the
+                          next solve starts from them */
 } smgi_foot;
 
 struct smg_character {
@@ -213,6 +216,8 @@ void smgi_upper_sample(const smg_character* ch, float* out);
 void smgi_sync_update(smg_character* ch);
 
 /* ---- ik.c ---- */
+/* Feet unplanted, with no correction to start the next solve from. */
+void smgi_ik_reset(smg_character* ch);
 void smgi_ik_apply(smg_character* ch, float dt);
 
 #endif /* SMG_CHARACTER_INTERNAL_H */
