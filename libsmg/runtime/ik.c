@@ -74,16 +74,12 @@ static void blend_local(float* rot, const float* local, float w) {
  * foot's previous corrections: while a foot is planted the target hardly
  * moves between steps, so CCD starts next to the answer and its sweeps add
  * up across steps instead of restarting from the raw animation. */
-static void solve_leg(smg_character* ch, const uint32_t* leg,
-                      smgi_foot* foot, const float* target, float w) {
+static void solve_leg(smg_character* ch, uint32_t f, const float* target,
+                      float w) {
   const smgi_joint* joints = ch->graph->data.joints;
-  const uint32_t hip = leg[0], knee = leg[1], ankle = leg[2];
-  const uint32_t J = ch->joint_count;
-  if (hip >= J || knee >= J || ankle >= J || hip == 0) return;
-  /* the correction below is only meaningful for a parent chain */
-  if ((uint32_t)joints[knee].parent != hip ||
-      (uint32_t)joints[ankle].parent != knee)
-    return;
+  const uint32_t* list = ch->leg_joints + (size_t)f * ch->joint_count;
+  const uint32_t hip = list[0], knee = list[1], ankle = list[2];
+  smgi_foot* foot = &ch->feet[f];
   const uint32_t hp = (uint32_t)joints[hip].parent;
   const float* p0 = ch->wpos + 3u * hip;
   const float* p1 = ch->wpos + 3u * knee;
@@ -144,17 +140,47 @@ static void solve_leg(smg_character* ch, const uint32_t* leg,
   /* back to local rotations, blended with the animation by w; the ankle
    * keeps its animated world orientation */
   float r0[4], r1[4], inv[4], local[4];
-  smgi_q_mul(Th, ch->wrot + 4u * hip, r0);
-  smgi_q_mul(Tk, ch->wrot + 4u * knee, r1);
-  smgi_q_conj(ch->wrot + 4u * hp, inv);
+  float* wrot = ch->wrot;
+  smgi_q_mul(Th, wrot + 4u * hip, r0);
+  smgi_q_mul(Tk, wrot + 4u * knee, r1);
+  smgi_q_conj(wrot + 4u * hp, inv);
   smgi_q_mul(inv, r0, local);
   blend_local(ch->rot + 4u * hip, local, w);
   smgi_q_conj(r0, inv);
   smgi_q_mul(inv, r1, local);
   blend_local(ch->rot + 4u * knee, local, w);
   smgi_q_conj(r1, inv);
-  smgi_q_mul(inv, ch->wrot + 4u * ankle, local);
+  smgi_q_mul(inv, wrot + 4u * ankle, local);
   blend_local(ch->rot + 4u * ankle, local, w);
+
+  /* keep the world transform cache true for every joint IK moved */
+  const uint32_t side = ch->leg_side[f], below = ch->leg_below[f];
+  if (w < 1.0f) { /* blended: the solve's transforms are not the pose's */
+    smgi_fk_joints(ch, list, 3u + side + below);
+    return;
+  }
+  /* At full weight the solve already has the pose's hip and knee (what FK
+   * of the new local rotations gives, to rounding) and the ankle keeps its
+   * world rotation, so joints below it only move with it. */
+  float* wpos = ch->wpos;
+  memcpy(wrot + 4u * hip, r0, sizeof r0);
+  memcpy(wrot + 4u * knee, r1, sizeof r1);
+  const float ax = p0[0] + a[0] + b[0], ay = p0[1] + a[1] + b[1],
+              az = p0[2] + a[2] + b[2];
+  const float dx = ax - p2[0], dy = ay - p2[1], dz = az - p2[2];
+  wpos[3u * knee] = p0[0] + a[0];
+  wpos[3u * knee + 1u] = p0[1] + a[1];
+  wpos[3u * knee + 2u] = p0[2] + a[2];
+  wpos[3u * ankle] = ax;
+  wpos[3u * ankle + 1u] = ay;
+  wpos[3u * ankle + 2u] = az;
+  smgi_fk_joints(ch, list + 3, side);
+  for (uint32_t i = 3u + side; i < 3u + side + below; ++i) {
+    float* p = wpos + 3u * list[i];
+    p[0] += dx;
+    p[1] += dy;
+    p[2] += dz;
+  }
 }
 
 void smgi_ik_reset(smg_character* ch) {
@@ -177,8 +203,8 @@ void smgi_ik_apply(smg_character* ch, float dt) {
   float step = dt / IK_BLEND;
   for (uint32_t f = 0; f < 2u; ++f) {
     smgi_foot* foot = &ch->feet[f];
+    if (!ch->leg_ok[f]) continue;
     uint32_t ankle = legs[f][2];
-    if (ankle >= ch->joint_count) continue;
     /* the planted point: the toe when the skeleton has one */
     uint32_t toe = legs[f][3] < ch->joint_count ? legs[f][3] : ankle;
     const float* ap = ch->wpos + 3u * toe;
@@ -205,8 +231,7 @@ void smgi_ik_apply(smg_character* ch, float dt) {
       float target[3] = {foot->anchor[0] + an[0] - ap[0],
                          foot->anchor[1] + an[1] - ap[1],
                          foot->anchor[2] + an[2] - ap[2]};
-      solve_leg(ch, legs[f], foot, target, foot->weight);
-      smgi_fk_masked(ch, (uint8_t)(1u << f)); /* keep the cache true */
+      solve_leg(ch, f, target, foot->weight);
     } else {
       /* a later contact starts from the animation again */
       memcpy(foot->fix[0], k_identity, sizeof k_identity);
