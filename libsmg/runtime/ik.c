@@ -93,21 +93,25 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   smgi_q_rotate(Th, a0, a);
   smgi_q_rotate(Tk, b0, b);
   /* Stop within IK_TOLERANCE of the closest the ankle can get: 0 for a
-   * reachable target, else how far it lies outside the leg's annulus. */
+   * reachable target, else how far it lies outside the leg's annulus.
+   * Blended by w, the solve moves the pose's ankle by about w times as
+   * much, so both stop rules are on that scale: while a foot blends in or
+   * out, precision it would not show is not paid for. */
   const float l1 = sqrtf(dot3(a0, a0)), l2sq = dot3(b0, b0);
   const float l2 = sqrtf(l2sq), d = sqrtf(dot3(t, t));
   float reach = d - (l1 + l2);
   float inner = fabsf(l1 - l2) - d;
   if (inner > reach) reach = inner;
   if (reach < 0.0f) reach = 0.0f;
-  const float stop2 = (reach + IK_TOLERANCE) * (reach + IK_TOLERANCE);
+  const float tol = IK_TOLERANCE / w; /* w > 0 */
+  const float stop2 = (reach + tol) * (reach + tol);
   float prev2 = INFINITY;
   for (uint32_t it = 0; it < IK_ITERATIONS; ++it) {
     float e[3] = {t[0] - a[0] - b[0], t[1] - a[1] - b[1], t[2] - a[2] - b[2]};
     float e2 = dot3(e, e);
     if (e2 <= stop2) break;
-    /* stalled (a singular pose): more sweeps gain < 1 mm */
-    if (prev2 - e2 < 2e-3f * sqrtf(e2) + 1e-6f) break;
+    /* a sweep gained < 0.5 tol (a singular or slowly converging pose) */
+    if (prev2 - e2 < tol * sqrtf(e2) + 1e-6f) break;
     prev2 = e2;
     float dq[4], lab;
     /* knee: turn the shin toward the target; it then lies along v */
@@ -212,6 +216,10 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     if (contact && !foot->planted) {
       foot->planted = 1;
       memcpy(foot->anchor, ap, sizeof foot->anchor);
+      /* the animation has the foot exactly there now: whatever correction
+       * a blend-out toward the previous anchor left is no guess for it */
+      memcpy(foot->fix[0], k_identity, sizeof k_identity);
+      memcpy(foot->fix[1], k_identity, sizeof k_identity);
     } else if (!contact) {
       foot->planted = 0;
     }
