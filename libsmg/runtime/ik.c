@@ -26,11 +26,13 @@ static float dot3(const float* a, const float* b) {
 }
 
 /* Shortest rotation taking direction a to direction b (smgi_q_from_to),
- * also giving |a||b|, which the caller needs to place the turned bone.
- * Returns 0 (and leaves dq alone) when the two are opposite or degenerate:
- * there is no shortest arc then, and the sweep skips that joint. */
-static int turn(const float* a, const float* b, float* dq, float* lab) {
-  float l = sqrtf(dot3(a, a) * dot3(b, b));
+ * given their squared lengths, also giving |a||b|, which the caller needs
+ * to place the turned bone. Returns 0 (and leaves dq alone) when the two
+ * are opposite or degenerate: there is no shortest arc then, and the sweep
+ * skips that joint. */
+static inline int turn(const float* a, float a2, const float* b, float b2,
+                       float* dq, float* lab) {
+  float l = sqrtf(a2 * b2);
   float w = l + dot3(a, b);
   if (!(w > 1e-6f * (l + 1e-12f))) return 0;
   /* |(a x b, w)|^2 = 2 l w, so one sqrt normalizes */
@@ -98,7 +100,8 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
    * much, so both stop rules are on that scale: while a foot blends in or
    * out, precision it would not show is not paid for. */
   const float l1 = sqrtf(dot3(a0, a0)), l2sq = dot3(b0, b0);
-  const float l2 = sqrtf(l2sq), d = sqrtf(dot3(t, t));
+  const float d2 = dot3(t, t);
+  const float l2 = sqrtf(l2sq), d = sqrtf(d2);
   float reach = d - (l1 + l2);
   float inner = fabsf(l1 - l2) - d;
   if (inner > reach) reach = inner;
@@ -116,7 +119,7 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
     float dq[4], lab;
     /* knee: turn the shin toward the target; it then lies along v */
     float v[3] = {t[0] - a[0], t[1] - a[1], t[2] - a[2]};
-    if (turn(b, v, dq, &lab)) {
+    if (turn(b, l2sq, v, dot3(v, v), dq, &lab)) {
       float k = l2sq / lab; /* |b| / |v| */
       b[0] = v[0] * k;
       b[1] = v[1] * k;
@@ -125,8 +128,9 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
     }
     /* hip: turn the whole leg; hip->ankle then lies along t */
     float sum[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    if (turn(sum, t, dq, &lab)) {
-      float k = dot3(sum, sum) / lab; /* |sum| / |t| */
+    const float s2 = dot3(sum, sum);
+    if (turn(sum, s2, t, d2, dq, &lab)) {
+      float k = s2 / lab; /* |sum| / |t| */
       float ra[3];
       smgi_q_rotate(dq, a, ra);
       memcpy(a, ra, sizeof a);
