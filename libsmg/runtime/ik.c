@@ -134,9 +134,11 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   smgi_q_rotate(Tk, b0, b);
   /* Stop within IK_TOLERANCE of the closest the ankle can get: 0 for a
    * reachable target, else how far it lies outside the leg's annulus.
-   * Blended by w, the solve moves the pose's ankle by about w times as
-   * much, so both stop rules are on that scale: while a foot blends in or
-   * out, precision it would not show is not paid for. */
+   * A released foot blending out moves the pose's ankle by only about w
+   * times what it moves the solved one, and its solve is on its way to
+   * being dropped: both stop rules are on the pose's scale then. A foot
+   * blending in keeps full precision: its correction is about to be
+   * shown whole, and the next solves start from it. */
   const float l1 = sqrtf(dot3(a0, a0)), l2sq = dot3(b0, b0);
   const float d2 = dot3(t, t);
   const float l2 = sqrtf(l2sq), d = sqrtf(d2);
@@ -144,7 +146,7 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   float inner = fabsf(l1 - l2) - d;
   if (inner > reach) reach = inner;
   if (reach < 0.0f) reach = 0.0f;
-  const float tol = IK_TOLERANCE / w; /* w > 0 */
+  const float tol = foot->planted ? IK_TOLERANCE : IK_TOLERANCE / w;
   const float stop2 = (reach + tol) * (reach + tol);
   float prev2 = INFINITY;
   for (uint32_t it = 0; it < IK_ITERATIONS; ++it) {
