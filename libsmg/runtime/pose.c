@@ -141,10 +141,11 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
   }
 }
 
-void smgi_fk_masked(smg_character* ch, uint8_t bit) {
+void smgi_fk_joints(smg_character* ch, const uint32_t* list,
+                    uint32_t count) {
   const smgi_joint* joints = ch->graph->data.joints;
-  for (uint32_t j = 1; j < ch->joint_count; ++j) {
-    if (!(ch->leg_mask[j] & bit)) continue;
+  for (uint32_t i = 0; i < count; ++i) {
+    uint32_t j = list[i];
     uint32_t p = (uint32_t)joints[j].parent;
     float o[3];
     smgi_q_rotate(ch->wrot + 4u * p, joints[j].offset, o);
