@@ -242,7 +242,9 @@ typedef struct smg_character_desc {
   uint32_t initial_action;   /* action index (0 = "none") */
   uint32_t path_capacity;    /* max path points; 0 = 512 */
   uint32_t constraint_capacity; /* max transition+splice points; 0 = 32 */
-  uint32_t seed;             /* varies choices among equal options; 0 ok */
+  uint32_t seed;             /* varies choices among equal options and,
+                                with the start position, which frames the
+                                character searches in; 0 ok */
   uint32_t reserved0;
   float position[3];         /* start position; y is ignored (ground) */
   float heading;             /* start heading, radians */

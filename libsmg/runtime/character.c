@@ -26,7 +26,7 @@
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
 typedef struct layout {
-  size_t constraints, queue, rot, tmp, snap, wpos, wrot, mask, xz, cum,
+  size_t constraints, queue, rot, tmp, snap, wpos, wrot, legs, xz, cum,
       total;
 } layout;
 
@@ -44,8 +44,8 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   o += align16(sizeof(float) * 3u * J);
   l->wrot = o;
   o += align16(sizeof(float) * 4u * J);
-  l->mask = o;
-  o += align16(J);
+  l->legs = o;
+  o += align16(sizeof(uint32_t) * 2u * J);
   l->queue = o;
   o += align16(sizeof(smgi_qentry) * SMGI_QUEUE_CAP);
   l->tmp = o;
@@ -109,6 +109,44 @@ SMG_API smg_result smg_character_memory_size(const smg_graph* graph,
   return SMG_OK;
 }
 
+/* The joints IK updates per leg (see leg_joints in character_internal.h),
+ * using `mark` (J bytes of scratch) to tell which part of the leg a joint
+ * hangs from. A leg that is not a hip-knee-ankle parent chain is left
+ * without IK: its correction would have no meaning. */
+static void leg_lists(const smg_graph* g, smg_character* ch, uint8_t* mark) {
+  const uint32_t J = g->data.joint_count;
+  const smgi_joint* joints = g->data.joints;
+  const smgi_info* info = g->data.info;
+  const uint32_t* legs[2] = {info->left_leg, info->right_leg};
+  enum { OUT = 0, SIDE = 1, BELOW = 2 };
+  for (uint32_t f = 0; f < 2u; ++f) {
+    const uint32_t hip = legs[f][0], knee = legs[f][1], ankle = legs[f][2];
+    ch->leg_ok[f] = hip > 0 && hip < J && knee < J && ankle < J &&
+                    (uint32_t)joints[knee].parent == hip &&
+                    (uint32_t)joints[ankle].parent == knee;
+    ch->leg_side[f] = ch->leg_below[f] = 0;
+    if (!ch->leg_ok[f]) continue;
+    uint32_t* list = ch->leg_joints + (size_t)f * J;
+    list[0] = hip;
+    list[1] = knee;
+    list[2] = ankle;
+    memset(mark, OUT, J);
+    mark[hip] = mark[knee] = SIDE;
+    mark[ankle] = BELOW;
+    uint32_t n = 3;
+    /* parents come first, so one ascending pass sees every parent's mark */
+    for (uint32_t j = hip + 1u; j < J; ++j) {
+      if (j == knee || j == ankle) continue;
+      mark[j] = mark[(uint32_t)joints[j].parent];
+      if (mark[j] == SIDE) list[n++] = j;
+    }
+    ch->leg_side[f] = n - 3u;
+    for (uint32_t j = ankle + 1u; j < J; ++j)
+      if (mark[j] == BELOW) list[n++] = j;
+    ch->leg_below[f] = n - 3u - ch->leg_side[f];
+  }
+}
+
 /* The character's planning phase (0..1 of a step, see smgi_plan), from
  * what tells characters apart in their desc: seed, start position and
  * heading. Deterministic, so equal descs still give equal characters. */
@@ -166,18 +204,13 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->snap = (float*)(mem + l.snap);
   ch->wpos = (float*)(mem + l.wpos);
   ch->wrot = (float*)(mem + l.wrot);
-  ch->leg_mask = mem + l.mask;
-  {
-    /* joints at or below each hip: IK re-runs FK for them */
-    const smgi_info* info = graph->data.info;
-    const uint32_t hips[2] = {info->left_leg[0], info->right_leg[0]};
-    for (uint32_t j = 1; j < J; ++j) {
-      uint32_t p = (uint32_t)graph->data.joints[j].parent;
-      ch->leg_mask[j] = ch->leg_mask[p];
-      for (uint32_t f = 0; f < 2u; ++f)
-        if (j == hips[f]) ch->leg_mask[j] |= (uint8_t)(1u << f);
-    }
-  }
+  ch->leg_joints = (uint32_t*)(mem + l.legs);
+  /* the crossfade snapshot (4J floats, unused until the first switch) as
+   * J bytes of scratch: ch->tmp no longer exists for skeletons that fit
+   * the stack */
+  leg_lists(graph, ch, mem + l.snap);
+  memset(mem + l.snap, 0, J); /* scratch back to how create found it */
+  smgi_ik_reset(ch);
   ch->path.xz = (float*)(mem + l.xz);
   ch->path.cum = (float*)(mem + l.cum);
   ch->path.capacity = d.path_capacity;

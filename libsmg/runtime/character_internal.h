@@ -71,8 +71,11 @@ typedef struct smgi_pending_splice {
 
 typedef struct smgi_foot {
   uint32_t planted;    /* contact currently anchored */
-  float anchor[3];     /* world ankle position at contact start */
+  float anchor[3];     /* world toe position at contact start */
   float weight;        /* IK blend weight 0..1 */
+  float fix[2][4];     /* world-space hip and knee rotations the last solve
+                          added (identity when the foot was not solved): the
+                          next solve starts from them */
 } smgi_foot;
 
 struct smg_character {
@@ -140,8 +143,14 @@ struct smg_character {
   float* snap;             /* 4J: upper-body snapshot for crossfades */
   float* wpos;             /* 3J: world joint positions of the pose */
   float* wrot;             /* 4J: world joint rotations of the pose */
-  uint8_t* leg_mask;       /* J: bit 0/1 = joint below the left/right hip
-                              (what IK must re-run FK for) */
+  /* 2J: per leg f at f*J, the joints whose world transforms IK changes,
+   * parents first: hip, knee, ankle, then the hip's other descendants not
+   * below the ankle (leg_side[f] of them: they turn with hip or knee), then
+   * those below the ankle (leg_below[f]: the solved ankle keeps its world
+   * rotation, so they only move with it). */
+  uint32_t* leg_joints;
+  uint32_t leg_ok[2];      /* hip > 0, knee's parent hip, ankle's parent knee */
+  uint32_t leg_side[2], leg_below[2];
 };
 
 /* ---- path.c ---- */
@@ -208,8 +217,9 @@ void smgi_pose_prefetch(const smg_character* ch);
 void smgi_pose_compose(smg_character* ch);
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot);
-/* Re-run FK only for joints whose leg_mask has `bit` (after IK). */
-void smgi_fk_masked(smg_character* ch, uint8_t bit);
+/* Re-run FK of the cached world transforms for `count` joints listed
+ * parents first (after IK changed some of their local rotations). */
+void smgi_fk_joints(smg_character* ch, const uint32_t* list, uint32_t count);
 
 /* ---- upper.c ---- */
 void smgi_upper_advance(smg_character* ch, float lower_frames);
@@ -223,6 +233,8 @@ void smgi_upper_sample(const smg_character* ch, float* out);
 void smgi_sync_update(smg_character* ch);
 
 /* ---- ik.c ---- */
+/* Feet unplanted, with no correction to start the next solve from. */
+void smgi_ik_reset(smg_character* ch);
 void smgi_ik_apply(smg_character* ch, float dt);
 
 #endif /* SMG_CHARACTER_INTERNAL_H */

@@ -5,95 +5,244 @@
  * animation has it relative to the toe, placed at that anchor - so a flat
  * foot stays put and a rolling foot pivots about its planted toe instead of
  * dragging. The ankle keeps its animated world orientation, which puts the
- * toe exactly on the anchor. The correction blends in and out over IK_BLEND seconds so
- * contact changes never pop. A contact whose anchor drifted implausibly far
- * (a re-plan moved the body) is released rather than stretched.
+ * toe exactly on the anchor. The correction blends in and out over
+ * IK_BLEND seconds so contact changes never pop. A contact whose anchor
+ * drifted implausibly far (a re-plan moved the body) is released rather
+ * than stretched. Each solve starts from the foot's previous correction
+ * (see solve_leg), and IK refreshes the world transform cache of the joints
+ * it moved itself.
  */
 #include <math.h>
 #include <string.h>
 
 #include "character_internal.h"
 
+#ifndef IK_SSE /* -DIK_SSE=0 builds the plain C path */
+#if defined(__SSE__) || defined(_M_X64) || \
+    (defined(_M_IX86_FP) && _M_IX86_FP >= 1)
+#define IK_SSE 1
+#else
+#define IK_SSE 0
+#endif
+#endif
+#if IK_SSE
+#include <xmmintrin.h>
+#endif
+
 #define IK_BLEND 0.1f      /* seconds to blend in/out */
 #define IK_ITERATIONS 8u
 #define IK_RELEASE 0.35f   /* fraction of leg length */
+#define IK_TOLERANCE 2e-3f /* metres beyond the closest the leg can reach */
 
-/* Rotate world-space chain joints [from, 3) about joint `k` by dq. */
-static void rotate_chain(float pos[3][3], float rotw[3][4], uint32_t k,
-                         const float* dq) {
-  for (uint32_t c = k; c < 3u; ++c) {
-    float q[4];
-    smgi_q_mul(dq, rotw[c], q); /* unit * unit: renormalized at the end */
-    memcpy(rotw[c], q, sizeof q);
-    if (c > k) {
-      float v[3] = {pos[c][0] - pos[k][0], pos[c][1] - pos[k][1],
-                    pos[c][2] - pos[k][2]};
-      float o[3];
-      smgi_q_rotate(dq, v, o);
-      pos[c][0] = pos[k][0] + o[0];
-      pos[c][1] = pos[k][1] + o[1];
-      pos[c][2] = pos[k][2] + o[2];
-    }
+static const float k_identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+
+static float dot3(const float* a, const float* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Shortest rotation taking direction a to direction b (smgi_q_from_to),
+ * given their squared lengths, also giving |a||b|, which the caller needs
+ * to place the turned bone. Returns 0 (and leaves dq alone) when the two
+ * are opposite or degenerate: there is no shortest arc then, and the sweep
+ * skips that joint. */
+static inline int turn(const float* a, float a2, const float* b, float b2,
+                       float* dq, float* lab) {
+  float l = sqrtf(a2 * b2);
+  float w = l + dot3(a, b);
+  if (!(w > 1e-6f * (l + 1e-12f))) return 0;
+  /* |(a x b, w)|^2 = 2 l w, so one sqrt normalizes */
+  float s = 1.0f / sqrtf(2.0f * l * w);
+  dq[0] = (a[1] * b[2] - a[2] * b[1]) * s;
+  dq[1] = (a[2] * b[0] - a[0] * b[2]) * s;
+  dq[2] = (a[0] * b[1] - a[1] * b[0]) * s;
+  dq[3] = w * s;
+  *lab = l;
+  return 1;
+}
+
+/* o = a * b: smgi_q_mul's operations in the same order (so the same
+ * bits: negating a factor is exact, and x + (-y) is x - y), four lanes at
+ * once where SSE exists; IK multiplies about a dozen per solve. */
+static inline void qmul(const float* a, const float* b, float* o) {
+#if IK_SSE
+  /* lane i of term k is a[k] times b permuted and signed for lane i */
+  const __m128 A = _mm_loadu_ps(a), B = _mm_loadu_ps(b);
+  const __m128 s0 = _mm_setr_ps(1.0f, -1.0f, 1.0f, -1.0f);
+  const __m128 s1 = _mm_setr_ps(1.0f, 1.0f, -1.0f, -1.0f);
+  const __m128 s2 = _mm_setr_ps(-1.0f, 1.0f, 1.0f, -1.0f);
+  __m128 b0 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3)), s0);
+  __m128 b1 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(1, 0, 3, 2)), s1);
+  __m128 b2 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(2, 3, 0, 1)), s2);
+  __m128 r = _mm_mul_ps(_mm_shuffle_ps(A, A, 0xff), B); /* a[3] */
+  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0x00), b0));
+  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0x55), b1));
+  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0xaa), b2));
+  _mm_storeu_ps(o, r);
+#else
+  smgi_q_mul(a, b, o);
+#endif
+}
+
+/* q = dq * q */
+static void premul(const float* dq, float* q) {
+  float o[4];
+  qmul(dq, q, o);
+  memcpy(q, o, sizeof o);
+}
+
+/* Local rotation `local` blended over the animation's in `rot` by w. At
+ * full weight nlerp would only renormalize (the inputs are unit products);
+ * keep its choice of sign, the animation's hemisphere. */
+static void blend_local(float* rot, const float* local, float w) {
+  if (w >= 1.0f) {
+    float s = dot3(rot, local) + rot[3] * local[3] < 0.0f ? -1.0f : 1.0f;
+    rot[0] = s * local[0];
+    rot[1] = s * local[1];
+    rot[2] = s * local[2];
+    rot[3] = s * local[3];
+  } else {
+    float out[4];
+    smgi_q_nlerp(rot, local, w, out);
+    memcpy(rot, out, sizeof out);
   }
 }
 
-static void solve_leg(smg_character* ch, const uint32_t* leg,
-                      const float* target, float w) {
-  const smg_graph* g = ch->graph;
-  const uint32_t hip = leg[0], knee = leg[1], ankle = leg[2];
-  const uint32_t J = ch->joint_count;
-  if (hip >= J || knee >= J || ankle >= J || hip == 0) return;
-  int32_t hp = g->data.joints[hip].parent;
-  if (hp < 0) return;
-  float pos[3][3], rotw[3][4];
-  const uint32_t chain[3] = {hip, knee, ankle};
-  for (uint32_t c = 0; c < 3u; ++c) {
-    memcpy(pos[c], ch->wpos + 3u * chain[c], sizeof(float) * 3u);
-    memcpy(rotw[c], ch->wrot + 4u * chain[c], sizeof(float) * 4u);
-  }
-  float ankle_world[4];
-  memcpy(ankle_world, rotw[2], sizeof ankle_world);
+/* CCD on knee then hip, moving the ankle to `target`. The chain is kept as
+ * two bone vectors a (hip->knee) and b (knee->ankle) relative to the hip,
+ * and the rotations CCD applies are accumulated as world-space corrections
+ * Th (hip) and Tk (knee) of the animated pose. Each solve starts from the
+ * foot's previous corrections: while a foot is planted the target hardly
+ * moves between steps, so CCD starts next to the answer and its sweeps add
+ * up across steps instead of restarting from the raw animation. */
+static void solve_leg(smg_character* ch, uint32_t f, const float* target,
+                      float w) {
+  const smgi_joint* joints = ch->graph->data.joints;
+  const uint32_t* list = ch->leg_joints + (size_t)f * ch->joint_count;
+  const uint32_t hip = list[0], knee = list[1], ankle = list[2];
+  smgi_foot* foot = &ch->feet[f];
+  const uint32_t hp = (uint32_t)joints[hip].parent;
+  const float* p0 = ch->wpos + 3u * hip;
+  const float* p1 = ch->wpos + 3u * knee;
+  const float* p2 = ch->wpos + 3u * ankle;
+  float a0[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+  float b0[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
+  float t[3] = {target[0] - p0[0], target[1] - p0[1], target[2] - p0[2]};
+  float Th[4], Tk[4], a[3], b[3];
+  memcpy(Th, foot->fix[0], sizeof Th);
+  memcpy(Tk, foot->fix[1], sizeof Tk);
+  smgi_q_rotate(Th, a0, a);
+  smgi_q_rotate(Tk, b0, b);
+  /* Stop within IK_TOLERANCE of the closest the ankle can get: 0 for a
+   * reachable target, else how far it lies outside the leg's annulus.
+   * A released foot blending out moves the pose's ankle by only about w
+   * times what it moves the solved one, and its solve is on its way to
+   * being dropped: both stop rules are on the pose's scale then. A foot
+   * blending in keeps full precision: its correction is about to be
+   * shown whole, and the next solves start from it. */
+  const float l1 = sqrtf(dot3(a0, a0)), l2sq = dot3(b0, b0);
+  const float d2 = dot3(t, t);
+  const float l2 = sqrtf(l2sq), d = sqrtf(d2);
+  float reach = d - (l1 + l2);
+  float inner = fabsf(l1 - l2) - d;
+  if (inner > reach) reach = inner;
+  if (reach < 0.0f) reach = 0.0f;
+  const float tol = foot->planted ? IK_TOLERANCE : IK_TOLERANCE / w;
+  const float stop2 = (reach + tol) * (reach + tol);
   float prev2 = INFINITY;
   for (uint32_t it = 0; it < IK_ITERATIONS; ++it) {
-    float ex = target[0] - pos[2][0], ey = target[1] - pos[2][1],
-          ez = target[2] - pos[2][2];
-    float e2 = ex * ex + ey * ey + ez * ez;
-    if (e2 < 4e-6f) break; /* within 2 mm */
-    /* converged short of an unreachable target: more sweeps gain < 1 mm */
-    if (prev2 - e2 < 2e-3f * sqrtf(e2) + 1e-6f && it > 0) break;
+    float e[3] = {t[0] - a[0] - b[0], t[1] - a[1] - b[1], t[2] - a[2] - b[2]};
+    float e2 = dot3(e, e);
+    if (e2 <= stop2) break;
+    /* a sweep gained < 0.5 tol (a singular or slowly converging pose) */
+    if (prev2 - e2 < tol * sqrtf(e2) + 1e-6f) break;
     prev2 = e2;
-    for (int k = 1; k >= 0; --k) { /* knee, then hip */
-      float v1[3] = {pos[2][0] - pos[k][0], pos[2][1] - pos[k][1],
-                     pos[2][2] - pos[k][2]};
-      float v2[3] = {target[0] - pos[k][0], target[1] - pos[k][1],
-                     target[2] - pos[k][2]};
-      float dq[4];
-      smgi_q_from_to(v1, v2, dq);
-      rotate_chain(pos, rotw, (uint32_t)k, dq);
+    float dq[4], lab;
+    /* knee: turn the shin toward the target; it then lies along v */
+    float v[3] = {t[0] - a[0], t[1] - a[1], t[2] - a[2]};
+    if (turn(b, l2sq, v, dot3(v, v), dq, &lab)) {
+      float k = l2sq / lab; /* |b| / |v| */
+      b[0] = v[0] * k;
+      b[1] = v[1] * k;
+      b[2] = v[2] * k;
+      premul(dq, Tk);
+    }
+    /* hip: turn the whole leg; hip->ankle then lies along t */
+    float sum[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+    const float s2 = dot3(sum, sum);
+    if (turn(sum, s2, t, d2, dq, &lab)) {
+      float k = s2 / lab; /* |sum| / |t| */
+      float ra[3];
+      smgi_q_rotate(dq, a, ra);
+      memcpy(a, ra, sizeof a);
+      b[0] = t[0] * k - a[0];
+      b[1] = t[1] * k - a[1];
+      b[2] = t[2] * k - a[2];
+      premul(dq, Th);
+      premul(dq, Tk);
     }
   }
-  smgi_q_normalize(rotw[0]);
-  smgi_q_normalize(rotw[1]);
-  /* back to local rotations, blended with the animation by w */
-  float inv[4], local[4], out[4];
-  smgi_q_conj(ch->wrot + 4u * (uint32_t)hp, inv);
-  smgi_q_mul(inv, rotw[0], local);
-  smgi_q_nlerp(ch->rot + 4u * hip, local, w, out);
-  memcpy(ch->rot + 4u * hip, out, sizeof out);
-  smgi_q_conj(rotw[0], inv);
-  smgi_q_mul(inv, rotw[1], local);
-  smgi_q_nlerp(ch->rot + 4u * knee, local, w, out);
-  memcpy(ch->rot + 4u * knee, out, sizeof out);
-  smgi_q_conj(rotw[1], inv);
-  smgi_q_mul(inv, ankle_world, local);
-  smgi_q_nlerp(ch->rot + 4u * ankle, local, w, out);
-  memcpy(ch->rot + 4u * ankle, out, sizeof out);
+  smgi_q_normalize(Th);
+  smgi_q_normalize(Tk);
+  memcpy(foot->fix[0], Th, sizeof Th);
+  memcpy(foot->fix[1], Tk, sizeof Tk);
+  /* back to local rotations, blended with the animation by w; the ankle
+   * keeps its animated world orientation */
+  float r0[4], r1[4], inv[4], local[4];
+  float* wrot = ch->wrot;
+  qmul(Th, wrot + 4u * hip, r0);
+  qmul(Tk, wrot + 4u * knee, r1);
+  smgi_q_conj(wrot + 4u * hp, inv);
+  qmul(inv, r0, local);
+  blend_local(ch->rot + 4u * hip, local, w);
+  smgi_q_conj(r0, inv);
+  qmul(inv, r1, local);
+  blend_local(ch->rot + 4u * knee, local, w);
+  smgi_q_conj(r1, inv);
+  qmul(inv, wrot + 4u * ankle, local);
+  blend_local(ch->rot + 4u * ankle, local, w);
+
+  /* keep the world transform cache true for every joint IK moved */
+  const uint32_t side = ch->leg_side[f], below = ch->leg_below[f];
+  if (w < 1.0f) { /* blended: the solve's transforms are not the pose's */
+    smgi_fk_joints(ch, list, 3u + side + below);
+    return;
+  }
+  /* At full weight the solve already has the pose's hip and knee (what FK
+   * of the new local rotations gives, to rounding) and the ankle keeps its
+   * world rotation, so joints below it only move with it. */
+  float* wpos = ch->wpos;
+  memcpy(wrot + 4u * hip, r0, sizeof r0);
+  memcpy(wrot + 4u * knee, r1, sizeof r1);
+  const float ax = p0[0] + a[0] + b[0], ay = p0[1] + a[1] + b[1],
+              az = p0[2] + a[2] + b[2];
+  const float dx = ax - p2[0], dy = ay - p2[1], dz = az - p2[2];
+  wpos[3u * knee] = p0[0] + a[0];
+  wpos[3u * knee + 1u] = p0[1] + a[1];
+  wpos[3u * knee + 2u] = p0[2] + a[2];
+  wpos[3u * ankle] = ax;
+  wpos[3u * ankle + 1u] = ay;
+  wpos[3u * ankle + 2u] = az;
+  smgi_fk_joints(ch, list + 3, side);
+  for (uint32_t i = 3u + side; i < 3u + side + below; ++i) {
+    float* p = wpos + 3u * list[i];
+    p[0] += dx;
+    p[1] += dy;
+    p[2] += dz;
+  }
+}
+
+void smgi_ik_reset(smg_character* ch) {
+  for (uint32_t f = 0; f < 2u; ++f) {
+    ch->feet[f].planted = 0;
+    ch->feet[f].weight = 0.0f;
+    memcpy(ch->feet[f].fix[0], k_identity, sizeof k_identity);
+    memcpy(ch->feet[f].fix[1], k_identity, sizeof k_identity);
+  }
 }
 
 void smgi_ik_apply(smg_character* ch, float dt) {
   if (!ch->ik_enabled) {
-    ch->feet[0].planted = ch->feet[1].planted = 0;
-    ch->feet[0].weight = ch->feet[1].weight = 0.0f;
+    smgi_ik_reset(ch);
     return;
   }
   const smgi_info* info = ch->graph->data.info;
@@ -102,8 +251,8 @@ void smgi_ik_apply(smg_character* ch, float dt) {
   float step = dt / IK_BLEND;
   for (uint32_t f = 0; f < 2u; ++f) {
     smgi_foot* foot = &ch->feet[f];
+    if (!ch->leg_ok[f]) continue;
     uint32_t ankle = legs[f][2];
-    if (ankle >= ch->joint_count) continue;
     /* the planted point: the toe when the skeleton has one */
     uint32_t toe = legs[f][3] < ch->joint_count ? legs[f][3] : ankle;
     const float* ap = ch->wpos + 3u * toe;
@@ -111,6 +260,10 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     if (contact && !foot->planted) {
       foot->planted = 1;
       memcpy(foot->anchor, ap, sizeof foot->anchor);
+      /* the animation has the foot exactly there now: whatever correction
+       * a blend-out toward the previous anchor left is no guess for it */
+      memcpy(foot->fix[0], k_identity, sizeof k_identity);
+      memcpy(foot->fix[1], k_identity, sizeof k_identity);
     } else if (!contact) {
       foot->planted = 0;
     }
@@ -130,8 +283,11 @@ void smgi_ik_apply(smg_character* ch, float dt) {
       float target[3] = {foot->anchor[0] + an[0] - ap[0],
                          foot->anchor[1] + an[1] - ap[1],
                          foot->anchor[2] + an[2] - ap[2]};
-      solve_leg(ch, legs[f], target, foot->weight);
-      smgi_fk_masked(ch, (uint8_t)(1u << f)); /* keep the cache true */
+      solve_leg(ch, f, target, foot->weight);
+    } else {
+      /* a later contact starts from the animation again */
+      memcpy(foot->fix[0], k_identity, sizeof k_identity);
+      memcpy(foot->fix[1], k_identity, sizeof k_identity);
     }
   }
 }

@@ -93,7 +93,7 @@ static smgi_xform2 disp_of(const smgi_edge* e) {
  * on [0, 1] (max error about 1e-5 rad, i.e. micrometres at these
  * weights) instead of libm's atan2f, which was a fifth of all planning
  * instructions. (0, 0) gives 0; NaN propagates (the cost turns infinite). */
-static float fast_atan2(float y, float x) {
+static inline float fast_atan2(float y, float x) {
   float ax = fabsf(x), ay = fabsf(y);
   float mx = ax > ay ? ax : ay, mn = ax > ay ? ay : ax;
   if (mx == 0.0f) return 0.0f;
@@ -223,6 +223,8 @@ typedef struct seq_ctx {
   float leaf_err;    /* path error part of the last seq_leaf value */
   float best_err;    /* and of the best sequence found */
   float tx, tz;      /* where to stay when not following */
+  uint32_t style0;   /* wanted style at s0 ... */
+  float style_end;   /* ... which holds until this arc (next constraint) */
   uint32_t budget;   /* edge evaluations left */
   uint32_t path[SEQ_PATH_CAP];      /* edges of the sequence being built */
   uint32_t best_path[SEQ_PATH_CAP]; /* and of the best one so far */
@@ -289,9 +291,12 @@ static float sample_cost(const seq_ctx* c, float x, float z, float h,
 
 /* Style penalty of an edge at arc lengths [a, b] of the path. */
 static float seq_pen(const seq_ctx* c, const smgi_edge* e, float a, float b) {
-  if (!c->following)
-    return 10.0f * style_penalty(c->ch, e, smgi_style_at(c->ch, c->s0));
+  if (!c->following) return 10.0f * style_penalty(c->ch, e, c->style0);
   if (c->lost || c->yield) return lost_style_penalty(c->ch, e);
+  /* s0 <= a <= b: before the next constraint the wanted style is the one
+   * at s0 (what edge_style_penalty would find with two scans) */
+  if (b < c->style_end)
+    return e->label == c->style0 ? 0.0f : style_penalty(c->ch, e, c->style0);
   return edge_style_penalty(c->ch, e, a, b);
 }
 
@@ -508,6 +513,8 @@ static void seq_init(seq_ctx* c, const smg_character* ch, smgi_xform2 W,
   c->yield = 0;
   c->leaf_err = c->best_err = 0.0f;
   end_target(ch, &c->tx, &c->tz);
+  c->style0 = smgi_style_at(ch, s);
+  c->style_end = smgi_next_constraint_arc(ch, s);
   c->budget = SEQ_BUDGET;
 }
 

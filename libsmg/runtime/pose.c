@@ -268,18 +268,13 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
 #endif
 }
 
-void smgi_fk_masked(smg_character* ch, uint8_t bit) {
+void smgi_fk_joints(smg_character* ch, const uint32_t* list,
+                    uint32_t count) {
   const smgi_joint* joints = ch->graph->data.joints;
-  const smgi_info* info = ch->graph->data.info;
   float* wpos = ch->wpos;
   float* wrot = ch->wrot;
-  /* leg_mask bit f is set from hip f down (character.c), and children
-   * follow their parents, so no joint before that hip has it */
-  uint32_t first = 1u;
-  if (bit == 1u && info->left_leg[0] > first) first = info->left_leg[0];
-  if (bit == 2u && info->right_leg[0] > first) first = info->right_leg[0];
-  for (uint32_t j = first; j < ch->joint_count; ++j) {
-    if (!(ch->leg_mask[j] & bit)) continue;
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t j = list[i];
     const uint32_t p = (uint32_t)joints[j].parent;
 #if SMGI_POSE_SSE
     __m128 unused;

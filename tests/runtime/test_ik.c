@@ -1,0 +1,131 @@
+/*
+ * test_ik.c - foot IK keeps the world transform cache true: after every
+ * step, the model matrices (which only convert the cache) must equal
+ * forward kinematics of the local pose the character reports, for every
+ * joint - including the legs IK just moved, whose cache IK refreshes itself
+ * (translating the joints below a fully weighted ankle instead of redoing
+ * their FK). Uses build/default.smg (same 31-joint hierarchy as CMU).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "runtime/runtime_testutil.h"
+
+#define DT (1.0f / 60.0f)
+#define MAXJ 64
+
+static void q_mul(const float* a, const float* b, float* o) {
+  o[0] = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];
+  o[1] = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];
+  o[2] = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];
+  o[3] = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
+}
+
+static void q_rotate(const float* q, const float* v, float* o) {
+  float r[4], c[4], p[4] = {v[0], v[1], v[2], 0.0f};
+  const float qc[4] = {-q[0], -q[1], -q[2], q[3]};
+  q_mul(q, p, r);
+  q_mul(r, qc, c);
+  o[0] = c[0];
+  o[1] = c[1];
+  o[2] = c[2];
+}
+
+static void test_cache_matches_fk(void** state) {
+  (void)state;
+  smg_graph* g = rt_default_graph();
+  assert_non_null(g);
+  smg_graph_info info;
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
+  const uint32_t J = info.joint_count;
+  assert_true(J <= MAXJ);
+  int parent[MAXJ];
+  float offset[MAXJ][3];
+  for (uint32_t j = 0; j < J; ++j) {
+    smg_joint_info ji;
+    memset(&ji, 0, sizeof ji);
+    ji.struct_size = sizeof ji;
+    assert_int_equal(smg_graph_get_joint(g, j, &ji), SMG_OK);
+    parent[j] = ji.parent;
+    memcpy(offset[j], ji.rest_offset, sizeof offset[j]);
+  }
+  uint32_t toe[2];
+  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
+  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+
+  smg_character* ch = NULL;
+  assert_int_equal(smg_character_create(g, NULL, &ch), SMG_OK);
+  float xz[2 * 64];
+  uint32_t n = rt_turn_r(xz, 4.0f, 6.0f, 1, 3.0f);
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+
+  float root[3], rot[4 * MAXJ], wpos[3 * MAXJ], wrot[4 * MAXJ];
+  float mats[16 * MAXJ];
+  float max_dp = 0.0f, max_dr = 0.0f;
+  int contact_steps = 0;
+  const int steps = getenv("SMG_TEST_QUICK") ? 240 : 900;
+  for (int i = 0; i < steps; ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    smg_character_state s;
+    memset(&s, 0, sizeof s);
+    s.struct_size = sizeof s;
+    assert_int_equal(smg_character_get_state(ch, &s), SMG_OK);
+    if (s.flags & SMG_STATE_LEFT_CONTACT)
+      ++contact_steps;
+    assert_int_equal(smg_character_get_local_pose(ch, root, rot, J), SMG_OK);
+    assert_int_equal(
+        smg_character_get_model_matrices(ch, SMG_SPACE_WORLD, mats, J),
+        SMG_OK);
+    memcpy(wpos, root, sizeof(float) * 3u);
+    memcpy(wrot, rot, sizeof(float) * 4u);
+    for (uint32_t j = 1; j < J; ++j) {
+      float o[3];
+      uint32_t p = (uint32_t)parent[j];
+      q_rotate(wrot + 4u * p, offset[j], o);
+      for (int k = 0; k < 3; ++k) wpos[3u * j + k] = wpos[3u * p + k] + o[k];
+      q_mul(wrot + 4u * p, rot + 4u * j, wrot + 4u * j);
+    }
+    for (uint32_t j = 0; j < J; ++j) {
+      const float* m = mats + 16u * j;
+      const float *q = wrot + 4u * j, x = q[0], y = q[1], z = q[2], w = q[3];
+      /* first two columns of the rotation matrix */
+      const float col[6] = {1.0f - 2.0f * (y * y + z * z),
+                            2.0f * (x * y + z * w),
+                            2.0f * (x * z - y * w),
+                            2.0f * (x * y - z * w),
+                            1.0f - 2.0f * (x * x + z * z),
+                            2.0f * (y * z + x * w)};
+      for (int k = 0; k < 3; ++k) {
+        float dp = fabsf(m[12 + k] - wpos[3u * j + k]);
+        if (dp > max_dp) max_dp = dp;
+        float d0 = fabsf(m[k] - col[k]), d1 = fabsf(m[4 + k] - col[3 + k]);
+        if (d0 > max_dr) max_dr = d0;
+        if (d1 > max_dr) max_dr = d1;
+      }
+    }
+  }
+  print_message("IK cache vs FK of the local pose over %d steps (%d with "
+                "the left foot planted): max position difference %.2g m, "
+                "max rotation matrix difference %.2g\n",
+                steps, contact_steps, (double)max_dp, (double)max_dr);
+  /* the left foot was planted (so IK ran) for much of the walk */
+  assert_true(contact_steps > steps / 3);
+  /* float rounding only: a stale leg would be off by centimetres */
+  assert_true(max_dp < 1e-4f);
+  assert_true(max_dr < 1e-4f);
+  smg_character_destroy(ch);
+  smg_graph_destroy(g);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_cache_matches_fk),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
