@@ -114,25 +114,32 @@ static inline void smgi_quat_unpack(const unsigned char* p, float* q) {
 #endif
 
 #if SMGI_QPACK_SSE
-static inline __m128i smgi_qpack_lanes16(const unsigned char* p,
-                                         unsigned off) {
-  return _mm_setr_epi32((int)((uint32_t)p[off] | (uint32_t)p[off + 1] << 8),
-                        (int)((uint32_t)p[off + 6] |
-                              (uint32_t)p[off + 7] << 8),
-                        (int)((uint32_t)p[off + 12] |
-                              (uint32_t)p[off + 13] << 8),
-                        (int)((uint32_t)p[off + 18] |
-                              (uint32_t)p[off + 19] << 8));
+/* Four 32-bit lanes from the unaligned 4-byte words at p, p + 6, p + 12,
+ * p + 18 (one per joint): 4 loads and 3 unpacks, where assembling each
+ * 16-bit word from bytes took ~12 scalar instructions per lane. */
+static inline __m128i smgi_qpack_dwords(const unsigned char* p) {
+  int32_t v[4];
+  memcpy(&v[0], p, 4);
+  memcpy(&v[1], p + 6, 4);
+  memcpy(&v[2], p + 12, 4);
+  memcpy(&v[3], p + 18, 4);
+  return _mm_unpacklo_epi64(
+      _mm_unpacklo_epi32(_mm_cvtsi32_si128(v[0]), _mm_cvtsi32_si128(v[1])),
+      _mm_unpacklo_epi32(_mm_cvtsi32_si128(v[2]), _mm_cvtsi32_si128(v[3])));
 }
 
+/* Unpack four consecutive packed rotations (24 bytes at p, nothing read
+ * beyond) into x, y, z, w vectors (lane k = joint k), bit for bit what
+ * smgi_quat_unpack_raw gives for each. */
 static inline void smgi_quat_unpack4_sse(const unsigned char* p, __m128* x,
                                          __m128* y, __m128* z, __m128* w) {
   const __m128i one = _mm_set1_epi32(1);
-  const __m128i w0 = smgi_qpack_lanes16(p, 0);
-  const __m128i w1 = smgi_qpack_lanes16(p, 2);
-  const __m128i w2 = smgi_qpack_lanes16(p, 4);
-  const __m128i i = _mm_or_si128(_mm_and_si128(w1, one),
-                                 _mm_slli_epi32(_mm_and_si128(w2, one), 1));
+  /* little-endian: d01 = word0 | word1 << 16, d12 = word1 | word2 << 16 */
+  const __m128i d01 = smgi_qpack_dwords(p);
+  const __m128i d12 = smgi_qpack_dwords(p + 2);
+  const __m128i w0 = _mm_and_si128(d01, _mm_set1_epi32(0xffff));
+  const __m128i w1 = _mm_srli_epi32(d01, 16);
+  const __m128i w2 = _mm_srli_epi32(d12, 16);
   const __m128 a = _mm_mul_ps(
       _mm_cvtepi32_ps(_mm_sub_epi32(w0, _mm_set1_epi32(SMGI_QPACK_MID16))),
       _mm_set1_ps(SMGI_QPACK_STEP16));
@@ -150,19 +157,26 @@ static inline void smgi_quat_unpack4_sse(const unsigned char* p, __m128* x,
                  _mm_mul_ps(c, c)));
   /* max(r, 0) is r > 0 ? r : 0, as in the plain version */
   const __m128 big = _mm_sqrt_ps(_mm_max_ps(r, _mm_setzero_ps()));
-  /* e_k: lanes whose dropped index is k (exactly one per lane) */
-  const __m128 e0 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, _mm_setzero_si128()));
-  const __m128 e1 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, one));
-  const __m128 e2 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, _mm_set1_epi32(2)));
-  const __m128 e3 = _mm_castsi128_ps(_mm_cmpeq_epi32(i, _mm_set1_epi32(3)));
-#define SMGI_QPACK_PICK(v0, v1, v2, v3)                                    \
-  _mm_or_ps(_mm_or_ps(_mm_and_ps(e0, v0), _mm_and_ps(e1, v1)),            \
-            _mm_or_ps(_mm_and_ps(e2, v2), _mm_and_ps(e3, v3)))
-  *x = SMGI_QPACK_PICK(big, c, b, a);
-  *y = SMGI_QPACK_PICK(a, big, c, b);
-  *z = SMGI_QPACK_PICK(b, a, big, c);
-  *w = SMGI_QPACK_PICK(c, b, a, big);
-#undef SMGI_QPACK_PICK
+  /* Put the dropped component in place: q[k] = t[(k - i) & 3] with
+   * t = (big, a, b, c), i = the 2-bit index, per lane. By bit 0 of i the
+   * candidates pair up so that four selects serve all components, then
+   * bit 1 picks between them; each select is y ^ (mask & (x ^ y)). */
+  const __m128 m1 = _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(w1, one), one));
+  const __m128 m2 = _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_and_si128(w2, one), one));
+#define SMGI_QPACK_SEL(m, if1, if0) \
+  _mm_xor_ps((if0), _mm_and_ps((m), _mm_xor_ps((if1), (if0))))
+  /* i even / odd: x is big / c (i = 0 / 1) or b / a (i = 2 / 3), ... */
+  const __m128 P = SMGI_QPACK_SEL(m1, c, big); /* x if i < 2, z if i >= 2 */
+  const __m128 Q = SMGI_QPACK_SEL(m1, a, b);   /* z if i < 2, x if i >= 2 */
+  const __m128 R = SMGI_QPACK_SEL(m1, big, a); /* y if i < 2, w if i >= 2 */
+  const __m128 S = SMGI_QPACK_SEL(m1, b, c);   /* w if i < 2, y if i >= 2 */
+#undef SMGI_QPACK_SEL
+  const __m128 dpq = _mm_and_ps(m2, _mm_xor_ps(P, Q));
+  const __m128 drs = _mm_and_ps(m2, _mm_xor_ps(R, S));
+  *x = _mm_xor_ps(P, dpq);
+  *z = _mm_xor_ps(Q, dpq);
+  *y = _mm_xor_ps(R, drs);
+  *w = _mm_xor_ps(S, drs);
 }
 
 static inline void smgi_pose_nlerp4_sse(const unsigned char* a,

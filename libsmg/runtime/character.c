@@ -9,6 +9,7 @@
 #include "abi.h"
 #include "alloc.h"
 #include "character_internal.h"
+#include "pose_simd.h"
 
 /* 512 points (6 KB) keep a default character within 16 KiB in all; a
  * mouse-drawn path resampled every few centimetres fits, and longer paths
@@ -48,7 +49,9 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   l->queue = o;
   o += align16(sizeof(smgi_qentry) * SMGI_QUEUE_CAP);
   l->tmp = o;
-  o += align16(sizeof(float) * 4u * J);
+  /* crossfade scratch: on the stack for skeletons up to
+   * SMGI_POSE_STACK_JOINTS joints (pose.c) */
+  if (J > SMGI_POSE_STACK_JOINTS) o += align16(sizeof(float) * 4u * J);
   l->snap = o;
   o += align16(sizeof(float) * 4u * J);
   l->constraints = o;
@@ -197,13 +200,16 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->next_id = 1;
   ch->queue = (smgi_qentry*)(mem + l.queue);
   ch->rot = (float*)(mem + l.rot);
-  ch->tmp = (float*)(mem + l.tmp);
+  ch->tmp = J > SMGI_POSE_STACK_JOINTS ? (float*)(mem + l.tmp) : NULL;
   ch->snap = (float*)(mem + l.snap);
   ch->wpos = (float*)(mem + l.wpos);
   ch->wrot = (float*)(mem + l.wrot);
   ch->leg_joints = (uint32_t*)(mem + l.legs);
-  leg_lists(graph, ch, mem + l.tmp);
-  memset(mem + l.tmp, 0, J); /* scratch back to how create found it */
+  /* the crossfade snapshot (4J floats, unused until the first switch) as
+   * J bytes of scratch: ch->tmp no longer exists for skeletons that fit
+   * the stack */
+  leg_lists(graph, ch, mem + l.snap);
+  memset(mem + l.snap, 0, J); /* scratch back to how create found it */
   smgi_ik_reset(ch);
   ch->path.xz = (float*)(mem + l.xz);
   ch->path.cum = (float*)(mem + l.cum);
@@ -393,27 +399,6 @@ SMG_API smg_result smg_character_get_local_pose(const smg_character* ch,
   return SMG_OK;
 }
 
-/* Column-major 4x4 from rotation q and translation t. */
-static void mat_from(const float* q, const float* t, float* m) {
-  float x = q[0], y = q[1], z = q[2], w = q[3];
-  m[0] = 1.0f - 2.0f * (y * y + z * z);
-  m[1] = 2.0f * (x * y + z * w);
-  m[2] = 2.0f * (x * z - y * w);
-  m[3] = 0.0f;
-  m[4] = 2.0f * (x * y - z * w);
-  m[5] = 1.0f - 2.0f * (x * x + z * z);
-  m[6] = 2.0f * (y * z + x * w);
-  m[7] = 0.0f;
-  m[8] = 2.0f * (x * z + y * w);
-  m[9] = 2.0f * (y * z - x * w);
-  m[10] = 1.0f - 2.0f * (x * x + y * y);
-  m[11] = 0.0f;
-  m[12] = t[0];
-  m[13] = t[1];
-  m[14] = t[2];
-  m[15] = 1.0f;
-}
-
 SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
                                                     uint32_t space,
                                                     float* matrices,
@@ -424,22 +409,60 @@ SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
   if (joint_count < ch->joint_count) return SMG_ERROR_BUFFER_TOO_SMALL;
   if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
   /* world transforms were cached by the last step; only convert */
+  const uint32_t J = ch->joint_count;
+  const float* wpos = ch->wpos;
+  const float* wrot = ch->wrot;
+#if SMGI_POSE_SSE
+  /* four joints at a time; the last group pads with identities and only
+   * its real joints are copied out */
+  const int world = space == SMG_SPACE_WORLD;
+  __m128 yaw = _mm_setzero_ps(), ground = _mm_setzero_ps();
+  if (!world) {
+    float y[4];
+    smgi_q_yaw(-ch->heading, y);
+    yaw = _mm_loadu_ps(y);
+    ground = _mm_setr_ps(ch->ground[0], 0.0f, ch->ground[1], 0.0f);
+  }
+  uint32_t j = 0;
+  if (world) {
+    for (; j + 4u <= J; j += 4u)
+      smgi_mat4_world_sse(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
+  } else {
+    for (; j + 4u <= J; j += 4u)
+      smgi_mat4_character_sse(wrot + 4u * j, wpos + 3u * j, yaw, ground,
+                              matrices + 16u * j);
+  }
+  if (j < J) {
+    const uint32_t n = J - j;
+    float q[16] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    float p[12] = {0};
+    float m[64];
+    memcpy(q, wrot + 4u * j, sizeof(float) * 4u * n);
+    memcpy(p, wpos + 3u * j, sizeof(float) * 3u * n);
+    if (world)
+      smgi_mat4_world_sse(q, p, m);
+    else
+      smgi_mat4_character_sse(q, p, yaw, ground, m);
+    memcpy(matrices + 16u * j, m, sizeof(float) * 16u * n);
+  }
+#else
   if (space == SMG_SPACE_WORLD) {
-    for (uint32_t j = 0; j < ch->joint_count; ++j)
-      mat_from(ch->wrot + 4u * j, ch->wpos + 3u * j, matrices + 16u * j);
+    for (uint32_t j = 0; j < J; ++j)
+      smgi_mat_from_c(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
     return SMG_OK;
   }
   /* character space: the inverse of (ground position, heading) first */
   float yaw[4];
   smgi_q_yaw(-ch->heading, yaw);
-  for (uint32_t j = 0; j < ch->joint_count; ++j) {
+  for (uint32_t j = 0; j < J; ++j) {
     float q[4], v[3], p[3];
-    smgi_q_mul(yaw, ch->wrot + 4u * j, q);
-    v[0] = ch->wpos[3u * j] - ch->ground[0];
-    v[1] = ch->wpos[3u * j + 1u];
-    v[2] = ch->wpos[3u * j + 2u] - ch->ground[1];
+    smgi_q_mul(yaw, wrot + 4u * j, q);
+    v[0] = wpos[3u * j] - ch->ground[0];
+    v[1] = wpos[3u * j + 1u];
+    v[2] = wpos[3u * j + 2u] - ch->ground[1];
     smgi_q_rotate(yaw, v, p);
-    mat_from(q, p, matrices + 16u * j);
+    smgi_mat_from_c(q, p, matrices + 16u * j);
   }
+#endif
   return SMG_OK;
 }

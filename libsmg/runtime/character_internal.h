@@ -25,6 +25,8 @@
 #define SMGI_SPLICE_WINDOW 20u    /* lower frames searched for a splice */
 #define SMGI_SYNC_LOWER 8u        /* DTW window, lower frames */
 #define SMGI_SYNC_UPPER 16u       /* DTW window, upper frames */
+#define SMGI_POSE_STACK_JOINTS 64u /* pose scratch on the stack up to here
+                                      (1 KiB) */
 
 /* A constraint on the path. */
 typedef struct smgi_constraint {
@@ -134,7 +136,10 @@ struct smg_character {
   float ground[2];         /* ground position (x, z) */
   uint32_t contacts;       /* SMG_STATE_*_CONTACT bits of the frame */
   float* rot;              /* 4J: output local rotations */
-  float* tmp;              /* 4J: sampling scratch */
+  float* tmp;              /* 4J: crossfade sampling scratch, only for
+                              skeletons of more than SMGI_POSE_STACK_JOINTS
+                              joints (NULL otherwise: pose.c uses the
+                              stack) */
   float* snap;             /* 4J: upper-body snapshot for crossfades */
   float* wpos;             /* 3J: world joint positions of the pose */
   float* wrot;             /* 4J: world joint rotations of the pose */
@@ -204,6 +209,11 @@ int smgi_q_locate(const smg_character* ch, uint32_t k, uint32_t* entry,
 smg_result smgi_step(smg_character* ch, float dt);
 
 /* ---- pose.c ---- */
+/* Prefetch the pose buffers the step rewrites and the lower-body records
+ * it will sample. Called before planning: in a big crowd these lines were
+ * evicted since the character's last step, and the planner's work hides
+ * the fetches. A hint only (no effect on results). */
+void smgi_pose_prefetch(const smg_character* ch);
 void smgi_pose_compose(smg_character* ch);
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot);

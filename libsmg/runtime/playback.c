@@ -57,6 +57,7 @@ static void update_progress(smg_character* ch) {
 smg_result smgi_step(smg_character* ch, float dt) {
   const smgi_edge* edges = ch->graph->data.lower_edges;
   float frames = dt * ch->fps;
+  smgi_pose_prefetch(ch);
   /* keep the horizon planned; this step's frames are guaranteed whatever
    * the budget */
   smgi_plan(ch, SMGI_PLAN_BUDGET, frames);

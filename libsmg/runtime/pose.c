@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "character_internal.h"
+#include "pose_simd.h"
 
 void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
                         const unsigned char* rb, float t,
@@ -21,47 +22,91 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
   (set == SMGI_JOINTS_ALL ||                                          \
    (set == SMGI_JOINTS_UPPER) == (joints[j].body_part == SMG_BODY_UPPER))
   uint32_t j = 1;
-  while (j < J) {
 #if SMGI_QPACK_SSE
-    if (j + 4u <= J && WANTED(j) && WANTED(j + 1u) && WANTED(j + 2u) &&
-        WANTED(j + 3u)) {
-      smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * j,
-                           qb + SMGI_QPACK_BYTES * j, t, out + 4u * j);
-      j += 4u;
-    } else
-#endif
-    {
-      if (WANTED(j)) {
-        /* the same operations as one lane of smgi_pose_nlerp4_sse */
-        float ja[4], jb[4];
-        smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
-        smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
-        smgi_q_nlerp(ja, jb, t, out + 4u * j);
+  /* Every joint four at a time: the last group is moved back to end at
+   * J (rewriting a few joints with the same values), and a group that
+   * mixes wanted and unwanted joints goes through a scratch copy. Decoding
+   * an unwanted joint is harmless: its bytes are inside the record. */
+  if (J >= 5u) {
+    for (; j < J; j += 4u) {
+      const uint32_t base = j + 4u <= J ? j : J - 4u;
+      const unsigned want = (WANTED(base) ? 1u : 0u) |
+                            (WANTED(base + 1u) ? 2u : 0u) |
+                            (WANTED(base + 2u) ? 4u : 0u) |
+                            (WANTED(base + 3u) ? 8u : 0u);
+      if (want == 0u) continue;
+      if (want == 15u) {
+        smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
+                             qb + SMGI_QPACK_BYTES * base, t, out + 4u * base);
+        continue;
       }
-      ++j;
+      float q[16];
+      smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
+                           qb + SMGI_QPACK_BYTES * base, t, q);
+      for (uint32_t k = 0; k < 4u; ++k)
+        if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
     }
+    return;
+  }
+#endif
+  for (; j < J; ++j) {
+    if (!WANTED(j)) continue;
+    /* the same operations as one lane of smgi_pose_nlerp4_sse */
+    float ja[4], jb[4];
+    smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
+    smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
+    smgi_q_nlerp(ja, jb, t, out + 4u * j);
   }
 #undef WANTED
 }
 
+/* A queue entry's frame -> world transform with its trigonometry done:
+ * both sampled frames usually share one entry, so its sines and cosines
+ * are computed once per step instead of twice. */
+typedef struct placement {
+  smgi_xform2 M;
+  float c, s;   /* cos, sin of M.h (smgi_rot2) */
+  float yaw[4]; /* smgi_q_yaw(M.h) */
+} placement;
+
+static void placement_init(smgi_xform2 M, placement* pl) {
+  pl->M = M;
+  pl->c = cosf(M.h);
+  pl->s = sinf(M.h);
+  smgi_q_yaw(M.h, pl->yaw);
+}
+
+/* smgi_xf_point(pl->M, px, pz, ox, oz), same operations */
+static void placement_point(const placement* pl, float px, float pz,
+                            float* ox, float* oz) {
+  const float x = pl->c * px + pl->s * pz;
+  const float z = -pl->s * px + pl->c * pz;
+  *ox = pl->M.x + x;
+  *oz = pl->M.z + z;
+}
+
 /* World root position/rotation and ground placement of one lower frame. */
-static void place(const smg_graph* g, uint32_t frame, smgi_xform2 M,
+static void place(const smg_graph* g, uint32_t frame, const placement* pl,
                   float* pos, float* rot, float* gx, float* gz, float* gh) {
   const unsigned char* rec = smgi_graph_pose(g, frame);
-  float p[3], x, z, q[4], r0[4];
+  float p[3], x, z, r0[4];
   smgi_pose_root(rec, p);
-  smgi_xf_point(M, p[0], p[2], &x, &z);
+  placement_point(pl, p[0], p[2], &x, &z);
   pos[0] = x;
   pos[1] = p[1] - g->data.info->ground_height;
   pos[2] = z;
-  smgi_q_yaw(M.h, q);
   /* raw decode: the caller's nlerp normalises */
   smgi_quat_unpack_raw(smgi_pose_rot(rec, 0), r0);
-  smgi_q_mul(q, r0, rot);
+  smgi_q_mul(pl->yaw, r0, rot);
   const float* r = g->data.frames[frame].root2d;
-  smgi_xf_point(M, r[0], r[1], gx, gz);
-  *gh = M.h + r[2];
+  placement_point(pl, r[0], r[1], gx, gz);
+  *gh = pl->M.h + r[2];
 }
+
+/* Upper-body rotations are written straight into the pose unless a
+ * crossfade needs them apart; the scratch for that lives on the stack up
+ * to this many joints (ch->tmp is allocated only for bigger skeletons). */
+#define POSE_STACK_JOINTS SMGI_POSE_STACK_JOINTS
 
 void smgi_pose_compose(smg_character* ch) {
   const smg_graph* g = ch->graph;
@@ -74,17 +119,20 @@ void smgi_pose_compose(smg_character* ch) {
   float a = ch->t - (float)i0;
   a = smgi_clampf(a, 0.0f, 1.0f);
   uint32_t fa = e->first_frame + i0, fb = fa;
-  smgi_xform2 Mb = h->M;
+  placement pa_pl, pb_pl;
+  placement_init(h->M, &pa_pl);
+  const placement* plb = &pa_pl;
   if (i0 + 1u < e->frame_count) {
     fb = fa + 1u;
   } else if (ch->q_count > 1u) {
     const smgi_qentry* n = smgi_q_at(ch, 1);
     fb = edges[n->edge].first_frame;
-    Mb = n->M;
+    placement_init(n->M, &pb_pl);
+    plb = &pb_pl;
   }
   float pa[3], pb[3], ra[4], rb[4], gax, gaz, gah, gbx, gbz, gbh;
-  place(g, fa, h->M, pa, ra, &gax, &gaz, &gah);
-  place(g, fb, Mb, pb, rb, &gbx, &gbz, &gbh);
+  place(g, fa, &pa_pl, pa, ra, &gax, &gaz, &gah);
+  place(g, fb, plb, pb, rb, &gbx, &gbz, &gbh);
   for (int k = 0; k < 3; ++k) ch->root[k] = pa[k] + a * (pb[k] - pa[k]);
   smgi_q_nlerp(ra, rb, a, ch->rot);
   ch->ground[0] = gax + a * (gbx - gax);
@@ -105,13 +153,27 @@ void smgi_pose_compose(smg_character* ch) {
 
   /* upper body */
   if (ch->action == 0 && ch->fade >= 1.0f) return;
-  if (ch->action != 0) smgi_upper_sample(ch, ch->tmp);
   /* smoothstep keeps the crossfade's velocity continuous at both ends */
   float w = ch->fade >= 1.0f ? 1.0f : ch->fade * ch->fade * (3.0f - 2.0f * ch->fade);
+  const smgi_joint* joints = g->data.joints;
+  if (ch->action != 0 && w >= 1.0f) {
+    /* no crossfade: the action's upper body goes straight into the pose
+     * (the upper joints were not written above). Only when the spine-base
+     * correction lands on an upper joint too, as in every baked skeleton;
+     * otherwise the general path below keeps it off the pose. */
+    const uint32_t sb = g->data.info->spine_base_joint;
+    if (sb == 0 || sb >= J || joints[sb].body_part == SMG_BODY_UPPER) {
+      smgi_upper_sample(ch, ch->rot);
+      return;
+    }
+  }
+  float stack_tmp[4u * POSE_STACK_JOINTS];
+  float* tmp = J <= POSE_STACK_JOINTS ? stack_tmp : ch->tmp;
+  if (ch->action != 0) smgi_upper_sample(ch, tmp);
   for (uint32_t j = 1; j < J; ++j) {
-    if (g->data.joints[j].body_part != SMG_BODY_UPPER) continue;
+    if (joints[j].body_part != SMG_BODY_UPPER) continue;
     float* out = ch->rot + 4u * j;
-    const float* target = ch->action != 0 ? ch->tmp + 4u * j : out;
+    const float* target = ch->action != 0 ? tmp + 4u * j : out;
     if (w >= 1.0f) {
       memcpy(out, target, sizeof(float) * 4u);
     } else {
@@ -122,6 +184,55 @@ void smgi_pose_compose(smg_character* ch) {
   }
 }
 
+/* Start fetching what this step's pose will touch (see the header). */
+void smgi_pose_prefetch(const smg_character* ch) {
+#if defined(__GNUC__) || defined(__clang__)
+#define PREFETCH_RANGE(ptr, bytes, rw)                                   \
+  do {                                                                   \
+    const char* p_ = (const char*)(ptr);                                 \
+    const size_t n_ = (size_t)(bytes);                                   \
+    for (size_t o_ = 0; o_ < n_; o_ += 64u) __builtin_prefetch(p_ + o_, rw, 3); \
+    __builtin_prefetch(p_ + n_ - 1u, rw, 3);                             \
+  } while (0)
+  const uint32_t J = ch->joint_count;
+  /* The character itself (its fields are read one after the other, so
+   * each line would otherwise miss only when first used), then the pose
+   * and its world transforms, which are rewritten. character.c lays them
+   * out in that order in one block: one range then, else three. */
+  const char* c0 = (const char*)ch;
+  const char* c1 = (const char*)(ch->wrot + 4u * J);
+  if ((const char*)ch->rot > c0 && (const char*)ch->wpos > c0 &&
+      (const char*)ch->wrot > c0 && c1 > c0 &&
+      (size_t)(c1 - c0) <= sizeof *ch + sizeof(float) * 12u * J + 64u) {
+    PREFETCH_RANGE(c0, c1 - c0, 1);
+  } else {
+    PREFETCH_RANGE(ch, sizeof *ch, 1);
+    PREFETCH_RANGE(ch->rot, sizeof(float) * 4u * J, 1);
+    PREFETCH_RANGE(ch->wpos, sizeof(float) * 3u * J, 1);
+    PREFETCH_RANGE(ch->wrot, sizeof(float) * 4u * J, 1);
+  }
+  /* the queue entries the pose is placed with */
+  PREFETCH_RANGE(smgi_q_at_c(ch, 0), sizeof(smgi_qentry), 0);
+  if (ch->q_count > 1u) PREFETCH_RANGE(smgi_q_at_c(ch, 1), sizeof(smgi_qentry), 0);
+  /* the path around the character's projection (progress tracking) */
+  if (ch->seg + 2u < ch->path.count) {
+    PREFETCH_RANGE(ch->path.xz + 2u * ch->seg, sizeof(float) * 6u, 0);
+    PREFETCH_RANGE(ch->path.cum + ch->seg, sizeof(float) * 3u, 0);
+  }
+  /* the lower-body records the playhead is at and goes to next */
+  const smg_graph* g = ch->graph;
+  const smgi_qentry* h = smgi_q_at_c(ch, 0);
+  const smgi_edge* e = &g->data.lower_edges[h->edge];
+  const uint32_t i0 = (uint32_t)ch->t;
+  if (i0 + 1u < e->frame_count)
+    PREFETCH_RANGE(smgi_graph_pose(g, e->first_frame + i0),
+                   2u * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
+#undef PREFETCH_RANGE
+#else
+  (void)ch;
+#endif
+}
+
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot) {
   const uint32_t J = g->data.joint_count;
@@ -130,28 +241,50 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
   wpos[1] = root[1];
   wpos[2] = root[2];
   memcpy(wrot, rot, sizeof(float) * 4u);
+#if SMGI_POSE_SSE
+  /* The previous joint's transform stays in registers: in a skeleton most
+   * joints are their predecessor's child (chains), and the others reload
+   * their parent with the access sizes it was stored with. */
+  __m128 prev_rot = _mm_loadu_ps(rot), prev_pos = smgi_load3_sse(root);
   for (uint32_t j = 1; j < J; ++j) {
-    uint32_t p = (uint32_t)joints[j].parent;
-    float o[3];
-    smgi_q_rotate(wrot + 4u * p, joints[j].offset, o);
-    wpos[3u * j] = wpos[3u * p] + o[0];
-    wpos[3u * j + 1u] = wpos[3u * p + 1u] + o[1];
-    wpos[3u * j + 2u] = wpos[3u * p + 2u] + o[2];
-    smgi_q_mul(wrot + 4u * p, rot + 4u * j, wrot + 4u * j);
+    const uint32_t p = (uint32_t)joints[j].parent;
+    __m128 prot = prev_rot, ppos = prev_pos;
+    if (p != j - 1u) {
+      prot = _mm_loadu_ps(wrot + 4u * p);
+      ppos = smgi_load3_sse(wpos + 3u * p);
+    }
+    /* offset[3] is followed by mass_ratio: a 16-byte load stays inside
+     * the joint record, lane 3 is ignored */
+    prev_rot = smgi_fk_joint_sse(prot, ppos, _mm_loadu_ps(joints[j].offset),
+                                 rot + 4u * j, wpos + 3u * j, wrot + 4u * j,
+                                 &prev_pos);
   }
+#else
+  for (uint32_t j = 1; j < J; ++j) {
+    const uint32_t p = (uint32_t)joints[j].parent;
+    smgi_fk_joint_c(wrot + 4u * p, wpos + 3u * p, joints[j].offset,
+                    rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
+  }
+#endif
 }
 
 void smgi_fk_joints(smg_character* ch, const uint32_t* list,
                     uint32_t count) {
   const smgi_joint* joints = ch->graph->data.joints;
+  float* wpos = ch->wpos;
+  float* wrot = ch->wrot;
   for (uint32_t i = 0; i < count; ++i) {
-    uint32_t j = list[i];
-    uint32_t p = (uint32_t)joints[j].parent;
-    float o[3];
-    smgi_q_rotate(ch->wrot + 4u * p, joints[j].offset, o);
-    ch->wpos[3u * j] = ch->wpos[3u * p] + o[0];
-    ch->wpos[3u * j + 1u] = ch->wpos[3u * p + 1u] + o[1];
-    ch->wpos[3u * j + 2u] = ch->wpos[3u * p + 2u] + o[2];
-    smgi_q_mul(ch->wrot + 4u * p, ch->rot + 4u * j, ch->wrot + 4u * j);
+    const uint32_t j = list[i];
+    const uint32_t p = (uint32_t)joints[j].parent;
+#if SMGI_POSE_SSE
+    __m128 unused;
+    (void)smgi_fk_joint_sse(_mm_loadu_ps(wrot + 4u * p),
+                            smgi_load3_sse(wpos + 3u * p),
+                            _mm_loadu_ps(joints[j].offset), ch->rot + 4u * j,
+                            wpos + 3u * j, wrot + 4u * j, &unused);
+#else
+    smgi_fk_joint_c(wrot + 4u * p, wpos + 3u * p, joints[j].offset,
+                    ch->rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
+#endif
   }
 }

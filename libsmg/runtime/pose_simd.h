@@ -1,0 +1,220 @@
+/*
+ * pose_simd.h - the per-joint math of forward kinematics and of the
+ * model-matrix getter, in plain C and in SSE2.
+ *
+ * Why SSE: FK and the matrix conversion run for every joint of every
+ * character every step (31 joints in the CMU skeleton). Scalar, a joint
+ * cost ~125 instructions of FK and ~70 of matrix; four lanes at a time
+ * they cost about a third.
+ *
+ * Bit for bit: each SSE lane performs the plain version's operations in
+ * the same order (a - b is written as a + (-b), which IEEE makes exact,
+ * and multiplying by 2 stays a separate step), so both paths give the same
+ * floats and the SSE build's poses equal the reference the tests compute
+ * with rmath.h (tests/runtime/test_pose_simd.c). No contraction into FMA
+ * happens: the library is compiled as ISO C99, where GCC and Clang keep
+ * a * b + c as two roundings.
+ *
+ * SSE2 where it is part of the ABI (x86-64) unless built with
+ * -DSMGI_POSE_SSE=0; other builds use the plain versions.
+ */
+#ifndef SMG_POSE_SIMD_H
+#define SMG_POSE_SIMD_H
+
+#include "rmath.h"
+
+#ifndef SMGI_POSE_SSE
+#if defined(__SSE2__) || defined(_M_X64) || \
+    (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define SMGI_POSE_SSE 1
+#else
+#define SMGI_POSE_SSE 0
+#endif
+#endif
+#if SMGI_POSE_SSE
+#include <emmintrin.h>
+#endif
+
+/* ---- plain C (the reference) ------------------------------------------ */
+
+/* World transform of a joint from its parent's world rotation prot and
+ * position ppos, its rest offset and its local rotation lrot. */
+static inline void smgi_fk_joint_c(const float* prot, const float* ppos,
+                                   const float* offset, const float* lrot,
+                                   float* wpos, float* wrot) {
+  float o[3];
+  smgi_q_rotate(prot, offset, o);
+  wpos[0] = ppos[0] + o[0];
+  wpos[1] = ppos[1] + o[1];
+  wpos[2] = ppos[2] + o[2];
+  smgi_q_mul(prot, lrot, wrot);
+}
+
+/* Column-major 4x4 from rotation q and translation t. */
+static inline void smgi_mat_from_c(const float* q, const float* t, float* m) {
+  float x = q[0], y = q[1], z = q[2], w = q[3];
+  m[0] = 1.0f - 2.0f * (y * y + z * z);
+  m[1] = 2.0f * (x * y + z * w);
+  m[2] = 2.0f * (x * z - y * w);
+  m[3] = 0.0f;
+  m[4] = 2.0f * (x * y - z * w);
+  m[5] = 1.0f - 2.0f * (x * x + z * z);
+  m[6] = 2.0f * (y * z + x * w);
+  m[7] = 0.0f;
+  m[8] = 2.0f * (x * z + y * w);
+  m[9] = 2.0f * (y * z - x * w);
+  m[10] = 1.0f - 2.0f * (x * x + y * y);
+  m[11] = 0.0f;
+  m[12] = t[0];
+  m[13] = t[1];
+  m[14] = t[2];
+  m[15] = 1.0f;
+}
+
+/* ---- SSE2 ---------------------------------------------------------------- */
+#if SMGI_POSE_SSE
+
+/* lanes (a, b, c, d) of v. pshufd rather than shufps: it writes a new
+ * register, where shufps would overwrite its source and need a copy first
+ * (no three-operand forms before AVX) - most of these shuffles read a value
+ * that is used again. */
+#define SMGI_SHUF(v, a, b, c, d)                     \
+  _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), \
+                                     _MM_SHUFFLE((d), (c), (b), (a))))
+
+/* smgi_q_mul: the four products of each output component are summed in
+ * the scalar order; the minus signs are folded into b's shuffled copies. */
+static inline __m128 smgi_q_mul_sse(__m128 a, __m128 b) {
+  const __m128 s0 = _mm_setr_ps(0.0f, -0.0f, 0.0f, -0.0f);
+  const __m128 s1 = _mm_setr_ps(0.0f, 0.0f, -0.0f, -0.0f);
+  const __m128 s2 = _mm_setr_ps(-0.0f, 0.0f, 0.0f, -0.0f);
+  __m128 r = _mm_mul_ps(SMGI_SHUF(a, 3, 3, 3, 3), b);
+  r = _mm_add_ps(r, _mm_mul_ps(SMGI_SHUF(a, 0, 0, 0, 0),
+                               _mm_xor_ps(SMGI_SHUF(b, 3, 2, 1, 0), s0)));
+  r = _mm_add_ps(r, _mm_mul_ps(SMGI_SHUF(a, 1, 1, 1, 1),
+                               _mm_xor_ps(SMGI_SHUF(b, 2, 3, 0, 1), s1)));
+  r = _mm_add_ps(r, _mm_mul_ps(SMGI_SHUF(a, 2, 2, 2, 2),
+                               _mm_xor_ps(SMGI_SHUF(b, 1, 0, 3, 2), s2)));
+  return r;
+}
+
+/* smgi_q_rotate of v's lanes 0..2 (lane 3 of the result is meaningless). */
+static inline __m128 smgi_q_rotate_sse(__m128 q, __m128 v) {
+  const __m128 q_yzx = SMGI_SHUF(q, 1, 2, 0, 3);
+  const __m128 q_zxy = SMGI_SHUF(q, 2, 0, 1, 3);
+  const __m128 t = _mm_mul_ps(
+      _mm_set1_ps(2.0f),
+      _mm_sub_ps(_mm_mul_ps(q_yzx, SMGI_SHUF(v, 2, 0, 1, 3)),
+                 _mm_mul_ps(q_zxy, SMGI_SHUF(v, 1, 2, 0, 3))));
+  return _mm_add_ps(
+      _mm_add_ps(v, _mm_mul_ps(SMGI_SHUF(q, 3, 3, 3, 3), t)),
+      _mm_sub_ps(_mm_mul_ps(q_yzx, SMGI_SHUF(t, 2, 0, 1, 3)),
+                 _mm_mul_ps(q_zxy, SMGI_SHUF(t, 1, 2, 0, 3))));
+}
+
+/* Three floats out of lanes 0..2, nothing written beyond them. */
+static inline void smgi_store3_sse(float* p, __m128 v) {
+  _mm_storel_epi64((__m128i*)(void*)p, _mm_castps_si128(v));
+  _mm_store_ss(p + 2, _mm_movehl_ps(v, v));
+}
+
+/* Three floats into lanes 0..2 (lane 3 = 0), nothing read beyond them.
+ * Same access sizes as smgi_store3_sse, so a load right after the store
+ * (a child reading its parent) is forwarded instead of stalling. */
+static inline __m128 smgi_load3_sse(const float* p) {
+  const __m128 xy =
+      _mm_castsi128_ps(_mm_loadl_epi64((const __m128i*)(const void*)p));
+  return _mm_movelh_ps(xy, _mm_load_ss(p + 2));
+}
+
+/* smgi_fk_joint_c with the parent already in registers. ppos and offset
+ * lanes 0..2 are used; wpos gets exactly three floats. Returns the world
+ * rotation and sets *pos_out (lane 3 meaningless), so a caller walking a
+ * chain keeps them in registers. */
+static inline __m128 smgi_fk_joint_sse(__m128 prot, __m128 ppos,
+                                       __m128 offset, const float* lrot,
+                                       float* wpos, float* wrot,
+                                       __m128* pos_out) {
+  const __m128 p = _mm_add_ps(ppos, smgi_q_rotate_sse(prot, offset));
+  const __m128 r = smgi_q_mul_sse(prot, _mm_loadu_ps(lrot));
+  smgi_store3_sse(wpos, p);
+  _mm_storeu_ps(wrot, r);
+  *pos_out = p;
+  return r;
+}
+
+/* Four column-major matrices from four rotations (x,y,z,w each) and four
+ * translations (lanes 0..2), written to m[0 .. 64): smgi_mat_from_c lane by
+ * lane, with the products computed on transposed (x, y, z, w) vectors. */
+static inline void smgi_mat4_from_sse(__m128 q0, __m128 q1, __m128 q2,
+                                      __m128 q3, __m128 t0, __m128 t1,
+                                      __m128 t2, __m128 t3, float* m) {
+  const __m128 one = _mm_set1_ps(1.0f), two = _mm_set1_ps(2.0f);
+  const __m128 zero = _mm_setzero_ps();
+  _MM_TRANSPOSE4_PS(q0, q1, q2, q3); /* q0 = x of the four, q1 = y, ... */
+  const __m128 x = q0, y = q1, z = q2, w = q3;
+  const __m128 xx = _mm_mul_ps(x, x), yy = _mm_mul_ps(y, y),
+               zz = _mm_mul_ps(z, z), xy = _mm_mul_ps(x, y),
+               xz = _mm_mul_ps(x, z), yz = _mm_mul_ps(y, z),
+               xw = _mm_mul_ps(x, w), yw = _mm_mul_ps(y, w),
+               zw = _mm_mul_ps(z, w);
+  __m128 c0x = _mm_sub_ps(one, _mm_mul_ps(two, _mm_add_ps(yy, zz)));
+  __m128 c0y = _mm_mul_ps(two, _mm_add_ps(xy, zw));
+  __m128 c0z = _mm_mul_ps(two, _mm_sub_ps(xz, yw));
+  __m128 c0w = zero;
+  __m128 c1x = _mm_mul_ps(two, _mm_sub_ps(xy, zw));
+  __m128 c1y = _mm_sub_ps(one, _mm_mul_ps(two, _mm_add_ps(xx, zz)));
+  __m128 c1z = _mm_mul_ps(two, _mm_add_ps(yz, xw));
+  __m128 c1w = zero;
+  __m128 c2x = _mm_mul_ps(two, _mm_add_ps(xz, yw));
+  __m128 c2y = _mm_mul_ps(two, _mm_sub_ps(yz, xw));
+  __m128 c2z = _mm_sub_ps(one, _mm_mul_ps(two, _mm_add_ps(xx, yy)));
+  __m128 c2w = zero;
+  _MM_TRANSPOSE4_PS(c0x, c0y, c0z, c0w); /* now joint k's first column */
+  _MM_TRANSPOSE4_PS(c1x, c1y, c1z, c1w);
+  _MM_TRANSPOSE4_PS(c2x, c2y, c2z, c2w);
+  /* translation column: (x, y, z, 1) */
+  const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+  const __m128 w1 = _mm_setr_ps(0.0f, 0.0f, 0.0f, 1.0f);
+#define SMGI_MAT_STORE(k, a, b, c, t)                                    \
+  _mm_storeu_ps(m + 16 * (k), (a));                                      \
+  _mm_storeu_ps(m + 16 * (k) + 4, (b));                                  \
+  _mm_storeu_ps(m + 16 * (k) + 8, (c));                                  \
+  _mm_storeu_ps(m + 16 * (k) + 12, _mm_or_ps(_mm_and_ps((t), xyz), w1))
+  SMGI_MAT_STORE(0, c0x, c1x, c2x, t0);
+  SMGI_MAT_STORE(1, c0y, c1y, c2y, t1);
+  SMGI_MAT_STORE(2, c0z, c1z, c2z, t2);
+  SMGI_MAT_STORE(3, c0w, c1w, c2w, t3);
+#undef SMGI_MAT_STORE
+}
+
+/* World-space model matrices of four joints from their world rotations
+ * q[0 .. 16) and positions p[0 .. 12). */
+static inline void smgi_mat4_world_sse(const float* q, const float* p,
+                                       float* m) {
+  smgi_mat4_from_sse(_mm_loadu_ps(q), _mm_loadu_ps(q + 4),
+                     _mm_loadu_ps(q + 8), _mm_loadu_ps(q + 12),
+                     smgi_load3_sse(p), smgi_load3_sse(p + 3),
+                     smgi_load3_sse(p + 6), smgi_load3_sse(p + 9), m);
+}
+
+/* The same in character space: the inverse of the ground placement first
+ * (rotation yaw, translation -ground = (x, 0, z)). A separate function
+ * from the world one, which has no registers to spare for yaw and ground. */
+static inline void smgi_mat4_character_sse(const float* q, const float* p,
+                                           __m128 yaw, __m128 ground,
+                                           float* m) {
+  smgi_mat4_from_sse(
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q)),
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 4)),
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 8)),
+      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 12)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p), ground)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 3), ground)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 6), ground)),
+      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 9), ground)), m);
+}
+
+#endif /* SMGI_POSE_SSE */
+
+#endif /* SMG_POSE_SIMD_H */
