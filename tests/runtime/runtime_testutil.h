@@ -147,4 +147,18 @@ static inline int rt_pose_finite(const float* root, const float* rot,
   return 1;
 }
 
+/* The graph's skeleton as parent indices and rest offsets (J joints), for
+ * tests that rebuild world transforms from a reported local pose. */
+static inline void rt_skeleton(const smg_graph* g, uint32_t J,
+                               int32_t* parent, float (*offset)[3]) {
+  for (uint32_t j = 0; j < J; ++j) {
+    smg_joint_info ji;
+    memset(&ji, 0, sizeof ji);
+    ji.struct_size = sizeof ji;
+    assert_int_equal(smg_graph_get_joint(g, j, &ji), SMG_OK);
+    parent[j] = ji.parent;
+    memcpy(offset[j], ji.rest_offset, sizeof offset[j]);
+  }
+}
+
 #endif /* SMG_RUNTIME_TESTUTIL_H */

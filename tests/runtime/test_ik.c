@@ -45,16 +45,9 @@ static void test_cache_matches_fk(void** state) {
   assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
   const uint32_t J = info.joint_count;
   assert_true(J <= MAXJ);
-  int parent[MAXJ];
+  int32_t parent[MAXJ];
   float offset[MAXJ][3];
-  for (uint32_t j = 0; j < J; ++j) {
-    smg_joint_info ji;
-    memset(&ji, 0, sizeof ji);
-    ji.struct_size = sizeof ji;
-    assert_int_equal(smg_graph_get_joint(g, j, &ji), SMG_OK);
-    parent[j] = ji.parent;
-    memcpy(offset[j], ji.rest_offset, sizeof offset[j]);
-  }
+  rt_skeleton(g, J, parent, offset);
   uint32_t toe[2];
   assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
   assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);

@@ -127,14 +127,7 @@ static void test_getters_match_local_pose(void** state) {
   assert_true(J >= 2u && J <= MAXJ);
   int32_t parent[MAXJ];
   float offset[MAXJ][3];
-  for (uint32_t j = 0; j < J; ++j) {
-    smg_joint_info ji;
-    memset(&ji, 0, sizeof ji);
-    ji.struct_size = sizeof ji;
-    assert_int_equal(smg_graph_get_joint(g, j, &ji), SMG_OK);
-    parent[j] = ji.parent;
-    memcpy(offset[j], ji.rest_offset, sizeof offset[j]);
-  }
+  rt_skeleton(g, J, parent, offset);
   smg_character* ch = NULL;
   smg_character_desc d;
   memset(&d, 0, sizeof d);
