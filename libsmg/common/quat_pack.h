@@ -34,6 +34,7 @@
 #include <string.h>
 
 #include "smg_format.h"
+#include "simd.h"
 
 #define SMGI_QPACK_BYTES 6u
 /* How far from 1 a float quaternion's length may be to count as a unit
@@ -102,12 +103,7 @@ static inline void smgi_quat_unpack(const unsigned char* p, float* q) {
  * -DSMGI_QPACK_SSE=0; other builds sample joint by joint (pose.c), which
  * is the reference tests/core/test_quat_pack.c holds this to. */
 #ifndef SMGI_QPACK_SSE
-#if defined(__SSE2__) || defined(_M_X64) || \
-    (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#define SMGI_QPACK_SSE 1
-#else
-#define SMGI_QPACK_SSE 0
-#endif
+#define SMGI_QPACK_SSE SMGI_SSE2
 #endif
 #if SMGI_QPACK_SSE
 #include <emmintrin.h>

@@ -16,14 +16,10 @@
 #include <string.h>
 
 #include "character_internal.h"
+#include "simd.h"
 
 #ifndef IK_SSE /* -DIK_SSE=0 builds the plain C path */
-#if defined(__SSE__) || defined(_M_X64) || \
-    (defined(_M_IX86_FP) && _M_IX86_FP >= 1)
-#define IK_SSE 1
-#else
-#define IK_SSE 0
-#endif
+#define IK_SSE SMGI_SSE2
 #endif
 #if IK_SSE
 #include <xmmintrin.h>

@@ -23,13 +23,10 @@
 
 #include "rmath.h"
 
+#include "simd.h"
+
 #ifndef SMGI_POSE_SSE
-#if defined(__SSE2__) || defined(_M_X64) || \
-    (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#define SMGI_POSE_SSE 1
-#else
-#define SMGI_POSE_SSE 0
-#endif
+#define SMGI_POSE_SSE SMGI_SSE2
 #endif
 #if SMGI_POSE_SSE
 #include <emmintrin.h>

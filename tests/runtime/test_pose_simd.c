@@ -20,6 +20,7 @@
 
 #define MAXJ 64u
 
+#if SMGI_POSE_SSE
 static uint32_t rng = 12345u;
 static float frand(float lo, float hi) {
   return lo + (hi - lo) * (float)(smgi_xorshift(&rng) >> 8) * (1.0f / 16777216.0f);
@@ -35,6 +36,7 @@ static void rand_quat(float* q) {
   if (r == 1) q[1] = q[2] = -0.0f;
   if (r < 6) smgi_q_normalize(q);
 }
+#endif
 
 static void assert_same_bits(const float* a, const float* b, uint32_t n,
                              const char* what, uint32_t at) {
