@@ -2,9 +2,10 @@
 # libsmg/runtime. Only smg_* symbols are exported (-fvisibility=hidden plus
 # SMG_API on the public functions; `make test-symbols` checks it).
 #
-#   make install PREFIX=/usr/local DESTDIR=
+#   make install-runtime PREFIX=/usr/local DESTDIR=
 #     installs include/smg.h, libsmg.a, libsmg.so.0.1.0 with the
-#     libsmg.so.0 and libsmg.so links, and lib/pkgconfig/smg.pc.
+#     libsmg.so.0 and libsmg.so links, and lib/pkgconfig/smg.pc
+#     (`make install` adds the baker: mk/tools.mk).
 
 SONAME_MAJOR := 0
 LIB_VERSION := 0.1.0
@@ -16,6 +17,7 @@ LIBSMG_SO := $(BUILD)/libsmg.so.$(LIB_VERSION)
 
 LIBDIR ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
+BINDIR ?= $(PREFIX)/bin
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 
 ALL_TARGETS += $(LIBSMG_A) $(LIBSMG_SO)
@@ -34,8 +36,8 @@ $(LIBSMG_SO): $(LIB_OBJ)
 	ln -sf libsmg.so.$(LIB_VERSION) $(BUILD)/libsmg.so.$(SONAME_MAJOR)
 	ln -sf libsmg.so.$(SONAME_MAJOR) $(BUILD)/libsmg.so
 
-.PHONY: install
-install: $(LIBSMG_A) $(LIBSMG_SO)
+.PHONY: install-runtime
+install-runtime: $(LIBSMG_A) $(LIBSMG_SO)
 	install -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR)
 	install -m 644 include/smg.h $(DESTDIR)$(INCLUDEDIR)/smg.h
 	install -m 644 $(LIBSMG_A) $(DESTDIR)$(LIBDIR)/libsmg.a

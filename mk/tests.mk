@@ -47,7 +47,8 @@ test-header: $(LIBSMG_A)
 	@$(BUILD)/tests/abi/header_c
 	@$(BUILD)/tests/abi/header_cxx
 
-test-install: $(LIBSMG_A) $(LIBSMG_SO)
+# the baker parts come from later fragments (tools.mk, runtime.mk): by name
+test-install: $(LIBSMG_A) $(LIBSMG_SO) $(LIBSMG_BAKE_A) $(BUILD)/smg-bake $(BUILD)/smg-synth $(BUILD)/synthetic/README.txt
 	@sh tests/abi/check_install.sh "$(MAKE)" "$(BUILD)" "$(CC)"
 
 # Unit tests under AddressSanitizer + UBSan, in their own build tree.

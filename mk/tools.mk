@@ -37,3 +37,32 @@ $(CMU_BLOB): $(SMG_BAKE) data/cmu.manifest
 ifneq ($(wildcard $(SMG_SHARED)/mocap/cmu/09_12.bvh),)
 ALL_TARGETS += $(CMU_BLOB)
 endif
+
+# Installing the offline side for tools programmers: smg_bake.h,
+# libsmg_bake.a, lib/pkgconfig/smg-bake.pc and the smg-bake / smg-synth
+# command lines. The baker uses libsmg's blob writer and rotation codec,
+# which libsmg.so keeps hidden, so smg-bake.pc links libsmg.a by path (and
+# assimp, which the baker imports glTF/FBX with). `make install` is the
+# runtime (mk/lib.mk) plus this.
+.PHONY: install install-bake
+install: install-runtime install-bake
+
+install-bake: install-runtime $(LIBSMG_BAKE_A) $(SMG_BAKE) $(SMG_SYNTH)
+	install -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(BINDIR)
+	install -m 644 include/smg_bake.h $(DESTDIR)$(INCLUDEDIR)/smg_bake.h
+	install -m 644 $(LIBSMG_BAKE_A) $(DESTDIR)$(LIBDIR)/libsmg_bake.a
+	install -m 755 $(SMG_BAKE) $(DESTDIR)$(BINDIR)/smg-bake
+	install -m 755 $(SMG_SYNTH) $(DESTDIR)$(BINDIR)/smg-synth
+	printf '%s\n' \
+	  '# the baker needs libsmg internals that libsmg.so hides: link libsmg.a' \
+	  'prefix=$(PREFIX)' \
+	  'libdir=$(LIBDIR)' \
+	  'includedir=$(INCLUDEDIR)' \
+	  '' \
+	  'Name: smg-bake' \
+	  'Description: Splicing Motion Graphs offline baker (motion-capture clips to graph blobs)' \
+	  'Version: $(LIB_VERSION)' \
+	  'Libs: -L$${libdir} -lsmg_bake $${libdir}/libsmg.a -lassimp -lpthread -lm' \
+	  'Cflags: -I$${includedir}' \
+	  > $(DESTDIR)$(PKGCONFIGDIR)/smg-bake.pc
+	chmod 644 $(DESTDIR)$(PKGCONFIGDIR)/smg-bake.pc

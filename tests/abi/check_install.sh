@@ -2,8 +2,10 @@
 # check_install.sh MAKE BUILD CC
 # Installs libsmg into a temporary prefix, builds tests/abi/consumer.c
 # against the installed copy through pkg-config (shared and static) and
-# runs it; then checks a DESTDIR staged install lays out the same files
-# with the final prefix inside smg.pc.
+# runs it; builds tests/abi/bake_consumer.c through smg-bake.pc and bakes
+# a synthetic clip with it (and with the installed smg-bake); then checks a
+# DESTDIR staged install lays out the same files with the final prefix
+# inside both .pc files, and that install-runtime leaves the baker out.
 set -eu
 make_cmd=$1
 build=$2
@@ -45,10 +47,36 @@ $cc -std=c99 -Wall -Wextra -Wpedantic -Werror "$here/consumer.c" \
   fail "consumer does not link statically"
 "$tmp/consumer-static" >/dev/null || fail "consumer (static) failed"
 
+# the offline side: header, archive, smg-bake.pc and the command lines; a
+# tools program bakes a clip and steps the result through the runtime
+for f in "$tmp/usr/include/smg_bake.h" "$lib/libsmg_bake.a" \
+         "$lib/pkgconfig/smg-bake.pc" "$tmp/usr/bin/smg-bake" \
+         "$tmp/usr/bin/smg-synth"; do
+  [ -f "$f" ] || fail "missing $f"
+done
+bflags=$(pkg-config --cflags --libs smg-bake) || fail "pkg-config cannot find smg-bake"
+# shellcheck disable=SC2086
+$cc -std=c99 -Wall -Wextra -Wpedantic -Werror "$here/bake_consumer.c" $bflags \
+  -o "$tmp/bake_consumer" || fail "bake consumer does not build against the install"
+"$tmp/bake_consumer" "$build/synthetic/synthetic_walk_straight.bvh" ||
+  fail "bake consumer failed"
+"$tmp/usr/bin/smg-bake" -q --lower walk "$build/synthetic/synthetic_walk_straight.bvh" \
+  -o "$tmp/walk.smg" >/dev/null || fail "installed smg-bake cannot bake"
+"$tmp/usr/bin/smg-bake" --info "$tmp/walk.smg" >/dev/null ||
+  fail "installed smg-bake cannot read its blob"
+
 # DESTDIR staging keeps the real prefix in smg.pc
 $make_cmd --no-print-directory -s BUILD="$build" install PREFIX=/opt/smg DESTDIR="$tmp/stage" >/dev/null
 [ -f "$tmp/stage/opt/smg/include/smg.h" ] || fail "DESTDIR install missing header"
 [ -f "$tmp/stage/opt/smg/lib/libsmg.a" ] || fail "DESTDIR install missing libsmg.a"
+[ -f "$tmp/stage/opt/smg/bin/smg-bake" ] || fail "DESTDIR install missing smg-bake"
 grep -qx 'prefix=/opt/smg' "$tmp/stage/opt/smg/lib/pkgconfig/smg.pc" ||
   fail "smg.pc under DESTDIR does not say prefix=/opt/smg"
-echo "test-install: ok (install, pkg-config, shared + static consumer, DESTDIR)"
+grep -qx 'prefix=/opt/smg' "$tmp/stage/opt/smg/lib/pkgconfig/smg-bake.pc" ||
+  fail "smg-bake.pc under DESTDIR does not say prefix=/opt/smg"
+
+# the runtime alone, for engines that only load blobs
+$make_cmd --no-print-directory -s BUILD="$build" install-runtime PREFIX="$tmp/rt" >/dev/null
+[ -f "$tmp/rt/lib/libsmg.so.0.1.0" ] || fail "install-runtime missing libsmg.so"
+[ ! -e "$tmp/rt/include/smg_bake.h" ] || fail "install-runtime installed the baker"
+echo "test-install: ok (install, pkg-config, shared + static consumer, baker + bake round trip, runtime-only install, DESTDIR)"
