@@ -161,4 +161,33 @@ static inline void rt_skeleton(const smg_graph* g, uint32_t J,
   }
 }
 
+/* Reference forward kinematics, written out here (not rmath.h's) so the
+ * runtime's own FK and IK cache can be checked against it: world
+ * positions (3J) and rotations (4J) from a reported local pose. */
+static inline void rt_q_mul(const float* a, const float* b, float* o) {
+  o[0] = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];
+  o[1] = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];
+  o[2] = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];
+  o[3] = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
+}
+
+static inline void rt_fk(uint32_t J, const int32_t* parent,
+                         float (*offset)[3], const float* root,
+                         const float* rot, float* wpos, float* wrot) {
+  memcpy(wpos, root, sizeof(float) * 3u);
+  memcpy(wrot, rot, sizeof(float) * 4u);
+  for (uint32_t j = 1; j < J; ++j) {
+    const uint32_t p = (uint32_t)parent[j];
+    const float* q = wrot + 4u * p;
+    /* offset rotated by the parent: q * (offset, 0) * conj(q) */
+    const float v[4] = {offset[j][0], offset[j][1], offset[j][2], 0.0f};
+    const float qc[4] = {-q[0], -q[1], -q[2], q[3]};
+    float r[4], c[4];
+    rt_q_mul(q, v, r);
+    rt_q_mul(r, qc, c);
+    for (int k = 0; k < 3; ++k) wpos[3u * j + k] = wpos[3u * p + k] + c[k];
+    rt_q_mul(q, rot + 4u * j, wrot + 4u * j);
+  }
+}
+
 #endif /* SMG_RUNTIME_TESTUTIL_H */

@@ -104,23 +104,6 @@ static void free_big(big_clip* b) {
   smgb_clip_free(&b->src);
 }
 
-static void q_mul(const float* a, const float* b, float* o) {
-  o[0] = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];
-  o[1] = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];
-  o[2] = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];
-  o[3] = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
-}
-
-static void q_rotate(const float* q, const float* v, float* o) {
-  float r[4], c[4], p[4] = {v[0], v[1], v[2], 0.0f};
-  const float qc[4] = {-q[0], -q[1], -q[2], q[3]};
-  q_mul(q, p, r);
-  q_mul(r, qc, c);
-  o[0] = c[0];
-  o[1] = c[1];
-  o[2] = c[2];
-}
-
 static void test_big_skeleton(void** state) {
   (void)state;
   static big_clip clips[NCLIPS];
@@ -203,15 +186,7 @@ static void test_big_skeleton(void** state) {
     assert_int_equal(
         smg_character_get_model_matrices(ch, SMG_SPACE_WORLD, mats, J),
         SMG_OK);
-    memcpy(wpos, root, sizeof root);
-    memcpy(wrot, rot, sizeof(float) * 4u);
-    for (uint32_t j = 1; j < J; ++j) {
-      float o[3];
-      const uint32_t p = (uint32_t)parent[j];
-      q_rotate(wrot + 4u * p, offset[j], o);
-      for (int k = 0; k < 3; ++k) wpos[3u * j + k] = wpos[3u * p + k] + o[k];
-      q_mul(wrot + 4u * p, rot + 4u * j, wrot + 4u * j);
-    }
+    rt_fk(J, parent, offset, root, rot, wpos, wrot);
     for (uint32_t j = 0; j < J; ++j)
       for (int k = 0; k < 3; ++k) {
         float dp = fabsf(mats[16u * j + 12u + (uint32_t)k] - wpos[3u * j + k]);

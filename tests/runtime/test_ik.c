@@ -18,23 +18,6 @@
 #define DT (1.0f / 60.0f)
 #define MAXJ 64
 
-static void q_mul(const float* a, const float* b, float* o) {
-  o[0] = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];
-  o[1] = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];
-  o[2] = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];
-  o[3] = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
-}
-
-static void q_rotate(const float* q, const float* v, float* o) {
-  float r[4], c[4], p[4] = {v[0], v[1], v[2], 0.0f};
-  const float qc[4] = {-q[0], -q[1], -q[2], q[3]};
-  q_mul(q, p, r);
-  q_mul(r, qc, c);
-  o[0] = c[0];
-  o[1] = c[1];
-  o[2] = c[2];
-}
-
 static void test_cache_matches_fk(void** state) {
   (void)state;
   smg_graph* g = rt_default_graph();
@@ -75,15 +58,7 @@ static void test_cache_matches_fk(void** state) {
     assert_int_equal(
         smg_character_get_model_matrices(ch, SMG_SPACE_WORLD, mats, J),
         SMG_OK);
-    memcpy(wpos, root, sizeof(float) * 3u);
-    memcpy(wrot, rot, sizeof(float) * 4u);
-    for (uint32_t j = 1; j < J; ++j) {
-      float o[3];
-      uint32_t p = (uint32_t)parent[j];
-      q_rotate(wrot + 4u * p, offset[j], o);
-      for (int k = 0; k < 3; ++k) wpos[3u * j + k] = wpos[3u * p + k] + o[k];
-      q_mul(wrot + 4u * p, rot + 4u * j, wrot + 4u * j);
-    }
+    rt_fk(J, parent, offset, root, rot, wpos, wrot);
     for (uint32_t j = 0; j < J; ++j) {
       const float* m = mats + 16u * j;
       const float *q = wrot + 4u * j, x = q[0], y = q[1], z = q[2], w = q[3];
@@ -116,9 +91,60 @@ static void test_cache_matches_fk(void** state) {
   smg_graph_destroy(g);
 }
 
+/* A blob whose left hip, knee and ankle are valid joints but not a parent
+ * chain (its knee is the right knee): that leg gets no IK at all - its
+ * joints match a character with IK off bit for bit - while the right leg
+ * is still corrected, and nothing crashes. */
+static void test_leg_not_a_chain(void** state) {
+  (void)state;
+  fixture_graph* f = fixture_graph_new();
+  assert_non_null(f);
+  f->info.left_leg[1] = f->info.right_leg[1];
+  void* blob = NULL;
+  size_t size = 0;
+  assert_int_equal(smgi_blob_write(&f->data, NULL, &blob, &size, NULL, 0),
+                   SMG_OK);
+  fixture_graph_delete(f);
+  smg_graph* g = NULL;
+  assert_int_equal(smg_graph_load_memory(blob, size, NULL, &g), SMG_OK);
+  smg_character* ch[2] = {NULL, NULL};
+  for (int i = 0; i < 2; ++i) {
+    smg_character_desc d;
+    memset(&d, 0, sizeof d);
+    d.struct_size = sizeof d;
+    d.flags = i ? SMG_CHARACTER_NO_IK : 0u;
+    assert_int_equal(smg_character_create(g, &d, &ch[i]), SMG_OK);
+    float xz[2 * 64];
+    uint32_t n = rt_turn_r(xz, 4.0f, 6.0f, 1, 3.0f);
+    assert_int_equal(smg_character_set_path(ch[i], xz, n), SMG_OK);
+  }
+  const uint32_t J = FIXTURE_JOINTS, left[3] = {2, 3, 4}, right_hip = 7;
+  float root[2][3], rot[2][4 * MAXJ];
+  int right_corrected = 0;
+  for (int s = 0; s < 300; ++s) {
+    for (int i = 0; i < 2; ++i) {
+      assert_int_equal(smg_character_step(ch[i], DT), SMG_OK);
+      assert_int_equal(smg_character_get_local_pose(ch[i], root[i], rot[i], J),
+                       SMG_OK);
+      assert_true(rt_pose_finite(root[i], rot[i], J));
+    }
+    for (int k = 0; k < 3; ++k)
+      assert_memory_equal(rot[0] + 4u * left[k], rot[1] + 4u * left[k],
+                          sizeof(float) * 4u);
+    if (memcmp(rot[0] + 4u * right_hip, rot[1] + 4u * right_hip,
+               sizeof(float) * 4u) != 0)
+      right_corrected = 1;
+  }
+  assert_true(right_corrected);
+  for (int i = 0; i < 2; ++i) smg_character_destroy(ch[i]);
+  smg_graph_destroy(g);
+  smgi_blob_free(blob, NULL);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_cache_matches_fk),
+      cmocka_unit_test(test_leg_not_a_chain),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
