@@ -25,8 +25,10 @@ libglx-mesa0      # GLX for the above
 xvfb              # headless X server for demo/Godot tests
 xauth             # xvfb-run
 mmdebstrap        # Godot binding: builds the cached Debian sid root with Godot 4.6
-python3           # Godot binding: generates method-bind hashes from extension_api.json
+python3           # Godot binding: method-bind hashes; C# test: smg.h layout generator
 assimp-testmodels # baker tests: real FBX/glTF files (tests skip without it)
+mono-mcs          # Unity binding: C# compiler for make test-csharp / bench-csharp
+mono-runtime      # Unity binding: runs the C# tests against libsmg.so
 '
 
 set -eu

@@ -1,0 +1,162 @@
+// Blittable mirrors of the public structs of include/smg.h, field for field
+// and in the same order (C name snake_case -> C# PascalCase; float[3] ->
+// SmgFloat3; pointers and function pointers -> IntPtr). The C# test compares
+// every size and offset with the C compiler's, so a drift fails `make test`.
+// New C fields go at the end of the C struct: add them at the end here too.
+using System;
+using System.Runtime.InteropServices;
+
+namespace Smg
+{
+    /// <summary>Three floats (x, y, z): a C float[3].</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgFloat3
+    {
+        public float X, Y, Z;
+
+        public SmgFloat3(float x, float y, float z)
+        {
+            X = x;
+            Y = y;
+            Z = z;
+        }
+    }
+
+    /// <summary>smg_allocator: native function pointers. Managed code sets
+    /// these through SmgGraphOptions / SmgCharacter.Create rather than by
+    /// hand.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgAllocator
+    {
+        public IntPtr Alloc;
+        public IntPtr Free;
+        public IntPtr User;
+    }
+
+    /// <summary>smg_logger.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgLogger
+    {
+        public IntPtr Func;
+        public IntPtr User;
+    }
+
+    /// <summary>smg_graph_desc.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgGraphDesc
+    {
+        public uint StructSize;
+        public SmgGraphFlags Flags;
+        public SmgAllocator Allocator;
+        public SmgLogger Logger;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgGraphDesc));
+
+        /// <summary>All defaults, StructSize set.</summary>
+        public static SmgGraphDesc Create()
+        {
+            return new SmgGraphDesc { StructSize = Size };
+        }
+    }
+
+    /// <summary>smg_graph_info.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgGraphInfo
+    {
+        public uint StructSize;
+        public uint FormatVersion;
+        public uint JointCount;
+        public uint StyleCount;
+        public uint ActionCount;
+        public uint FrameCount;
+        public uint LowerNodeCount;
+        public uint LowerEdgeCount;
+        public uint UpperNodeCount;
+        public uint UpperEdgeCount;
+        public uint SpliceCount;
+        public uint CharacterCount;
+        public float FrameRate;
+        public float Reserved0;
+        public ulong BlobSize;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgGraphInfo));
+
+        public static SmgGraphInfo Create()
+        {
+            return new SmgGraphInfo { StructSize = Size };
+        }
+    }
+
+    /// <summary>smg_joint_info. Name points into the graph (UTF-8, valid
+    /// while the graph lives); SmgGraph.GetJoint returns it as a string.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgJointInfo
+    {
+        public uint StructSize;
+        public int Parent;
+        public IntPtr Name;
+        public SmgFloat3 RestOffset;
+        public SmgBodyPart BodyPart;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgJointInfo));
+
+        public static SmgJointInfo Create()
+        {
+            return new SmgJointInfo { StructSize = Size };
+        }
+    }
+
+    /// <summary>smg_character_desc: zero fields mean the documented
+    /// defaults.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgCharacterDesc
+    {
+        public uint StructSize;
+        public SmgCharacterFlags Flags;
+        public uint InitialStyle;
+        public uint InitialAction;
+        public uint PathCapacity;
+        public uint ConstraintCapacity;
+        public uint Seed;
+        public uint Reserved0;
+        public SmgFloat3 Position;
+        public float Heading;
+        public float Horizon;
+        public float ErrorThreshold;
+        public SmgAllocator Allocator;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgCharacterDesc));
+
+        /// <summary>All defaults, StructSize set.</summary>
+        public static SmgCharacterDesc Create()
+        {
+            return new SmgCharacterDesc { StructSize = Size };
+        }
+    }
+
+    /// <summary>smg_character_state.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgCharacterState
+    {
+        public uint StructSize;
+        public SmgStateFlags Flags;
+        public uint Style;
+        public uint Action;
+        public SmgFloat3 Position;
+        public float Heading;
+        public float PathDistance;
+        public float PathError;
+        public double Time;
+        public uint LowerNode;
+        public uint UpperNode;
+        public float SyncRate;
+        public float Reserved0;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgCharacterState));
+
+        public static SmgCharacterState Create()
+        {
+            return new SmgCharacterState { StructSize = Size };
+        }
+    }
+}

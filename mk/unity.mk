@@ -1,0 +1,78 @@
+# Unity package (bindings/unity): the C# interop layer tested outside Unity
+# with Debian's mono (mcs, C# 7.2 with Span<T>), against the real
+# libsmg.so in $(BUILD) (DllImport("smg") finds $(BUILD)/libsmg.so through
+# LD_LIBRARY_PATH).
+#
+#   make test-csharp     (part of `make test`) struct layouts and constants
+#                        vs the C compiler, every exported smg_ function
+#                        declared, 10^4 frames bit for bit vs the C API on
+#                        build/default.smg (and build/cmu.smg when ../shared
+#                        has the CMU clips), error paths, handle lifetime
+#                        under GC churn, no allocation per frame
+#   make bench-csharp    (part of `make bench`) managed step + pose per
+#                        character vs the same calls from C, medians, ratio
+#   make unity-package   puts the Linux libsmg.so into the package's
+#                        Plugins/Linux/x86_64 (git-ignored) for Unity
+
+MCS ?= mcs
+MONO ?= mono
+MCS_FLAGS := -langversion:7.2 -unsafe -warnaserror -nologo
+UNITY_DIR := bindings/unity
+CSHARP_BUILD := $(BUILD)/csharp
+CSHARP_INTEROP_SRC := $(sort $(wildcard $(UNITY_DIR)/Runtime/Interop/*.cs))
+CSHARP_INTEROP_DLL := $(CSHARP_BUILD)/Smg.Interop.dll
+CSHARP_TEST_EXE := $(CSHARP_BUILD)/smg-csharp-tests.exe
+CSHARP_BENCH_EXE := $(CSHARP_BUILD)/bench-csharp.exe
+CSHARP_LAYOUT := $(CSHARP_BUILD)/layout
+CSHARP_REPLAY := $(CSHARP_BUILD)/c_replay
+CSHARP_BENCH_C := $(CSHARP_BUILD)/bench_csharp_c
+CSHARP_FRAMES ?= 10000
+CSHARP_RUN := LD_LIBRARY_PATH=$(abspath $(BUILD)) MONO_PATH=$(abspath $(CSHARP_BUILD)) $(MONO) --debug
+# the CMU blob joins the checks when ../shared has the clips (mk/tools.mk)
+CSHARP_BLOBS := $(DEFAULT_BLOB) $(if $(wildcard $(SMG_SHARED)/mocap/cmu/09_12.bvh),$(CMU_BLOB))
+
+TEST_TARGETS += test-csharp
+BENCH_TARGETS += bench-csharp
+
+$(CSHARP_INTEROP_DLL): $(CSHARP_INTEROP_SRC)
+	@mkdir -p $(dir $@)
+	$(MCS) $(MCS_FLAGS) -target:library -out:$@ $(CSHARP_INTEROP_SRC)
+
+$(CSHARP_TEST_EXE): $(sort $(wildcard tests/csharp/*.cs)) $(CSHARP_INTEROP_DLL)
+	$(MCS) $(MCS_FLAGS) -r:$(CSHARP_INTEROP_DLL) -r:System.Core.dll -out:$@ $(filter %.cs,$^)
+
+$(CSHARP_BENCH_EXE): bench/BenchCsharp.cs $(CSHARP_INTEROP_DLL)
+	$(MCS) $(MCS_FLAGS) -r:$(CSHARP_INTEROP_DLL) -out:$@ $<
+
+# smg.h as the C compiler lays it out (tests/csharp/gen_c_layout.py)
+$(CSHARP_LAYOUT).c: include/smg.h tests/csharp/gen_c_layout.py
+	@mkdir -p $(dir $@)
+	python3 tests/csharp/gen_c_layout.py include/smg.h > $@
+
+$(CSHARP_LAYOUT): $(CSHARP_LAYOUT).c include/smg.h
+	$(CC) $(CSTD) $(WARN) -Iinclude $< -o $@
+
+# the C helpers link the same shared library the C# code loads
+$(CSHARP_REPLAY): tests/csharp/c_replay.c include/smg.h $(LIBSMG_SO)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iinclude $< -o $@ $(LIBSMG_SO)
+
+$(CSHARP_BENCH_C): bench/bench_csharp_c.c include/smg.h $(LIBSMG_SO)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) $(CPPFLAGS_COMMON) $< -o $@ $(LIBSMG_SO)
+
+.PHONY: test-csharp bench-csharp unity-package
+test-csharp: $(CSHARP_TEST_EXE) $(CSHARP_LAYOUT) $(CSHARP_REPLAY) $(LIBSMG_SO) $(CSHARP_BLOBS)
+	@$(if $(filter $(CMU_BLOB),$(CSHARP_BLOBS)),,echo "test-csharp: $(SMG_SHARED)/mocap/cmu absent: CMU replay skipped")
+	@$(CSHARP_LAYOUT) > $(CSHARP_BUILD)/layout.txt
+	@nm -D --defined-only $(LIBSMG_SO) | awk '$$2 == "T" {print $$3}' > $(CSHARP_BUILD)/exports.txt
+	$(CSHARP_RUN) $(CSHARP_TEST_EXE) --layout $(CSHARP_BUILD)/layout.txt --exports $(CSHARP_BUILD)/exports.txt \
+	  --replay $(CSHARP_REPLAY) --frames $(CSHARP_FRAMES) $(addprefix --blob ,$(CSHARP_BLOBS))
+
+bench-csharp: $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) $(LIBSMG_SO) $(DEFAULT_BLOB)
+	$(CSHARP_RUN) $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) 7 $(DEFAULT_BLOB) $(wildcard $(CMU_BLOB))
+
+unity-package: $(LIBSMG_SO)
+	@mkdir -p $(UNITY_DIR)/Plugins/Linux/x86_64
+	cp $(LIBSMG_SO) $(UNITY_DIR)/Plugins/Linux/x86_64/libsmg.so
+	@echo "unity-package: $(UNITY_DIR) is ready to add from disk (Linux plugin only; README.md: other platforms)"
