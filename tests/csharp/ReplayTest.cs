@@ -36,9 +36,16 @@ namespace Smg.Tests
             };
             using (Process c = Process.Start(start))
             {
-                var test = new ReplayTest(c.StandardOutput.BaseStream);
-                test.Replay(blob, frames);
-                Check.Equal(-1, c.StandardOutput.BaseStream.ReadByte(), "end of the C stream");
+                try
+                {
+                    new ReplayTest(c.StandardOutput.BaseStream).Replay(blob, frames);
+                    Check.Equal(-1, c.StandardOutput.BaseStream.ReadByte(), "end of the C stream");
+                }
+                catch (Exception)
+                {
+                    c.Kill(); // it would wait on the pipe we stopped reading
+                    throw;
+                }
                 c.WaitForExit();
                 Check.Equal(0, c.ExitCode, "c_replay exit code");
             }

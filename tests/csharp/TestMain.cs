@@ -74,6 +74,7 @@ namespace Smg.Tests
             Run("graph disposed before its characters outlives them", () => LifetimeTest.GraphOutlivesCharacters(first));
             Run("failing and throwing hooks", () => LifetimeTest.FailingHooks(first));
             Run("handles released under GC churn, nothing leaked", () => LifetimeTest.GcChurn(first));
+            Run("one character per thread, raw pointers, same poses as serial", () => ThreadTest.ParallelMatchesSerial(first));
             Run("step and pose reads allocate no managed memory", () => LifetimeTest.NoAllocationPerFrame(first));
 
             Console.WriteLine("test-csharp: " + passed + " passed, " + failed + " failed");

@@ -63,6 +63,16 @@ namespace Smg
             }
         }
 
+        /// <summary>The native pointer for SmgNativeRaw (jobs); the
+        /// character stays alive until the lease is disposed, even if it is
+        /// disposed meanwhile. One thread at a time per character still.</summary>
+        public SmgCharacterPointer AcquirePointer()
+        {
+            bool added = false;
+            DangerousAddRef(ref added); // ObjectDisposedException when disposed
+            return new SmgCharacterPointer(DangerousGetHandle(), this);
+        }
+
         protected override bool ReleaseHandle()
         {
             if (SmgNative.smg_character_destroy(handle) != SmgResult.Ok)
