@@ -8,19 +8,30 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#ifdef _WIN32
+#include <malloc.h> /* _aligned_malloc: Windows has no posix_memalign */
+#endif
 
 static void* default_alloc(size_t size, size_t align, void* user) {
   void* p = NULL;
   (void)user;
   /* posix_memalign needs a multiple of sizeof(void*). */
   if (align < sizeof(void*)) align = sizeof(void*);
+#ifdef _WIN32
+  p = _aligned_malloc(size ? size : 1, align);
+#else
   if (posix_memalign(&p, align, size ? size : 1) != 0) return NULL;
+#endif
   return p;
 }
 
 static void default_free(void* ptr, void* user) {
   (void)user;
+#ifdef _WIN32
+  _aligned_free(ptr);
+#else
   free(ptr);
+#endif
 }
 
 smg_result smgi_allocator_resolve(const smg_allocator* in,
