@@ -8,7 +8,8 @@
 #                        declared, 10^4 frames bit for bit vs the C API on
 #                        build/default.smg (and build/cmu.smg when ../shared
 #                        has the CMU clips), error paths, handle lifetime
-#                        under GC churn, no allocation per frame
+#                        under GC churn, threads, no allocation per frame;
+#                        the Unity layer and sample type-checked
 #   make bench-csharp    (part of `make bench`) managed step + pose per
 #                        character vs the same calls from C, medians, ratio
 #   make unity-package   puts the Linux libsmg.so into the package's
@@ -16,7 +17,8 @@
 
 MCS ?= mcs
 MONO ?= mono
-MCS_FLAGS := -langversion:7.2 -unsafe -warnaserror -nologo
+# -unsafe only where the asmdef allows it (Smg.Interop) and for the tests
+MCS_FLAGS := -langversion:7.2 -warnaserror -nologo
 UNITY_DIR := bindings/unity
 CSHARP_BUILD := $(BUILD)/csharp
 CSHARP_INTEROP_SRC := $(sort $(wildcard $(UNITY_DIR)/Runtime/Interop/*.cs))
@@ -36,13 +38,32 @@ BENCH_TARGETS += bench-csharp
 
 $(CSHARP_INTEROP_DLL): $(CSHARP_INTEROP_SRC)
 	@mkdir -p $(dir $@)
-	$(MCS) $(MCS_FLAGS) -target:library -out:$@ $(CSHARP_INTEROP_SRC)
+	$(MCS) $(MCS_FLAGS) -unsafe -target:library -out:$@ $(CSHARP_INTEROP_SRC)
+
+# The Unity layer and the sample, type-checked against a declared surface
+# of the UnityEngine members they use (tests/csharp/unity-surface: extern
+# declarations with Unity's signatures, no behaviour; Unity is not here).
+CSHARP_UNITY_SURFACE := $(CSHARP_BUILD)/unity-surface/UnityEngine.dll
+CSHARP_UNITY_DLL := $(CSHARP_BUILD)/unity-surface/Smg.Unity.dll
+CSHARP_SAMPLE_DLL := $(CSHARP_BUILD)/unity-surface/Smg.Samples.PathFollower.dll
+UNITY_SAMPLE_SRC := $(sort $(wildcard $(UNITY_DIR)/Samples~/PathFollower/*.cs))
+
+$(CSHARP_UNITY_SURFACE): tests/csharp/unity-surface/UnityEngineSurface.cs
+	@mkdir -p $(dir $@)
+	$(MCS) $(MCS_FLAGS) -nowarn:626,824 -target:library -out:$@ $<
+
+$(CSHARP_UNITY_DLL): $(sort $(wildcard $(UNITY_DIR)/Runtime/Unity/*.cs)) $(CSHARP_INTEROP_DLL) $(CSHARP_UNITY_SURFACE)
+	$(MCS) $(MCS_FLAGS) -target:library -r:$(CSHARP_INTEROP_DLL) -r:$(CSHARP_UNITY_SURFACE) -out:$@ $(filter %.cs,$^)
+
+$(CSHARP_SAMPLE_DLL): $(UNITY_SAMPLE_SRC) $(CSHARP_UNITY_DLL)
+	$(MCS) $(MCS_FLAGS) -target:library -r:$(CSHARP_INTEROP_DLL) -r:$(CSHARP_UNITY_SURFACE) -r:$(CSHARP_UNITY_DLL) \
+	  -out:$@ $(UNITY_SAMPLE_SRC)
 
 $(CSHARP_TEST_EXE): $(sort $(wildcard tests/csharp/*.cs)) $(CSHARP_INTEROP_DLL)
-	$(MCS) $(MCS_FLAGS) -r:$(CSHARP_INTEROP_DLL) -r:System.Core.dll -out:$@ $(filter %.cs,$^)
+	$(MCS) $(MCS_FLAGS) -unsafe -r:$(CSHARP_INTEROP_DLL) -r:System.Core.dll -out:$@ $(filter %.cs,$^)
 
 $(CSHARP_BENCH_EXE): bench/BenchCsharp.cs $(CSHARP_INTEROP_DLL)
-	$(MCS) $(MCS_FLAGS) -r:$(CSHARP_INTEROP_DLL) -out:$@ $<
+	$(MCS) $(MCS_FLAGS) -unsafe -r:$(CSHARP_INTEROP_DLL) -out:$@ $<
 
 # smg.h as the C compiler lays it out (tests/csharp/gen_c_layout.py)
 $(CSHARP_LAYOUT).c: include/smg.h tests/csharp/gen_c_layout.py
@@ -62,7 +83,7 @@ $(CSHARP_BENCH_C): bench/bench_csharp_c.c include/smg.h $(LIBSMG_SO)
 	$(CC) $(CSTD) $(WARN) $(OPT) $(CPPFLAGS_COMMON) $< -o $@ $(LIBSMG_SO)
 
 .PHONY: test-csharp bench-csharp unity-package
-test-csharp: $(CSHARP_TEST_EXE) $(CSHARP_LAYOUT) $(CSHARP_REPLAY) $(LIBSMG_SO) $(CSHARP_BLOBS)
+test-csharp: $(CSHARP_SAMPLE_DLL) $(CSHARP_TEST_EXE) $(CSHARP_LAYOUT) $(CSHARP_REPLAY) $(LIBSMG_SO) $(CSHARP_BLOBS)
 	@$(if $(filter $(CMU_BLOB),$(CSHARP_BLOBS)),,echo "test-csharp: $(SMG_SHARED)/mocap/cmu absent: CMU replay skipped")
 	@$(CSHARP_LAYOUT) > $(CSHARP_BUILD)/layout.txt
 	@nm -D --defined-only $(LIBSMG_SO) | awk '$$2 == "T" {print $$3}' > $(CSHARP_BUILD)/exports.txt

@@ -1,0 +1,176 @@
+// Compile-time surface of UnityEngine for `make test-csharp`: declarations,
+// with the signatures of Unity's scripting reference, of exactly the
+// members bindings/unity/Runtime/Unity and the sample use, and nothing
+// else. Every member is `extern` (no body, no behaviour): the assembly only
+// lets mono's compiler type-check the Unity layer here, where Unity is not
+// installed. It proves the layer compiles against these signatures, not
+// that it behaves in Unity. A member the layer starts to use must be added
+// here, with Unity's exact signature.
+using System;
+
+namespace UnityEngine
+{
+    public class Object
+    {
+        public extern string name { get; set; }
+        public extern int GetInstanceID();
+    }
+
+    public class Component : Object
+    {
+        public extern Transform transform { get; }
+        public extern T[] GetComponentsInChildren<T>(bool includeInactive);
+    }
+
+    public class Behaviour : Component
+    {
+    }
+
+    public class MonoBehaviour : Behaviour
+    {
+    }
+
+    public class Transform : Component
+    {
+        public extern Vector3 position { get; set; }
+        public extern Quaternion rotation { get; set; }
+        public extern Vector3 eulerAngles { get; set; }
+        public extern void SetPositionAndRotation(Vector3 position, Quaternion rotation);
+        public extern Vector3 TransformPoint(Vector3 position);
+    }
+
+    public class TextAsset : Object
+    {
+        public extern byte[] bytes { get; }
+    }
+
+    public class Renderer : Component
+    {
+    }
+
+    public class LineRenderer : Renderer
+    {
+        public extern int positionCount { get; set; }
+        public extern bool useWorldSpace { get; set; }
+        public extern int GetPositions(Vector3[] positions);
+        public extern Vector3 GetPosition(int index);
+        public extern void SetPosition(int index, Vector3 position);
+    }
+
+    public class Camera : Behaviour
+    {
+        public static extern Camera main { get; }
+        public extern Ray ScreenPointToRay(Vector3 pos);
+    }
+
+    public struct Vector2
+    {
+        public float x, y;
+        public extern Vector2(float x, float y);
+        public extern float magnitude { get; }
+    }
+
+    public struct Vector3
+    {
+        public float x, y, z;
+        public extern Vector3(float x, float y, float z);
+        public static extern Vector3 Lerp(Vector3 a, Vector3 b, float t);
+        public static extern float Distance(Vector3 a, Vector3 b);
+        public static extern Vector3 up { get; }
+        public static extern Vector3 operator +(Vector3 a, Vector3 b);
+    }
+
+    public struct Quaternion
+    {
+        public float x, y, z, w;
+        public extern Quaternion(float x, float y, float z, float w);
+        public static extern Quaternion Inverse(Quaternion rotation);
+        public static extern Quaternion Euler(float x, float y, float z);
+        public static extern Quaternion operator *(Quaternion lhs, Quaternion rhs);
+    }
+
+    public struct Color
+    {
+        public static extern Color cyan { get; }
+        public static extern Color magenta { get; }
+    }
+
+    public struct Ray
+    {
+        public extern Vector3 GetPoint(float distance);
+    }
+
+    public struct Plane
+    {
+        public extern Plane(Vector3 inNormal, Vector3 inPoint);
+        public extern bool Raycast(Ray ray, out float enter);
+    }
+
+    public struct Mathf
+    {
+        public const float Deg2Rad = 0.0174532924F;
+        public const float Rad2Deg = 57.29578F;
+        public static extern float Clamp(float value, float min, float max);
+        public static extern int Max(int a, int b);
+        public static extern float Min(float a, float b);
+        public static extern float Sin(float f);
+        public static extern int NextPowerOfTwo(int value);
+    }
+
+    public class Time
+    {
+        public static extern float deltaTime { get; }
+    }
+
+    public class Application
+    {
+        public static extern string streamingAssetsPath { get; }
+    }
+
+    public class Debug
+    {
+        public static extern void Log(object message);
+        public static extern void LogError(object message);
+        public static extern void LogWarning(object message, Object context);
+    }
+
+    public class Gizmos
+    {
+        public static extern Color color { get; set; }
+        public static extern void DrawWireSphere(Vector3 center, float radius);
+        public static extern void DrawWireCube(Vector3 center, Vector3 size);
+    }
+
+    public class Input
+    {
+        public static extern Vector3 mousePosition { get; }
+        public static extern bool GetMouseButton(int button);
+        public static extern bool GetMouseButtonDown(int button);
+        public static extern bool GetKeyDown(KeyCode key);
+    }
+
+    public enum KeyCode
+    {
+        N = 110,
+        P = 112,
+        R = 114,
+        W = 119,
+    }
+
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = true)]
+    public class HeaderAttribute : Attribute
+    {
+        public extern HeaderAttribute(string header);
+    }
+
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
+    public class TooltipAttribute : Attribute
+    {
+        public extern TooltipAttribute(string tooltip);
+    }
+
+    [AttributeUsage(AttributeTargets.Class, Inherited = false, AllowMultiple = false)]
+    public sealed class DisallowMultipleComponent : Attribute
+    {
+    }
+}
