@@ -62,10 +62,10 @@ namespace Smg
         /// blob memory in place), so the array may be reused at once.</summary>
         public static SmgGraph LoadMemory(ReadOnlySpan<byte> blob, SmgGraphOptions options = null)
         {
-            if (blob.Length == 0)
-                throw new SmgException(SmgResult.ErrorBlobTruncated, "smg_graph_load_memory", "empty blob");
-            // 16-byte alignment is required: over-allocate and round up.
-            IntPtr block = Marshal.AllocHGlobal(blob.Length + 15);
+            // 16-byte alignment is required: over-allocate and round up
+            // (at least one byte, so an empty blob reaches libsmg's own
+            // check with a valid pointer).
+            IntPtr block = Marshal.AllocHGlobal(Math.Max(blob.Length, 1) + 15);
             byte* data = (byte*)(((long)block + 15) & ~15L);
             blob.CopyTo(new Span<byte>(data, blob.Length));
             UIntPtr size = (UIntPtr)(ulong)blob.Length;
