@@ -100,7 +100,18 @@ namespace Smg.Tests
                 SmgJointInfo joint = SmgJointInfo.Create();
                 joint.StructSize = SmgJointInfo.Size + 4;
                 Check.Equal(SmgResult.ErrorInvalidArgument, SmgNative.smg_graph_get_joint(graph, 0, &joint), "raw get_joint too large");
-                Check.Equal(0u, graph.Info.CharacterCount, "no character was created");
+                using (SmgCharacter ch = SmgCharacter.Create(graph, SmgCharacterDesc.Create()))
+                {
+                    SmgCharacterState state = SmgCharacterState.Create();
+                    state.StructSize = SmgCharacterState.Size + 4;
+                    Check.Equal(SmgResult.ErrorInvalidArgument, SmgNative.smg_character_get_state(ch, &state), "raw get_state too large");
+                }
+                SmgGraphDesc desc = SmgGraphDesc.Create();
+                desc.StructSize = 2;
+                IntPtr none;
+                fixed (byte* path = System.Text.Encoding.UTF8.GetBytes(blob + "\0"))
+                    Check.Equal(SmgResult.ErrorInvalidArgument, SmgNative.smg_graph_load_file(path, &desc, out none), "raw load, desc size 2");
+                Check.Equal(0u, graph.Info.CharacterCount, "no character was left");
             }
         }
 
