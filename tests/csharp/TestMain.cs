@@ -74,6 +74,8 @@ namespace Smg.Tests
             Run("graph disposed before its characters outlives them", () => LifetimeTest.GraphOutlivesCharacters(first));
             Run("failing and throwing hooks", () => LifetimeTest.FailingHooks(first));
             Run("handles released under GC churn, nothing leaked", () => LifetimeTest.GcChurn(first));
+            foreach (string blob in blobs)
+                Run("left-handed conversion matches libsmg's matrices (" + Path.GetFileName(blob) + ")", () => MirrorTest.MatchesLibsmg(blob));
             Run("one character per thread, raw pointers, same poses as serial", () => ThreadTest.ParallelMatchesSerial(first));
             Run("step and pose reads allocate no managed memory", () => LifetimeTest.NoAllocationPerFrame(first));
 

@@ -108,8 +108,6 @@ namespace UnityEngine
 
     public struct Mathf
     {
-        public const float Deg2Rad = 0.0174532924F;
-        public const float Rad2Deg = 57.29578F;
         public static extern float Clamp(float value, float min, float max);
         public static extern int Max(int a, int b);
         public static extern float Min(float a, float b);

@@ -5,8 +5,8 @@
 //
 // Frames: libsmg is right-handed (Y up, heading 0 faces +Z), Unity is
 // left-handed; everything crossing between them is mirrored in X (points
-// (x, y, z) <-> (-x, y, z), rotations (x, y, z, w) <-> (x, -y, -z, w),
-// headings negated), so a left foot stays a left foot.
+// (x, y, z) <-> (-x, y, z), rotations through SmgMirrorX, headings
+// negated), so a left foot stays a left foot.
 //
 // Retargeting: each mapped bone gets libsmg's world rotation for its joint
 // times the bone's own rotation in the rig's rest pose, recorded when the
@@ -106,7 +106,7 @@ namespace Smg.Unity
 
         Transform[] bones;
         Quaternion[] restRotation;
-        Quaternion[] world;
+        float[] world;
         int[] parents;
         readonly float[] rootTranslation = new float[3];
         float[] rotations;
@@ -154,7 +154,7 @@ namespace Smg.Unity
             {
                 SmgFloat3 p = State.Position;
                 transform.SetPositionAndRotation(new Vector3(-p.X, groundY, p.Z),
-                                                 Quaternion.Euler(0.0f, -State.Heading * Mathf.Rad2Deg, 0.0f));
+                                                 Quaternion.Euler(0.0f, SmgMirrorX.HeadingToYawDegrees(State.Heading), 0.0f));
             }
         }
 
@@ -165,13 +165,12 @@ namespace Smg.Unity
             if (Character == null)
                 return;
             Character.GetLocalPose(rootTranslation, rotations);
-            for (int j = 0; j < world.Length; ++j)
+            SmgMirrorX.WorldRotations(rotations, parents, world);
+            for (int j = 0; j < bones.Length; ++j)
             {
                 int i = 4 * j;
-                var local = new Quaternion(rotations[i], -rotations[i + 1], -rotations[i + 2], rotations[i + 3]);
-                world[j] = parents[j] < 0 ? local : world[parents[j]] * local;
                 if (bones[j] != null)
-                    bones[j].rotation = world[j] * restRotation[j];
+                    bones[j].rotation = new Quaternion(world[i], world[i + 1], world[i + 2], world[i + 3]) * restRotation[j];
             }
             if (bones[0] != null)
                 bones[0].position = new Vector3(-rootTranslation[0], groundY + rootTranslation[1], rootTranslation[2]);
@@ -229,7 +228,7 @@ namespace Smg.Unity
             int n = Graph.JointCount;
             bones = new Transform[n];
             restRotation = new Quaternion[n];
-            world = new Quaternion[n];
+            world = new float[4 * n];
             parents = new int[n];
             rotations = new float[4 * n];
             var byName = new Dictionary<string, Transform>();
@@ -267,7 +266,7 @@ namespace Smg.Unity
             d.ErrorThreshold = errorThreshold;
             Vector3 p = transform.position;
             d.Position = new SmgFloat3(-p.x, 0.0f, p.z);
-            d.Heading = -transform.eulerAngles.y * Mathf.Deg2Rad;
+            d.Heading = SmgMirrorX.YawDegreesToHeading(transform.eulerAngles.y);
             if (!string.IsNullOrEmpty(style))
                 d.InitialStyle = Graph.FindStyle(style);
             if (!string.IsNullOrEmpty(action))
