@@ -88,7 +88,7 @@ test-csharp: $(CSHARP_SAMPLE_DLL) $(CSHARP_TEST_EXE) $(CSHARP_LAYOUT) $(CSHARP_R
 	@$(CSHARP_LAYOUT) > $(CSHARP_BUILD)/layout.txt
 	@nm -D --defined-only $(LIBSMG_SO) | awk '$$2 == "T" {print $$3}' > $(CSHARP_BUILD)/exports.txt
 	$(CSHARP_RUN) $(CSHARP_TEST_EXE) --layout $(CSHARP_BUILD)/layout.txt --exports $(CSHARP_BUILD)/exports.txt \
-	  --replay $(CSHARP_REPLAY) --frames $(CSHARP_FRAMES) $(addprefix --blob ,$(CSHARP_BLOBS))
+	  --replay $(CSHARP_REPLAY) --frames $(CSHARP_FRAMES) $(addprefix --blob ,$(CSHARP_BLOBS)) --library $(LIBSMG_SO)
 
 bench-csharp: $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) $(LIBSMG_SO) $(DEFAULT_BLOB)
 	$(CSHARP_RUN) $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) 7 $(DEFAULT_BLOB) $(wildcard $(CMU_BLOB))

@@ -3,6 +3,7 @@
 //
 //   mono smg-csharp-tests.exe --layout LAYOUT.txt --exports EXPORTS.txt
 //        --replay C_REPLAY --frames N --blob BLOB [--blob BLOB ...]
+//        [--library LIBSMG_SO_REALPATH]
 //
 // LAYOUT.txt comes from the C program gen_c_layout.py writes, EXPORTS.txt
 // from nm on libsmg.so, C_REPLAY is c_replay.c built against the same
@@ -11,10 +12,11 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 
 namespace Smg.Tests
 {
-    static class TestMain
+    static partial class TestMain
     {
         static int passed, failed;
 
@@ -35,7 +37,7 @@ namespace Smg.Tests
 
         static int Main(string[] args)
         {
-            string layout = null, exports = null, replay = null;
+            string layout = null, exports = null, replay = null, library = null;
             int frames = 10000;
             var blobs = new List<string>();
             for (int i = 0; i + 1 < args.Length; i += 2)
@@ -47,6 +49,7 @@ namespace Smg.Tests
                     case "--replay": replay = args[i + 1]; break;
                     case "--frames": frames = int.Parse(args[i + 1]); break;
                     case "--blob": blobs.Add(args[i + 1]); break;
+                    case "--library": library = args[i + 1]; break;
                     default:
                         Console.Error.WriteLine("unknown option " + args[i]);
                         return 2;
@@ -60,6 +63,8 @@ namespace Smg.Tests
             string first = blobs[0];
 
             Run("version matches the header mirrored", () => Check.Equal(SmgNative.Version, SmgNative.smg_version(), "smg_version()"));
+            if (library != null)
+                Run("DllImport(\"smg\") loaded " + library, () => CheckLoaded(library));
             Run("struct layouts and constants match C", () => LayoutTest.Run(File.ReadAllLines(layout)));
             Run("every exported smg_ function has a DllImport", () => ExportTest.Run(File.ReadAllLines(exports)));
             foreach (string blob in blobs)
@@ -81,6 +86,24 @@ namespace Smg.Tests
 
             Console.WriteLine("test-csharp: " + passed + " passed, " + failed + " failed");
             return failed == 0 ? 0 : 1;
+        }
+    }
+
+    static partial class TestMain
+    {
+        // The file the process mapped for "smg" (Linux: /proc/self/maps)
+        // must be the library under test, not another libsmg on the system.
+        static void CheckLoaded(string library)
+        {
+            string expected = new FileInfo(library).FullName;
+            var mapped = new List<string>();
+            foreach (string line in File.ReadAllLines("/proc/self/maps"))
+            {
+                int slash = line.IndexOf('/');
+                if (slash >= 0 && line.Contains("libsmg"))
+                    mapped.Add(line.Substring(slash));
+            }
+            Check.True(mapped.Contains(expected), expected + " is mapped (libsmg files mapped: " + string.Join(", ", mapped.Distinct()) + ")");
         }
     }
 
