@@ -12,12 +12,13 @@ namespace Smg.Tests
     /// native heap (the original pointer is kept just before the block).</summary>
     sealed class CountingAllocator : ISmgAllocator
     {
-        long live, total;
+        long live, total, requested;
         public bool Fail;
         public bool Throw;
 
         public long Live => Interlocked.Read(ref live);
         public long Total => Interlocked.Read(ref total);
+        public long RequestedBytes => Interlocked.Read(ref requested);
 
         public unsafe IntPtr Allocate(ulong size, ulong align)
         {
@@ -31,6 +32,7 @@ namespace Smg.Tests
             ((IntPtr*)aligned)[-1] = raw;
             Interlocked.Increment(ref live);
             Interlocked.Increment(ref total);
+            Interlocked.Add(ref requested, (long)size);
             return (IntPtr)(long)aligned;
         }
 
@@ -82,10 +84,20 @@ namespace Smg.Tests
             Check.Equal(0L, alloc.Live, "graph blocks left after the last character");
         }
 
-        public static void FailingHooks(string blob)
+        public static void AllocatorHooks(string blob)
         {
             using (SmgGraph graph = SmgGraph.LoadFile(blob))
             {
+                var counting = new CountingAllocator();
+                SmgCharacterDesc d = SmgCharacterDesc.Create();
+                d.PathCapacity = 100;
+                using (SmgCharacter ch = SmgCharacter.Create(graph, d, counting))
+                {
+                    Check.Equal((long)graph.CharacterMemorySize(d), counting.RequestedBytes, "bytes through the hook vs CharacterMemorySize");
+                    Check.True(counting.Live > 0, "the character's memory came from the hook");
+                }
+                Check.Equal(0L, counting.Live, "blocks left after Dispose");
+
                 var failing = new CountingAllocator { Fail = true };
                 Check.Fails(SmgResult.ErrorOutOfMemory, () => SmgCharacter.Create(graph, SmgCharacterDesc.Create(), failing), "allocator returns null");
                 var throwing = new CountingAllocator { Throw = true };

@@ -209,6 +209,11 @@ namespace Smg.Tests
                         ExpectFloats(rot, "local rotations");
                         ExpectResult(Result(() => c.GetModelMatrices(SmgSpace.World, mat)), "get_model_matrices");
                         ExpectFloats(mat, "world matrices");
+                        if (frame % 10 == 0)
+                        {
+                            ExpectResult(Result(() => c.GetModelMatrices(SmgSpace.Character, mat)), "get_model_matrices character");
+                            ExpectFloats(mat, "character matrices");
+                        }
                     }
                 }
 

@@ -77,7 +77,7 @@ namespace Smg.Tests
             Run("bad arguments are rejected", () => ErrorTest.BadArguments(first));
             Run("disposed handles throw; double dispose is safe", () => LifetimeTest.DisposedHandles(first));
             Run("graph disposed before its characters outlives them", () => LifetimeTest.GraphOutlivesCharacters(first));
-            Run("failing and throwing hooks", () => LifetimeTest.FailingHooks(first));
+            Run("allocator hooks: sizes, failing and throwing hooks", () => LifetimeTest.AllocatorHooks(first));
             Run("handles released under GC churn, nothing leaked", () => LifetimeTest.GcChurn(first));
             foreach (string blob in blobs)
                 Run("left-handed conversion matches libsmg's matrices (" + Path.GetFileName(blob) + ")", () => MirrorTest.MatchesLibsmg(blob));

@@ -7,9 +7,9 @@
  * path that grows, transition and splice points added, moved and removed,
  * immediate controls, a replaced and a cleared path, uneven dt) and writes
  * every result code and every output (state struct, local pose, world
- * matrices) as raw bytes to stdout. tests/csharp/ReplayTest.cs performs the
- * same sequence through the C# classes and compares the stream byte for
- * byte, so any difference in what the binding passes or reads shows up as
+ * matrices, character-space matrices every 10th frame) as raw bytes to
+ * stdout. tests/csharp/ReplayTest.cs performs the same sequence through
+ * the C# classes and compares the stream byte for byte, so any difference in what the binding passes or reads shows up as
  * the first differing frame. Keep the two sequences identical: every
  * number here is exactly representable, so both sides compute the same
  * floats.
@@ -128,6 +128,10 @@ int main(int argc, char** argv) {
       put(rot, sizeof(float) * 4 * joints);
       put_result(smg_character_get_model_matrices(ch[k], SMG_SPACE_WORLD, mat, joints));
       put(mat, sizeof(float) * 16 * joints);
+      if (f % 10 == 0) {
+        put_result(smg_character_get_model_matrices(ch[k], SMG_SPACE_CHARACTER, mat, joints));
+        put(mat, sizeof(float) * 16 * joints);
+      }
     }
   }
 
