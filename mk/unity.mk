@@ -8,8 +8,9 @@
 #                        declared, 10^4 frames bit for bit vs the C API on
 #                        build/default.smg (and build/cmu.smg when ../shared
 #                        has the CMU clips), error paths, handle lifetime
-#                        under GC churn, threads, no allocation per frame;
-#                        the Unity layer and sample type-checked
+#                        under GC churn, threads, the left-handed frame
+#                        conversion vs libsmg's matrices, no allocation per
+#                        frame; the Unity layer and sample type-checked
 #   make bench-csharp    (part of `make bench`) managed step + pose per
 #                        character vs the same calls from C, medians, ratio
 #   make unity-package   puts the Linux libsmg.so into the package's
