@@ -403,12 +403,12 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     } else {
       row(ctx, fg->name, k_paths[p].title, "on", &on.geom, &on.flag_skate);
       row(ctx, fg->name, k_paths[p].title, "off", &off.geom, &off.flag_skate);
-      eval_check(ctx, on.geom.mean_cms <= off.geom.mean_cms + 1.0 &&
-                          on.geom.p99_cms <= off.geom.p99_cms + 20.0,
-                 "%s, %s: planted-toe speed IK on mean %.1f p99 %.1f cm/s "
-                 "vs IK off %.1f / %.1f (bound: on <= off + 1 / + 20)",
-                 fg->name, k_paths[p].title, on.geom.mean_cms,
-                 on.geom.p99_cms, off.geom.mean_cms, off.geom.p99_cms);
+      eval_check(ctx, on.geom.mean_cms <= off.geom.mean_cms,
+                 "%s, %s: planted-toe speed with IK mean %.1f cm/s (p99 "
+                 "%.1f), without %.1f (p99 %.1f); bound: mean with IK not "
+                 "above without", fg->name, k_paths[p].title,
+                 on.geom.mean_cms, on.geom.p99_cms, off.geom.mean_cms,
+                 off.geom.p99_cms);
       eval_check(ctx, fabs(on.geom.lowest_cm - off.geom.lowest_cm) <= 1.0,
                  "%s, %s: lowest toe %.1f cm with IK, %.1f without "
                  "(bound 1 cm apart)", fg->name, k_paths[p].title,
