@@ -365,12 +365,20 @@ static uint32_t constraints(smg_graph* g, double len, eval_constraint* c) {
 
 /* Runs every path of one graph with IK on and off; writes the rows and,
  * in check mode, compares IK on against IK off. */
+static void range(double r[2], double v) {
+  if (v < r[0]) r[0] = v;
+  if (v > r[1]) r[1] = v;
+}
+
 static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
   smg_graph* g = NULL;
   feet_joints j;
   eval_feet_geom src;
   uint32_t nsrc, walk = 0;
   size_t p;
+  /* ranges over the paths for the summary: [IK on, IK off] x [lo, hi] */
+  double mean_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
+  double p99_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
   if (smg_graph_load_memory(fg->blob, fg->size, NULL, &g) != SMG_OK ||
       !find_feet(g, &j)) {
     eval_md(ctx, "| %s | Not produced: the blob does not load or lacks the "
@@ -379,6 +387,7 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     return;
   }
   smg_graph_find_style(g, "walk", &walk);
+  src.mean_cms = src.p99_cms = NAN;
   if (source_clips(fg->blob, fg->size, &src, &nsrc)) {
     char what[64];
     snprintf(what, sizeof(what), "source clips (%u, as baked)", nsrc);
@@ -403,6 +412,10 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     } else {
       row(ctx, fg->name, k_paths[p].title, "on", &on.geom, &on.flag_skate);
       row(ctx, fg->name, k_paths[p].title, "off", &off.geom, &off.flag_skate);
+      range(mean_r[0], on.geom.mean_cms);
+      range(mean_r[1], off.geom.mean_cms);
+      range(p99_r[0], on.geom.p99_cms);
+      range(p99_r[1], off.geom.p99_cms);
       eval_check(ctx, on.geom.mean_cms <= off.geom.mean_cms,
                  "%s, %s: planted-toe speed with IK mean %.1f cm/s (p99 "
                  "%.1f), without %.1f (p99 %.1f); bound: mean with IK not "
@@ -417,6 +430,14 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     free(on.speed);
     free(off.speed);
   }
+  if (mean_r[0][0] <= mean_r[0][1])
+    eval_summary(ctx,
+                 "**Feet from geometry**, %s: planted-toe speed with foot IK "
+                 "mean %.1f-%.1f cm/s, p99 %.0f-%.0f per path; without IK "
+                 "%.1f-%.1f, p99 %.0f-%.0f; the source clips %.1f, p99 %.0f.",
+                 fg->name, mean_r[0][0], mean_r[0][1], p99_r[0][0],
+                 p99_r[0][1], mean_r[1][0], mean_r[1][1], p99_r[1][0],
+                 p99_r[1][1], src.mean_cms, src.p99_cms);
   smg_graph_destroy(g);
 }
 
@@ -461,7 +482,7 @@ void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
           "## 2b. Feet from geometry\n\n"
           "How still the toes are while they are on the floor, measured from "
           "the exported toe positions only (no contact flags; "
-          "[evaluation.md](evaluation.md#feet-from-geometry)): a toe is "
+          "[evaluation.md](evaluation.md), section 2b): a toe is "
           "planted over two consecutive frames when it is within %.1f cm of "
           "its floor level (the %.0fth percentile of its height over the "
           "run) in both; planted-toe speed = its horizontal displacement / "
@@ -471,6 +492,7 @@ void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
           100.0 * EVAL_FEET_PLANT_BAND_M, EVAL_FEET_FLOOR_PERCENTILE);
   if (!ctx->have_cmu) {
     eval_md(ctx, "Not produced: the CMU clips were not found.\n\n");
+    if (ctx->check) printf("SKIP CMU feet from geometry: no clips\n");
     return;
   }
   table_head(ctx);
