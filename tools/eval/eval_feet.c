@@ -250,28 +250,36 @@ done:
   return ok;
 }
 
-/* 02_01 + 06_01 walks, 02_01 first so its skeleton is the target. */
-static smg_result bake_mixed(const eval_ctx* ctx, smg_bake_result* out,
-                             char* err, size_t err_size) {
+/* A graph of two CMU clips: `lower` (walk) and `other`, a second walk
+ * (role LOWER) or an action `label` (role UPPER). The first clip's
+ * skeleton is the target. */
+static smg_result bake_pair(const eval_ctx* ctx, const char* lower,
+                            const char* other, uint32_t role,
+                            const char* label, uint32_t mirror,
+                            smg_bake_result* out, char* err,
+                            size_t err_size) {
   smg_bake_clip_desc clips[2];
   smg_bake_desc desc;
   char p0[1200], p1[1200];
   smg_result r;
   int c;
-  eval_cmu_clip(ctx, "02_01", p0, sizeof(p0));
-  eval_cmu_clip(ctx, "06_01", p1, sizeof(p1));
+  eval_cmu_clip(ctx, lower, p0, sizeof(p0));
+  eval_cmu_clip(ctx, other, p1, sizeof(p1));
   memset(clips, 0, sizeof(clips));
   for (c = 0; c < 2; ++c) {
     clips[c].struct_size = sizeof(clips[c]);
-    clips[c].role = SMG_BAKE_ROLE_LOWER;
-    clips[c].label = "walk";
     clips[c].skip_first_frame = 1;
     clips[c].unit_scale = CMU_UNIT;
+    clips[c].mirror = mirror;
   }
+  clips[0].role = SMG_BAKE_ROLE_LOWER;
+  clips[0].label = "walk";
   clips[0].path = p0;
-  clips[0].name = "02_01";
+  clips[0].name = lower;
+  clips[1].role = role;
+  clips[1].label = label;
   clips[1].path = p1;
-  clips[1].name = "06_01";
+  clips[1].name = other;
   memset(&desc, 0, sizeof(desc));
   desc.struct_size = sizeof(desc);
   desc.clip_count = 2;
@@ -291,6 +299,7 @@ typedef struct feet_graph {
   const void* blob;
   size_t size;
   int with_constraints; /* section 2's walk/run/punch constraints */
+  const char* splice;   /* else: this action spliced on at 0.15 L */
 } feet_graph;
 
 static void row(eval_ctx* ctx, const char* graph, const char* what,
@@ -403,6 +412,12 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     for (i = 0; i < 2 * n; ++i) path[i] = (float)xz[i];
     if (fg->with_constraints)
       nc = constraints(g, em_polyline_length(xz, n), cons);
+    else if (fg->splice &&
+             smg_graph_find_action(g, fg->splice, &cons[0].value) == SMG_OK) {
+      cons[0].kind = EVAL_KIND_SPLICE;
+      cons[0].arc = (float)(0.15 * em_polyline_length(xz, n));
+      nc = 1;
+    }
     run_one(g, &j, path, (uint32_t)n, cons, nc, walk, 0, &on);
     run_one(g, &j, path, (uint32_t)n, cons, nc, walk, SMG_CHARACTER_NO_IK,
             &off);
@@ -474,10 +489,10 @@ static void table_head(eval_ctx* ctx) {
 }
 
 void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
-  smg_bake_result mixed;
+  smg_bake_result mixed, dribble;
   char err[512];
   feet_graph fg;
-  int have_mixed = 0;
+  int have_mixed = 0, have_dribble = 0;
   eval_md(ctx,
           "## 2b. Feet from geometry\n\n"
           "How still the toes are while they are on the floor, measured from "
@@ -501,9 +516,13 @@ void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
     fg.blob = blob;
     fg.size = size;
     fg.with_constraints = 1;
+    fg.splice = NULL;
     feet_graph_run(ctx, &fg);
   }
-  if (bake_mixed(ctx, &mixed, err, sizeof(err)) == SMG_OK) {
+  fg.splice = NULL;
+  if (bake_pair(ctx, "02_01", "06_01", SMG_BAKE_ROLE_LOWER, "walk",
+                SMG_BAKE_MIRROR_DEFAULT, &mixed, err,
+                sizeof(err)) == SMG_OK) {
     have_mixed = 1;
     fg.name = "02_01 + 06_01 (two performers)";
     fg.blob = mixed.blob;
@@ -514,7 +533,22 @@ void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
     eval_md(ctx, "\nTwo-performer graph not produced: %s\n", err);
     eval_check(ctx, 0, "two-performer bake: %s", err);
   }
+  /* the splice test's graph (section 3), dribbling from 0.15 L on */
+  if (!ctx->quick &&
+      bake_pair(ctx, "06_01", "06_10", SMG_BAKE_ROLE_UPPER, "dribble",
+                SMG_BAKE_MIRROR_NO, &dribble, err, sizeof(err)) == SMG_OK) {
+    have_dribble = 1;
+    fg.name = "06_01 + 06_10 dribble (section 3)";
+    fg.blob = dribble.blob;
+    fg.size = dribble.blob_size;
+    fg.with_constraints = 0;
+    fg.splice = "dribble";
+    feet_graph_run(ctx, &fg);
+  } else if (!ctx->quick) {
+    eval_md(ctx, "\nDribble graph not produced: %s\n", err);
+  }
   eval_md(ctx, "\n");
   if (have_mixed) smg_bake_result_free(&mixed);
+  if (have_dribble) smg_bake_result_free(&dribble);
   if (blob && !ctx->check) draw_straight(ctx, blob, size);
 }
