@@ -1,11 +1,13 @@
 /*
  * ik.c - foot cleanup. When a foot's contact label (FRMI) begins, the
- * toe's world position is recorded; while the contact lasts, cyclic
- * coordinate descent on hip and knee moves the ankle to where the
- * animation has it relative to the toe, placed at that anchor - so a flat
- * foot stays put and a rolling foot pivots about its planted toe instead of
- * dragging. The ankle keeps its animated world orientation, which puts the
- * toe exactly on the anchor. The correction blends in and out over
+ * toe's world position is recorded, and again each step while the animated
+ * toe still descends (it lands after the heel); while the contact lasts,
+ * cyclic coordinate descent on hip and knee moves the ankle to where the
+ * animation has it relative to the toe, placed at that anchor horizontally
+ * and at the animation's height - so a flat foot stays put and a rolling
+ * foot pivots about its planted toe instead of dragging, and the feet stay
+ * on the floor the data has. The ankle keeps its animated world
+ * orientation, which puts the toe on the anchor. The correction blends in and out over
  * SMGI_IK_BLEND seconds so contact changes never pop. A contact whose anchor
  * drifted implausibly far (a re-plan moved the body) is released rather
  * than stretched. Each solve starts from the foot's previous correction
@@ -260,6 +262,8 @@ void smgi_ik_reset(smgi_ik* ik) {
   for (uint32_t f = 0; f < 2u; ++f) {
     ik->feet[f].planted = 0;
     ik->feet[f].weight = 0.0f;
+    ik->feet[f].landing = 0;
+    ik->feet[f].toe_y = INFINITY;
     memcpy(ik->feet[f].fix[0], k_identity, sizeof k_identity);
     memcpy(ik->feet[f].fix[1], k_identity, sizeof k_identity);
   }
@@ -284,7 +288,7 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     int contact = (ch->pose.contacts & bits[f]) != 0;
     if (contact && !foot->planted) {
       foot->planted = 1;
-      memcpy(foot->anchor, ap, sizeof foot->anchor);
+      foot->landing = 1;
       /* the animation has the foot exactly there now: whatever correction
        * a blend-out toward the previous anchor left is no guess for it */
       memcpy(foot->fix[0], k_identity, sizeof k_identity);
@@ -292,21 +296,33 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     } else if (!contact) {
       foot->planted = 0;
     }
+    /* A contact label starts when the heel OR the toe is down: at a heel
+     * strike the toe is still coming down and forward. The anchor follows
+     * the animated toe while it descends and holds from the first step on
+     * which it does not (or once the correction has blended in fully: a
+     * toe that keeps sinking a little through a stance is down), so the
+     * toe is held where it lands, not in the air (on a graph of two performers the old anchor at the heel strike
+     * held toes 6 cm up). */
+    if (foot->planted && foot->landing) {
+      memcpy(foot->anchor, ap, sizeof foot->anchor);
+      if (!(ap[1] < foot->toe_y) || foot->weight >= 1.0f) foot->landing = 0;
+    }
+    foot->toe_y = ap[1];
     if (foot->planted) {
-      float dx = foot->anchor[0] - ap[0], dy = foot->anchor[1] - ap[1],
-            dz = foot->anchor[2] - ap[2];
+      float dx = foot->anchor[0] - ap[0], dz = foot->anchor[2] - ap[2];
       float lim = SMGI_IK_RELEASE * info->leg_length;
-      if (dx * dx + dy * dy + dz * dz > lim * lim) {
+      if (dx * dx + dz * dz > lim * lim) {
         foot->planted = 0; /* implausible: let go smoothly */
       }
     }
     foot->weight += foot->planted ? step : -step;
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
     if (foot->weight > 0.0f) {
-      /* ankle target: the animated ankle-from-toe offset at the anchor */
+      /* ankle target: the animated ankle-from-toe offset at the anchor,
+       * at the animation's height (the data's feet are on the data's
+       * floor; IK only stops them sliding) */
       const float* an = ch->pose.wpos + 3u * ankle;
-      float target[3] = {foot->anchor[0] + an[0] - ap[0],
-                         foot->anchor[1] + an[1] - ap[1],
+      float target[3] = {foot->anchor[0] + an[0] - ap[0], an[1],
                          foot->anchor[2] + an[2] - ap[2]};
       solve_leg(ch, f, target, foot->weight);
     } else {

@@ -12,7 +12,11 @@
 
 typedef struct smgi_foot {
   uint32_t planted;    /* contact currently anchored */
-  float anchor[3];     /* world toe position at contact start */
+  float anchor[3];     /* world toe position held while planted (x and z
+                          are held; the height is always the animation's) */
+  float toe_y;         /* the animated toe's height at the previous step */
+  uint32_t landing;    /* planted, but the animated toe still descends:
+                          the anchor follows it until it stops */
   float weight;        /* IK blend weight 0..1 */
   float fix[2][4];     /* world-space hip and knee rotations the last solve
                           added (identity when the foot was not solved): the

@@ -86,7 +86,9 @@
 #define SMGI_SYNC_RATE_MIN 0.5f
 #define SMGI_SYNC_RATE_MAX 2.0f
 #define SMGI_SYNC_SMOOTH 0.3f  /* rate follows its target by this per frame */
-#define SMGI_SYNC_PHASE_LOCK 0.5f /* rate change per cycle of phase error */
+#define SMGI_SYNC_PHASE_LOCK 4.0f /* rate change per cycle of phase error:
+                                     an error closes over about a quarter
+                                     cycle */
 
 /* ---- pose (pose.c) ---- */
 #define SMGI_POSE_STACK_JOINTS 64u /* pose scratch on the stack up to here

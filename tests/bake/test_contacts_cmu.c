@@ -83,8 +83,9 @@ static double stride_period(const strikes* s, float rate) {
   return 2.0 * d[n / 2] / (double)rate;
 }
 
-/* Phase as documented: in [0, 1) or -1; 0 at left strikes, 0.5 at right
- * strikes (between two strikes of the clip). */
+/* Phase as documented: in [0, 1) or -1; 0 at left strikes; with two or
+ * more left strikes, rising linearly from one left strike to the next (one
+ * cycle per stride), else 0.5 at right strikes (short clips). */
 static void check_phase(const smgb_analysis* a, const strikes* s) {
   uint32_t f, i;
   for (f = 0; f < a->frame_count; ++f)
@@ -92,6 +93,14 @@ static void check_phase(const smgb_analysis* a, const strikes* s) {
                 (a->phase[f] >= 0.0f && a->phase[f] < 1.0f));
   if (s->nl + s->nr < 2) return;
   for (i = 0; i < s->nl; ++i) assert_true(fabsf(a->phase[s->l[i]]) < 1e-4f);
+  if (s->nl >= 2) {
+    for (i = 0; i + 1 < s->nl; ++i) {
+      float step = 1.0f / (float)(s->l[i + 1] - s->l[i]);
+      for (f = s->l[i] + 1; f < s->l[i + 1]; ++f)
+        assert_true(fabsf(a->phase[f] - a->phase[f - 1] - step) < 1e-4f);
+    }
+    return;
+  }
   for (i = 0; i < s->nr; ++i)
     if (s->r[i] > s->l[0] || s->r[i] > s->r[0])
       assert_true(fabsf(a->phase[s->r[i]] - 0.5f) < 1e-4f);

@@ -85,6 +85,9 @@ const char* eval_fmt(char* buf, size_t size, const char* fmt, double v);
 void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size);
 /* Path following on five paths with transition and splice points. */
 void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
+/* Feet from geometry: planted-toe speed with IK on and off on every path
+ * of the CMU graph and of a two-performer graph, and the source clips'. */
+void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size);
 /* Splicing accuracy (Fig. 5) and the synchronization check. */
 void eval_section_splice(eval_ctx* ctx);
 

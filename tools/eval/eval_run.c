@@ -120,6 +120,7 @@ smg_result eval_run(smg_graph* graph, const eval_run_desc* desc,
   cd.path_capacity = desc->path_count + 16;
   cd.constraint_capacity = desc->constraint_count + 8;
   cd.seed = desc->seed;
+  cd.flags = desc->character_flags;
   cd.position[0] = desc->path_xz[0];
   cd.position[2] = desc->path_xz[1];
   if (desc->path_count > 1)

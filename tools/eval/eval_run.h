@@ -31,6 +31,7 @@ typedef struct eval_run_desc {
   float max_seconds;     /* stop after this much simulated time */
   float extra_seconds;   /* keep stepping this long after the end */
   uint32_t seed;
+  uint32_t character_flags; /* SMG_CHARACTER_* (e.g. SMG_CHARACTER_NO_IK) */
 } eval_run_desc;
 
 typedef struct eval_trace {

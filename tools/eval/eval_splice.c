@@ -178,6 +178,8 @@ typedef struct splice_eval {
   double* err_ground;
   double* err_pelvis_cm;
   double* err_ground_cm;
+  double* joint_cm;       /* per frame, SPINE_JOINTS pelvis-frame then
+                             SPINE_JOINTS ground-frame distances, cm */
   double* phase_low;      /* lower-body gait phase from runtime contacts */
   double* phase_up;       /* upper-body source phase (synchronized) */
   double* phase_up_native;/* same source played at its own rate */
@@ -200,6 +202,7 @@ static void splice_eval_free(splice_eval* e) {
   free(e->err_ground);
   free(e->err_pelvis_cm);
   free(e->err_ground_cm);
+  free(e->joint_cm);
   free(e->phase_low);
   free(e->phase_up);
   free(e->phase_up_native);
@@ -350,6 +353,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   e->err_ground = (double*)malloc(F * sizeof(double));
   e->err_pelvis_cm = (double*)malloc(F * sizeof(double));
   e->err_ground_cm = (double*)malloc(F * sizeof(double));
+  e->joint_cm = (double*)malloc(F * 2 * SPINE_JOINTS * sizeof(double));
   e->phase_low = (double*)malloc(F * sizeof(double));
   e->phase_up = (double*)malloc(F * sizeof(double));
   e->phase_up_native = (double*)malloc(F * sizeof(double));
@@ -362,6 +366,7 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   falls = (size_t*)malloc(F * sizeof(size_t));
   if (!e->time || !e->src || !e->residual_deg || !e->base_deg || !e->err_pelvis ||
       !e->err_ground || !e->err_pelvis_cm || !e->err_ground_cm ||
+      !e->joint_cm ||
       !e->phase_low || !e->phase_up || !e->phase_up_native || !gt_a ||
       !gt_b || !gt_rot_a || !gt_rot_b || !clip_phase || !lc || !falls)
     goto out;
@@ -485,6 +490,12 @@ static int measure(const splice_blob* sb, const eval_trace* t,
                                            e->spine_length);
     e->err_pelvis_cm[f] = 100.0 * e->err_pelvis[f] * e->spine_length;
     e->err_ground_cm[f] = 100.0 * e->err_ground[f] * e->spine_length;
+    for (k = 0; k < SPINE_JOINTS; ++k) {
+      double* jc = e->joint_cm + f * 2 * SPINE_JOINTS;
+      jc[k] = 100.0 * em_mean_joint_error(op + 3 * k, gp + 3 * k, 1, 1.0);
+      jc[SPINE_JOINTS + k] =
+          100.0 * em_mean_joint_error(og + 3 * k, gg + 3 * k, 1, 1.0);
+    }
     e->phase_up[f] = phase_at(clip_phase, sb->upper_count, e->src[f]);
     e->compared++;
     if (e->err_pelvis[f] > worst) worst = e->err_pelvis[f], e->worst = f;
@@ -824,6 +835,41 @@ done:
   free(u_before);
 }
 
+/* Mean and worst distance of each compared joint from the original, in
+ * both frames: where along the spine the error is. */
+static void per_joint_table(eval_ctx* ctx, const splice_eval* e) {
+  double* v = (double*)malloc(e->frames * sizeof(double));
+  double* scratch = (double*)malloc(e->frames * sizeof(double));
+  size_t f, k, w;
+  if (!v || !scratch) {
+    free(v);
+    free(scratch);
+    return;
+  }
+  eval_md(ctx, "Per joint (distance from the original, cm):\n\n"
+               "| joint | pelvis frame mean / worst | ground frame mean / "
+               "worst |\n|---|---:|---:|\n");
+  for (k = 0; k < SPINE_JOINTS; ++k) {
+    em_stats st[2];
+    char a[24], b[24], c[24], d[24];
+    for (w = 0; w < 2; ++w) {
+      for (f = 0; f < e->frames; ++f)
+        v[f] = isnan(e->err_pelvis[f])
+                   ? NAN
+                   : e->joint_cm[f * 2 * SPINE_JOINTS + w * SPINE_JOINTS + k];
+      em_stats_compute(v, e->frames, scratch, &st[w]);
+    }
+    eval_md(ctx, "| %s | %s / %s | %s / %s |\n", k_spine_names[k],
+            eval_fmt(a, sizeof a, "%.2f", st[0].mean),
+            eval_fmt(b, sizeof b, "%.2f", st[0].max),
+            eval_fmt(c, sizeof c, "%.2f", st[1].mean),
+            eval_fmt(d, sizeof d, "%.2f", st[1].max));
+  }
+  eval_md(ctx, "\n");
+  free(v);
+  free(scratch);
+}
+
 void eval_section_splice(eval_ctx* ctx) {
   splice_blob sb;
   eval_trace t;
@@ -969,6 +1015,7 @@ void eval_section_splice(eval_ctx* ctx) {
                      "in the ground frame mean %.1f %% / worst %.1f %%.",
                      sp.count, 100.0 * sp.mean, 100.0 * sp.max, spc.mean,
                      spc.max, 100.0 * sg.mean, 100.0 * sg.max);
+        per_joint_table(ctx, &e);
         figure_error(ctx, &e);
         figure_worst(ctx, &sb, &t, &e);
       }

@@ -219,6 +219,7 @@ int main(int argc, char** argv) {
 
   eval_section_bake(&ctx, &blob, &blob_size);
   eval_section_paths(&ctx, blob, blob_size);
+  eval_section_feet(&ctx, blob, blob_size);
   eval_section_splice(&ctx);
   free(blob);
 
