@@ -161,6 +161,10 @@ typedef struct smg_bake_result {
   double total_seconds;
   smg_bake_stats stats;
   char error[512];           /* one line on failure, "" on success */
+  uint32_t upper_phase_fallbacks; /* actions whose upper graph had to keep
+                                     transitions that jump the gait phase
+                                     (with only phase-keeping ones the
+                                     action had no cycle; docs/baker.md) */
 } smg_bake_result;
 
 /* Bake. `out` must have struct_size set; it is reset first. On failure out

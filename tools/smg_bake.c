@@ -486,6 +486,13 @@ int main(int argc, char** argv) {
             100.0 * s->splice_coverage, s->splice_max_gap, output,
             res.blob_size);
   }
+  /* a warning, shown even with -q */
+  if (res.upper_phase_fallbacks)
+    fprintf(stderr,
+            "smg-bake: note: %u action(s) keep upper-graph transitions that "
+            "jump the gait phase (without them the action had no cycle; "
+            "docs/baker.md)\n",
+            res.upper_phase_fallbacks);
   smg_bake_result_free(&res);
   code = 0;
 out:

@@ -133,6 +133,10 @@ typedef struct smgb_bake {
   uint32_t action_count;
 
   smgb_graph lower, upper;
+  /* Bit l set: action l's upper graph is built without the phase rule
+   * (bake_graph_build.c, phase_agrees), because with it the action had no
+   * cycle; set by smgb_prune, which the pipeline then reruns. */
+  uint64_t upper_phase_free;
   uint32_t lower_candidates, upper_candidates;
   uint32_t lower_nodes_before, lower_edges_before;
   uint32_t upper_nodes_before, upper_edges_before;
@@ -235,6 +239,10 @@ int32_t smgb_scc(const smgb_graph* g, uint32_t* comp);
 /* Keep only nodes with keep[n] != 0 and edges between kept nodes;
  * renumbers. */
 smg_result smgb_graph_keep(smgb_graph* g, const uint8_t* keep);
+/* Keep the lower graph's largest strongly connected component, and each
+ * action's largest in the upper graph. SMG_ERROR_NOT_FOUND when a style or
+ * action has none; for an action still built with the phase rule, its bit
+ * in b->upper_phase_free is set first, so a rebuild can fall back. */
 smg_result smgb_prune(smgb_bake* b, uint32_t role);
 
 /* ---- bake_simplify.c ------------------------------------------------------ */

@@ -7,7 +7,9 @@
  *   upper graph: clips with role UPPER; point cloud = upper-body segment
  *     COGs in the root's ground frame, weighted by mass (bake_upper.c);
  *     transitions only between frames of the same action (actions connect
- *     through splicing, not through edges).
+ *     through splicing, not through edges), and only where the two frames'
+ *     gait phases agree (phase_agrees), unless that leaves an action
+ *     without a cycle.
  *
  * Every local minimum of the window distance grid is a candidate (minus
  * near-diagonal pairs and pairs that cannot lie on a cycle). Same-label
@@ -110,8 +112,47 @@ static int pair_filter(uint32_t i, uint32_t j, void* user) {
   return 1;
 }
 
+/* Upper graph: does a transition from pool frame pa into pool frame pb
+ * keep the gait phase (FRMI, bake_contacts.c)? An action recorded while
+ * walking is tied to the steps: a dribbler's arm repeats on either foot,
+ * so the upper-body poses of a left and a right step look alike and the
+ * distance grid offers transitions half a stride apart. Played, such a
+ * transition jumps the upper body's gait phase by about half a cycle,
+ * which synchronization then has to make up over a second or more, and a
+ * jump past half a cycle is made up the wrong way round, as a whole
+ * stride slipped against the legs.
+ *
+ * Tolerance: the blended frames' phase moves from one side's to the
+ * other's with the blend (bake_transition.c), so a phase difference d
+ * turns a window that spans w cycles of gait into w + d cycles, and the
+ * rate that keeps the upper body in step over the window is w / (w + d).
+ * |d| <= w / 2 keeps that rate within [2/3, 2], inside the rate range
+ * synchronization allows: a jump it can absorb within the blend itself.
+ * w is the window's length (k frames) at the slower side's phase speed,
+ * so the tolerance follows each clip's own gait and the bake's window.
+ * The phases are compared where the window starts and where it ends.
+ * Frames without a phase (an action in place) agree with everything. */
+static int phase_agrees(const smgb_bake* b, uint32_t pa, uint32_t pb) {
+  uint32_t k = b->opt.window;
+  float a0 = b->frames[pa].phase, a1 = b->frames[pa + k].phase;
+  float b0 = b->frames[pb].phase, b1 = b->frames[pb + k].phase;
+  float wa, wb, d0, d1, tol;
+  if (a0 < 0.0f || a1 < 0.0f || b0 < 0.0f || b1 < 0.0f) return 1;
+  wa = a1 - a0;
+  wb = b1 - b0;
+  wa -= floorf(wa); /* cycles the window spans, [0, 1) */
+  wb -= floorf(wb);
+  d0 = a0 - b0;
+  d1 = a1 - b1;
+  d0 -= floorf(d0 + 0.5f); /* (-0.5, 0.5] */
+  d1 -= floorf(d1 + 0.5f);
+  tol = 0.5f * (wa < wb ? wa : wb);
+  return fabsf(d0) <= tol && fabsf(d1) <= tol;
+}
+
 typedef struct cand {
   smgb_minimum m;
+  uint32_t admissible; /* 0: the upper graph's phase rule rejects it */
   uint32_t li, lj;    /* labels */
   uint32_t ci, cj;    /* clips */
   uint32_t region;    /* source region: (clip, local frame / span) */
@@ -223,7 +264,7 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
     qsort(cands, n, sizeof *cands, cand_cmp);
   }
   for (i = 0; i < n;) {
-    uint32_t e = i, keep;
+    uint32_t e = i, keep, taken;
     float cap = INFINITY;
     while (e < n && cands[e].li == cands[i].li &&
            cands[e].lj == cands[i].lj &&
@@ -246,10 +287,16 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
       cap = ceiling[cands[i].li * L + cands[i].lj];
     if (b->opt.transition_threshold > 0.0f && b->opt.transition_threshold < cap)
       cap = b->opt.transition_threshold;
-    for (t = i; t < i + keep && t < e; ++t) {
+    /* Candidates the phase rule rejects still count above (the median
+     * and the share kept are those of the whole grid, so the rule does
+     * not thin the graph out further), but are not taken: their places go
+     * to the next admissible ones under the same ceiling. */
+    for (t = i, taken = 0; taken < keep && t < e; ++t) {
+      if (!cands[t].admissible) continue;
       /* label changes always keep their best candidate */
-      if (cands[t].m.dist > cap && (by_clip || t > i)) break;
+      if (cands[t].m.dist > cap && (by_clip || taken > 0)) break;
       cands[kept++] = cands[t];
+      ++taken;
     }
     i = e;
   }
@@ -492,6 +539,10 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
     cands[i].lj = b->clips[ctx.clip_of[mins[i].j]].label;
     cands[i].ci = ctx.clip_of[mins[i].i];
     cands[i].cj = ctx.clip_of[mins[i].j];
+    cands[i].admissible =
+        role != SMGI_CLIP_UPPER ||
+        (b->upper_phase_free >> cands[i].li & 1u) ||
+        phase_agrees(b, ctx.map[mins[i].i], ctx.map[mins[i].j]);
     {
       /* same-label candidates: one per k source frames; label changes are
        * far costlier (walk vs run poses) and only need to be available,

@@ -473,8 +473,16 @@ smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
   stage_end(b, out, t0);
 
   stage_begin(b, out, "upper graph", &t0);
-  r = smgb_build_graph(b, SMGI_CLIP_UPPER);
-  if (r == SMG_OK) r = smgb_prune(b, SMGI_CLIP_UPPER);
+  for (;;) {
+    uint64_t phase_free = b->upper_phase_free;
+    r = smgb_build_graph(b, SMGI_CLIP_UPPER);
+    if (r == SMG_OK) r = smgb_prune(b, SMGI_CLIP_UPPER);
+    /* An action the phase rule left without a cycle is rebuilt without
+     * the rule (reported in upper_phase_fallbacks); at most once per
+     * action. */
+    if (r != SMG_ERROR_NOT_FOUND || b->upper_phase_free == phase_free) break;
+    b->error[0] = '\0';
+  }
   if (r != SMG_OK) goto done;
   b->upper_nodes_before = b->upper.node_count;
   b->upper_edges_before = b->upper.edge_count;
@@ -517,6 +525,8 @@ smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
     s->splice_max_gap = b->splice_max_gap;
     s->style_count = b->style_count;
     s->action_count = b->action_count;
+    for (c = 0; c < SMGB_MAX_LABELS; ++c)
+      out->upper_phase_fallbacks += (uint32_t)(b->upper_phase_free >> c & 1u);
   }
 done:
   if (r != SMG_OK) {

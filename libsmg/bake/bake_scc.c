@@ -165,6 +165,11 @@ smg_result smgb_prune(smgb_bake* b, uint32_t role) {
         if (best == SMGI_NONE || size[comp[n]] > size[best]) best = comp[n];
       }
       if (best == SMGI_NONE) {
+        if (!(b->upper_phase_free >> l & 1u)) {
+          /* the phase rule may have taken the only loops: rebuild this
+           * action without it (the pipeline retries) */
+          b->upper_phase_free |= (uint64_t)1 << l;
+        }
         smgb_fail(b, "upper graph: action '%s' has no cycle (no transition "
                      "candidates loop back inside its clips; use longer "
                      "clips or raise transition_percentile)",

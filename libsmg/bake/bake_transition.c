@@ -10,6 +10,7 @@
  * pruning, as two pseudo-clips ("lower transitions", "upper transitions",
  * flags SMGI_CLIP_BLEND) after all clip frames.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,6 +60,22 @@ void smgb_blend_pose(const smgb_bake* b, const smgb_edge* e, uint32_t t,
   }
 }
 
+/* Gait phase of a blended frame: moves from A's to B's with the blend
+ * weight u of B, the short way round the cycle, so a transition between
+ * slightly different phases shows synchronization a short change of
+ * phase speed instead of a jump halfway through the window. Without a
+ * phase on both sides: `fallback`, the phase of the frame the contacts
+ * come from. */
+static float blend_phase(float pa, float pb, double u, float fallback) {
+  double d, p;
+  if (pa < 0.0f || pb < 0.0f) return fallback;
+  d = (double)pb - (double)pa;
+  d -= floor(d + 0.5); /* (-0.5, 0.5] */
+  p = (double)pa + u * d;
+  p -= floor(p);
+  return p < 1.0 ? (float)p : 0.0f;
+}
+
 static smg_result materialize(smgb_bake* b, smgb_graph* g, uint32_t role,
                               const char* name) {
   uint32_t e, k = b->opt.window, count = 0, first, clip;
@@ -103,7 +120,9 @@ static smg_result materialize(smgb_bake* b, smgb_graph* g, uint32_t role,
       fr->flags = src->flags & (SMGI_FRAME_LEFT_CONTACT |
                                 SMGI_FRAME_RIGHT_CONTACT);
       fr->clip = clip;
-      fr->phase = src->phase;
+      fr->phase = blend_phase(b->frames[ed->a + t].phase,
+                              b->frames[ed->b + t].phase,
+                              1.0 - smgb_blend_alpha(t, k), src->phase);
     }
   }
   smgb_pool_derive(b, first, b->frame_count - first);

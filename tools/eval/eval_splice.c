@@ -187,6 +187,9 @@ typedef struct splice_eval {
   size_t worst;           /* frame of the worst pelvis-frame error */
   double spine_length;
   double clip_phase_period; /* seconds per gait cycle in 06_10 */
+  double played_period;     /* mean over compared frames of the 06_10
+                               stride (s) holding the matched frame */
+  double stride_min, stride_max; /* shortest / longest 06_10 stride (s) */
   double low_period;        /* seconds per gait cycle of the output */
   double measured_rate;     /* upper source frames per frame-time played */
   double clip_period_baker; /* 06_10 gait period from the blob's contacts */
@@ -240,9 +243,12 @@ static void spine_frames(const double* pos, const double* root_rot,
 
 /* Gait phase (0 at left foot-strike) of every frame of the original
  * upper clip, from its own left-foot contacts (height + speed detection on
- * the lower of ankle and toe). NaN outside the detected cycles. */
+ * the lower of ankle and toe), and the length (s) of the stride holding
+ * each frame. NaN outside the detected cycles. */
 static int clip_phases(const splice_blob* sb, uint32_t lfoot, uint32_t ltoe,
-                       double* out_phase, double* out_period) {
+                       double* out_phase, double* out_stride,
+                       double* out_period, double* out_min,
+                       double* out_max) {
   uint32_t n = sb->upper_count, J = sb->gd.joint_count, i;
   double* pos = (double*)malloc(3 * (size_t)J * sizeof(double));
   double* low = (double*)malloc(3 * (size_t)n * sizeof(double));
@@ -267,6 +273,15 @@ static int clip_phases(const splice_blob* sb, uint32_t lfoot, uint32_t ltoe,
   em_detect_contacts(low, n, 1.0 / sb->gd.info->frame_rate, 0.03, 1.0, con);
   k = em_footfalls(con, n, falls, n);
   em_phase_from_footfalls(falls, k, n, out_phase);
+  for (i = 0; i < n; ++i) out_stride[i] = NAN;
+  *out_min = *out_max = NAN;
+  for (i = 0; k > 1 && i + 1 < k; ++i) {
+    double len = (double)(falls[i + 1] - falls[i]) / sb->gd.info->frame_rate;
+    size_t f;
+    for (f = falls[i]; f < falls[i + 1]; ++f) out_stride[f] = len;
+    if (!(len >= *out_min)) *out_min = len;
+    if (!(len <= *out_max)) *out_max = len;
+  }
   *out_period = k > 1 ? (double)(falls[k - 1] - falls[0]) / (double)(k - 1) /
                             sb->gd.info->frame_rate
                       : NAN;
@@ -308,7 +323,9 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   uint32_t jm[MAX_MATCH_JOINTS], spine[SPINE_JOINTS];
   uint32_t lfoot, ltoe, hips, base;
   size_t F = t->frames, m = 0, f, falls_n, window;
-  double *gt_a, *gt_b, *gt_rot_a, *gt_rot_b, *clip_phase;
+  double *gt_a, *gt_b, *gt_rot_a, *gt_rot_b, *clip_phase, *clip_stride;
+  double stride_sum = 0.0;
+  size_t stride_n = 0;
   uint8_t* lc;
   size_t* falls;
   smg_joint_info ji;
@@ -362,15 +379,18 @@ static int measure(const splice_blob* sb, const eval_trace* t,
   gt_rot_a = (double*)malloc(4 * (size_t)J * sizeof(double));
   gt_rot_b = (double*)malloc(4 * (size_t)J * sizeof(double));
   clip_phase = (double*)malloc(sb->upper_count * sizeof(double));
+  clip_stride = (double*)malloc(sb->upper_count * sizeof(double));
   lc = (uint8_t*)malloc(F);
   falls = (size_t*)malloc(F * sizeof(size_t));
   if (!e->time || !e->src || !e->residual_deg || !e->base_deg || !e->err_pelvis ||
       !e->err_ground || !e->err_pelvis_cm || !e->err_ground_cm ||
       !e->joint_cm ||
       !e->phase_low || !e->phase_up || !e->phase_up_native || !gt_a ||
-      !gt_b || !gt_rot_a || !gt_rot_b || !clip_phase || !lc || !falls)
+      !gt_b || !gt_rot_a || !gt_rot_b || !clip_phase || !clip_stride || !lc ||
+      !falls)
     goto out;
-  if (!clip_phases(sb, lfoot, ltoe, clip_phase, &e->clip_phase_period))
+  if (!clip_phases(sb, lfoot, ltoe, clip_phase, clip_stride,
+                   &e->clip_phase_period, &e->stride_min, &e->stride_max))
     goto out;
 
   /* Cross-checks of both periods from a second contact source: the
@@ -497,9 +517,14 @@ static int measure(const splice_blob* sb, const eval_trace* t,
           100.0 * em_mean_joint_error(og + 3 * k, gg + 3 * k, 1, 1.0);
     }
     e->phase_up[f] = phase_at(clip_phase, sb->upper_count, e->src[f]);
+    if (isfinite(clip_stride[i])) {
+      stride_sum += clip_stride[i];
+      stride_n++;
+    }
     e->compared++;
     if (e->err_pelvis[f] > worst) worst = e->err_pelvis[f], e->worst = f;
   }
+  e->played_period = stride_n ? stride_sum / (double)stride_n : NAN;
   /* The unsynchronized counterfactual: from the first matched frame on,
    * the upper body's phase advances at the clip's own gait rate (one
    * cycle per clip_phase_period), whatever the lower body does. */
@@ -540,6 +565,7 @@ out:
   free(gt_rot_a);
   free(gt_rot_b);
   free(clip_phase);
+  free(clip_stride);
   free(lc);
   free(falls);
   return ok;
@@ -707,7 +733,8 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
          *u_before = NULL;
   sync_numbers after, before;
   svp_figure* fig = NULL;
-  char full[1400], a[32], b[32], c[32], d[32], x[32], y[32], z[32];
+  char full[1400], a[32], b[32], c[32], d[32], x[32], y[32], z[32], p[32],
+      r[32], s1[32], s2[32];
   double rate_sum = 0.0;
   size_t f, rate_n = 0;
 
@@ -773,8 +800,13 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
           "contact flags): %s s (own detection on the output: %s s); gait "
           "period of the dribble clip 06_10: %s s (from the baker's contact "
           "labels: %s s); so synchronization should play the upper body at "
-          "about %s x its own speed. Mean `sync_rate` the runtime reported "
-          "while "
+          "about %s x its own speed. But the 06_10 strides vary (detected: "
+          "%s to %s s) and the action graph plays only part of the clip: "
+          "the strides holding the source frames actually played last %s "
+          "s on average (mean over the compared frames of the detected "
+          "stride holding the matched frame), so a phase-locked upper body "
+          "plays at %s x. "
+          "Mean `sync_rate` the runtime reported while "
           "dribbling: %s; upper-body playback rate measured from the "
           "matched source frames (mean source-frame advance per output "
           "frame, graph jumps excluded): %s.\n\n",
@@ -784,6 +816,10 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
           eval_fmt(z, sizeof(z), "%.3f", e->clip_period_baker),
           eval_fmt(c, sizeof(c), "%.3f",
                    e->clip_phase_period / e->low_period),
+          eval_fmt(s1, sizeof(s1), "%.3f", e->stride_min),
+          eval_fmt(s2, sizeof(s2), "%.3f", e->stride_max),
+          eval_fmt(p, sizeof(p), "%.3f", e->played_period),
+          eval_fmt(r, sizeof(r), "%.3f", e->played_period / e->low_period),
           eval_fmt(d, sizeof(d), "%.3f",
                    rate_n ? rate_sum / (double)rate_n : NAN),
           eval_fmt(x, sizeof(x), "%.3f", e->measured_rate));
@@ -791,10 +827,13 @@ static void section_sync(eval_ctx* ctx, const eval_trace* t,
                "**Synchronization**: phase drift of the upper body against "
                "the lower body %+.3f cycles/s without synchronization, "
                "%+.3f cycles/s as played by the runtime (0 = no velocity "
-               "differential); the gait periods call for an upper-body "
-               "playback rate of %.3f, the runtime played it at %.3f "
-               "(measured).",
-               before.drift, after.drift,
+               "differential); upper-body phase at the legs' left footfalls "
+               "scattered by %.3f cycles (circular std); the strides of the "
+               "source frames played call for an upper-body playback rate "
+               "of %.3f (the whole 06_10 clip's mean stride: %.3f), the "
+               "runtime played it at %.3f (measured).",
+               before.drift, after.drift, after.foot_sd,
+               e->played_period / e->low_period,
                e->clip_phase_period / e->low_period, e->measured_rate);
   fig = svp_create(760, 380,
                    "Upper-body phase minus lower-body phase (unwrapped)");
