@@ -7,8 +7,9 @@
  * and at the animation's height - so a flat foot stays put and a rolling
  * foot pivots about its planted toe instead of dragging, and the feet stay
  * on the floor the data has. The ankle keeps its animated world
- * orientation, which puts the toe on the anchor. The correction blends in and out over
- * SMGI_IK_BLEND seconds so contact changes never pop. A contact whose anchor
+ * orientation, which puts the toe on the anchor. The correction blends in
+ * over SMGI_IK_BLEND seconds and out over SMGI_IK_RELEASE_BLEND, eased at
+ * both ends, so contact changes never pop. A contact whose anchor
  * drifted implausibly far (a re-plan moved the body) is released rather
  * than stretched. Each solve starts from the foot's previous correction
  * (see solve_leg), and IK refreshes the world transform cache of the joints
@@ -277,7 +278,8 @@ void smgi_ik_apply(smg_character* ch, float dt) {
   const smgi_info* info = ch->graph->data.info;
   const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
   const uint32_t* legs[2] = {info->left_leg, info->right_leg};
-  float step = dt / SMGI_IK_BLEND;
+  const float step_in = dt / SMGI_IK_BLEND;
+  const float step_out = dt / SMGI_IK_RELEASE_BLEND;
   for (uint32_t f = 0; f < 2u; ++f) {
     smgi_foot* foot = &ch->ik.feet[f];
     if (!ch->ik.leg_ok[f]) continue;
@@ -315,16 +317,20 @@ void smgi_ik_apply(smg_character* ch, float dt) {
         foot->planted = 0; /* implausible: let go smoothly */
       }
     }
-    foot->weight += foot->planted ? step : -step;
+    foot->weight += foot->planted ? step_in : -step_out;
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
     if (foot->weight > 0.0f) {
+      /* eased (smoothstep): the correction starts and stops moving
+       * gently; a released foot's returns mostly in the middle of the
+       * blend-out, once the toe is off the floor, not as it pushes off */
+      const float w = foot->weight * foot->weight * (3.0f - 2.0f * foot->weight);
       /* ankle target: the animated ankle-from-toe offset at the anchor,
        * at the animation's height (the data's feet are on the data's
        * floor; IK only stops them sliding) */
       const float* an = ch->pose.wpos + 3u * ankle;
       float target[3] = {foot->anchor[0] + an[0] - ap[0], an[1],
                          foot->anchor[2] + an[2] - ap[2]};
-      solve_leg(ch, f, target, foot->weight);
+      solve_leg(ch, f, target, w);
     } else {
       /* a later contact starts from the animation again */
       memcpy(foot->fix[0], k_identity, sizeof k_identity);
