@@ -31,6 +31,20 @@
 #define MAX_PATH_POINTS 8192
 #define PI 3.14159265358979323846
 #define CMU_UNIT 0.056444f
+/* The issue's bound on the planted-toe p99 (cm/s): pairs faster than this
+ * are counted, and for IK on, checked against the IK-off run's same pair
+ * (IK does not change the plan, so frame i is the same lower frame in
+ * both): a pair as fast without IK is the animation's own. */
+#define FAST_CMS 100.0
+
+/* Planted pairs faster than FAST_CMS in a per-frame speed series (NaN =
+ * not planted). */
+static size_t count_fast(const double* v, size_t n) {
+  size_t i, c = 0;
+  for (i = 0; i < n; ++i)
+    if (v[i] > FAST_CMS) ++c;
+  return c;
+}
 
 typedef struct feet_path {
   const char* title;
@@ -75,6 +89,7 @@ typedef struct feet_run {
   eval_feet_geom geom;
   em_skate flag_skate; /* section 2's figure: runtime contact flags */
   double* speed;       /* per frame, both toes (NaN: not planted) */
+  double* any_speed;   /* per frame, both toes, planted or not */
   size_t frames;
 } feet_run;
 
@@ -146,7 +161,20 @@ static void run_one(smg_graph* g, const feet_joints* j, const float* path,
   toes[0] = t.joints + 3 * j->ltoe;
   toes[1] = t.joints + 3 * j->rtoe;
   out->speed = (double*)malloc(2 * t.frames * sizeof(double));
-  if (!out->speed ||
+  out->any_speed = (double*)malloc(2 * t.frames * sizeof(double));
+  if (out->any_speed) {
+    size_t f;
+    int k;
+    for (k = 0; k < 2; ++k) out->any_speed[k] = NAN;
+    for (f = 1; f < t.frames; ++f)
+      for (k = 0; k < 2; ++k) {
+        const double* a = toes[k] + (f - 1) * 3 * (size_t)t.joint_count;
+        const double* b = toes[k] + f * 3 * (size_t)t.joint_count;
+        out->any_speed[2 * f + k] =
+            100.0 * hypot(b[0] - a[0], b[2] - a[2]) / t.dt;
+      }
+  }
+  if (!out->speed || !out->any_speed ||
       eval_feet_geom_measure(toes, 2, 3 * (size_t)t.joint_count, t.frames,
                              t.dt, out->speed, &out->geom) != 0) {
     snprintf(out->error, sizeof(out->error), "out of memory");
@@ -162,7 +190,7 @@ static void run_one(smg_graph* g, const feet_joints* j, const float* path,
 /* The graph's own source clips: unmirrored lower clips of the blob, FK on
  * its skeleton, the geometric measure pooled over all of them. */
 static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
-                        uint32_t* clip_count) {
+                        uint32_t* clip_count, char* fast, size_t fast_size) {
   smgi_graph_data gd;
   char why[256];
   int32_t* parents = NULL;
@@ -176,6 +204,7 @@ static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
   out->mean_cms = out->p95_cms = out->p99_cms = out->max_cms = NAN;
   out->lowest_cm = NAN;
   *clip_count = 0;
+  fast[0] = '\0';
   if (smgi_blob_read(blob, size, 0, &gd, why, sizeof(why)) != SMG_OK)
     return 0;
   J = gd.joint_count;
@@ -223,11 +252,30 @@ static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
         all[m++] = speed[f];
         sum += speed[f];
       }
+    /* which clips have them: "N: clip n, clip n" */
+    {
+      size_t nf = count_fast(speed, 2 * (size_t)k->frame_count), len;
+      len = strlen(fast);
+      if (nf && len + 1 < fast_size)
+        snprintf(fast + len, fast_size - len, "%s%s %zu",
+                 len ? ", " : "", gd.strings + k->name, nf);
+    }
     if (g.lowest_cm < lowest) lowest = g.lowest_cm;
     out->frames += k->frame_count;
     ++*clip_count;
   }
   out->planted_pairs = m;
+  {
+    /* the total first, then the clips listed above */
+    char total[32];
+    size_t tl = (size_t)snprintf(total, sizeof(total), "%zu%s",
+                                 count_fast(all, m), fast[0] ? ": " : "");
+    size_t len = strlen(fast);
+    if (len + tl >= fast_size) len = fast_size - tl - 1;
+    memmove(fast + tl, fast, len);
+    fast[tl + len] = '\0';
+    memcpy(fast, total, tl);
+  }
   if (isfinite(lowest)) out->lowest_cm = lowest;
   if (m) {
     double* scratch = speed; /* big enough: 2 * total */
@@ -303,16 +351,18 @@ typedef struct feet_graph {
 } feet_graph;
 
 static void row(eval_ctx* ctx, const char* graph, const char* what,
-                const char* ik, const eval_feet_geom* g, const em_skate* s) {
+                const char* ik, const eval_feet_geom* g, const em_skate* s,
+                const char* fast) {
   char a[32], b[32], c[32], d[32], e[32];
-  eval_md(ctx, "| %s | %s | %s | %s | %s / %s / %s | %zu | %s |\n", graph,
-          what, ik,
+  eval_md(ctx, "| %s | %s | %s | %s | %s / %s / %s | %zu | %s | %s |\n",
+          graph, what, ik,
           s ? eval_fmt(a, sizeof(a), "%.2f", s->mean_cm) : "-",
           eval_fmt(b, sizeof(b), "%.1f", g->mean_cms),
           eval_fmt(c, sizeof(c), "%.1f", g->p95_cms),
           eval_fmt(d, sizeof(d), "%.1f", g->p99_cms), g->planted_pairs,
-          eval_fmt(e, sizeof(e), "%.1f", g->lowest_cm));
+          fast, eval_fmt(e, sizeof(e), "%.1f", g->lowest_cm));
 }
+
 
 static void figure(eval_ctx* ctx, const feet_run* on, const feet_run* off) {
   svp_figure* fig;
@@ -384,7 +434,8 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
   feet_joints j;
   eval_feet_geom src;
   uint32_t nsrc, walk = 0;
-  size_t p;
+  size_t p, fast_on = 0, fast_both = 0;
+  char fast[192], src_fast[192] = "";
   /* ranges over the paths for the summary: [IK on, IK off] x [lo, hi] */
   double mean_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
   double p99_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
@@ -397,10 +448,11 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
   }
   smg_graph_find_style(g, "walk", &walk);
   src.mean_cms = src.p99_cms = NAN;
-  if (source_clips(fg->blob, fg->size, &src, &nsrc)) {
+  if (source_clips(fg->blob, fg->size, &src, &nsrc, src_fast,
+                   sizeof(src_fast))) {
     char what[64];
     snprintf(what, sizeof(what), "source clips (%u, as baked)", nsrc);
-    row(ctx, fg->name, what, "-", &src, NULL);
+    row(ctx, fg->name, what, "-", &src, NULL, src_fast);
   }
   for (p = 0; p < PATH_COUNT && (!ctx->quick || p < 2); ++p) {
     static double xz[2 * MAX_PATH_POINTS];
@@ -422,11 +474,21 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     run_one(g, &j, path, (uint32_t)n, cons, nc, walk, SMG_CHARACTER_NO_IK,
             &off);
     if (!on.ok || !off.ok) {
-      eval_md(ctx, "| %s | %s | Not produced: %s | | | | |\n", fg->name,
+      eval_md(ctx, "| %s | %s | Not produced: %s | | | | | |\n", fg->name,
               k_paths[p].title, on.ok ? off.error : on.error);
     } else {
-      row(ctx, fg->name, k_paths[p].title, "on", &on.geom, &on.flag_skate);
-      row(ctx, fg->name, k_paths[p].title, "off", &off.geom, &off.flag_skate);
+      size_t n_on = count_fast(on.speed, 2 * on.frames), both = 0;
+      for (i = 0; i < 2 * on.frames && i < 2 * off.frames; ++i)
+        if (on.speed[i] > FAST_CMS && off.any_speed[i] > FAST_CMS) ++both;
+      fast_on += n_on;
+      fast_both += both;
+      snprintf(fast, sizeof(fast), "%zu (%zu)", n_on, both);
+      row(ctx, fg->name, k_paths[p].title, "on", &on.geom, &on.flag_skate,
+          fast);
+      snprintf(fast, sizeof(fast), "%zu",
+               count_fast(off.speed, 2 * off.frames));
+      row(ctx, fg->name, k_paths[p].title, "off", &off.geom, &off.flag_skate,
+          fast);
       range(mean_r[0], on.geom.mean_cms);
       range(mean_r[1], off.geom.mean_cms);
       range(p99_r[0], on.geom.p99_cms);
@@ -437,6 +499,10 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
                  "above without", fg->name, k_paths[p].title,
                  on.geom.mean_cms, on.geom.p99_cms, off.geom.mean_cms,
                  off.geom.p99_cms);
+      eval_check(ctx, both == n_on,
+                 "%s, %s: %zu planted pairs over %.0f cm/s with IK, %zu of "
+                 "them as fast without IK; bound: IK adds none", fg->name,
+                 k_paths[p].title, n_on, FAST_CMS, both);
       eval_check(ctx, fabs(on.geom.lowest_cm - off.geom.lowest_cm) <= 1.0,
                  "%s, %s: lowest toe %.1f cm with IK, %.1f without "
                  "(bound 1 cm apart)", fg->name, k_paths[p].title,
@@ -444,15 +510,22 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
     }
     free(on.speed);
     free(off.speed);
+    free(on.any_speed);
+    free(off.any_speed);
   }
   if (mean_r[0][0] <= mean_r[0][1])
     eval_summary(ctx,
                  "**Feet from geometry**, %s: planted-toe speed with foot IK "
                  "mean %.1f-%.1f cm/s, p99 %.0f-%.0f per path; without IK "
-                 "%.1f-%.1f, p99 %.0f-%.0f; the source clips %.1f, p99 %.0f.",
+                 "%.1f-%.1f, p99 %.0f-%.0f; the source clips %.1f, p99 %.0f. "
+                 "Planted pairs faster than %.0f cm/s with IK, all paths: "
+                 "%zu, of which the toe moves as fast at the same frame "
+                 "without IK in %zu (the animation's own swing); in the "
+                 "source clips %s.",
                  fg->name, mean_r[0][0], mean_r[0][1], p99_r[0][0],
                  p99_r[0][1], mean_r[1][0], mean_r[1][1], p99_r[1][0],
-                 p99_r[1][1], src.mean_cms, src.p99_cms);
+                 p99_r[1][1], src.mean_cms, src.p99_cms, FAST_CMS, fast_on,
+                 fast_both, src_fast);
   smg_graph_destroy(g);
 }
 
@@ -478,6 +551,8 @@ static void draw_straight(eval_ctx* ctx, const void* blob, size_t size) {
     if (on.ok && off.ok) figure(ctx, &on, &off);
     free(on.speed);
     free(off.speed);
+    free(on.any_speed);
+    free(off.any_speed);
   }
   smg_graph_destroy(g);
 }
@@ -485,7 +560,9 @@ static void draw_straight(eval_ctx* ctx, const void* blob, size_t size) {
 static void table_head(eval_ctx* ctx) {
   eval_md(ctx, "| Graph | path / data | IK | flag-based skate (cm/frame) | "
                "planted-toe speed mean / p95 / p99 (cm/s) | planted pairs | "
-               "lowest toe (cm) |\n|---|---|---|---:|---:|---:|---:|\n");
+               "pairs over %.0f cm/s (IK on: of which the toe moves as fast "
+               "at that frame without IK) | lowest toe (cm) |\n"
+               "|---|---|---|---:|---:|---:|---:|---:|\n", FAST_CMS);
 }
 
 void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
