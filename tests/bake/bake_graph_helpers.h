@@ -13,6 +13,7 @@
 
 #include "bake_clip.h"
 #include "bake_graph.h"
+#include "bake_math.h"
 #include "bake_synthetic.h"
 #include "blob.h"
 #include "smg_bake.h"
@@ -130,6 +131,62 @@ static inline int32_t bg_components(const smgi_node* nodes, uint32_t nn,
   free(remap);
   smgb_graph_free(&g);
   return c;
+}
+
+static inline int32_t bg_joint(const smgb_clip* c, const char* name) {
+  int32_t j = smgb_skeleton_find(&c->skeleton, name);
+  if (j < 0) fail_msg("no joint %s", name);
+  return j;
+}
+
+static inline void bg_put(float* pose, int32_t j, const double q[4]) {
+  int c;
+  for (c = 0; c < 4; ++c) pose[3 + 4 * j + c] = (float)q[c];
+}
+
+static inline void bg_axis_q(int axis, double angle, double q[4]) {
+  q[0] = q[1] = q[2] = 0.0;
+  q[axis] = sin(0.5 * angle);
+  q[3] = cos(0.5 * angle);
+}
+
+/* Replace the upper body of clip c (a synthetic walk) with a motion of
+ * `per_stride` cycles per gait cycle (stride period T): the spine base
+ * cancels the pelvis's rotation but for its heading (the ground frame's),
+ * so the upper body's pose in the ground frame is a function of that
+ * motion's phase alone, like a dribbler's arm that repeats on either foot
+ * rather than once per stride. */
+static inline void bg_retime_upper_body(smgb_clip* c, double T,
+                                        double per_stride) {
+  int32_t base = bg_joint(c, "LowerBack"), rarm = bg_joint(c, "RightArm");
+  int32_t rfore = bg_joint(c, "RightForeArm"), larm = bg_joint(c, "LeftArm");
+  int32_t lfore = bg_joint(c, "LeftForeArm");
+  uint32_t f, S = SMGB_STRIDE(c->skeleton.joint_count);
+  for (f = 0; f < c->frame_count; ++f) {
+    float* pose = c->poses + (size_t)f * S;
+    double u = 2.0 * 3.14159265358979323846 * per_stride * (double)f /
+               ((double)c->frame_rate * T);
+    double root[4], inv[4], a[4], b[4], q[4];
+    int k;
+    for (k = 0; k < 4; ++k) root[k] = pose[3 + k];
+    smgb_q_conj(root, inv);
+    smgb_q_yaw(smgb_heading_of(root), b);
+    smgb_q_mul(inv, b, q);
+    bg_axis_q(1, 0.25 * sin(u), a);
+    bg_axis_q(0, 0.15 + 0.1 * cos(u), b);
+    smgb_q_mul(q, a, root);
+    smgb_q_mul(root, b, a);
+    smgb_q_normalize(a);
+    bg_put(pose, base, a);
+    bg_axis_q(2, -1.2 + 0.5 * sin(u), q);
+    bg_put(pose, rarm, q);
+    bg_axis_q(1, 0.8 + 0.6 * cos(u), q);
+    bg_put(pose, rfore, q);
+    bg_axis_q(2, 1.3, q);
+    bg_put(pose, larm, q);
+    bg_axis_q(1, -0.3, q);
+    bg_put(pose, lfore, q);
+  }
 }
 
 #endif /* BAKE_GRAPH_HELPERS_H */

@@ -23,62 +23,8 @@
 #include <cmocka.h>
 
 #include "bake/bake_graph_helpers.h"
-#include "bake_math.h"
 
 #define RATE 30.0
-#define PI 3.14159265358979323846
-
-static int32_t joint(const smgb_clip* c, const char* name) {
-  int32_t j = smgb_skeleton_find(&c->skeleton, name);
-  if (j < 0) fail_msg("no joint %s", name);
-  return j;
-}
-
-static void put(float* pose, int32_t j, const double q[4]) {
-  int c;
-  for (c = 0; c < 4; ++c) pose[3 + 4 * j + c] = (float)q[c];
-}
-
-static void axis_q(int axis, double angle, double q[4]) {
-  q[0] = q[1] = q[2] = 0.0;
-  q[axis] = sin(0.5 * angle);
-  q[3] = cos(0.5 * angle);
-}
-
-/* Replace the upper body of clip c with a motion of `per_stride` cycles
- * per gait cycle (stride period T): the spine base cancels the pelvis's
- * rotation but for its heading (the ground frame's), so the upper body's
- * pose in the ground frame is a function of that motion's phase alone. */
-static void retime_upper_body(smgb_clip* c, double T, double per_stride) {
-  int32_t base = joint(c, "LowerBack"), rarm = joint(c, "RightArm");
-  int32_t rfore = joint(c, "RightForeArm"), larm = joint(c, "LeftArm");
-  int32_t lfore = joint(c, "LeftForeArm");
-  uint32_t f, S = SMGB_STRIDE(c->skeleton.joint_count);
-  for (f = 0; f < c->frame_count; ++f) {
-    float* pose = c->poses + (size_t)f * S;
-    double u = 2.0 * PI * per_stride * (double)f / (RATE * T);
-    double root[4], inv[4], a[4], b[4], q[4];
-    int k;
-    for (k = 0; k < 4; ++k) root[k] = pose[3 + k];
-    smgb_q_conj(root, inv);
-    smgb_q_yaw(smgb_heading_of(root), b);
-    smgb_q_mul(inv, b, q);
-    axis_q(1, 0.25 * sin(u), a);
-    axis_q(0, 0.15 + 0.1 * cos(u), b);
-    smgb_q_mul(q, a, root);
-    smgb_q_mul(root, b, a);
-    smgb_q_normalize(a);
-    put(pose, base, a);
-    axis_q(2, -1.2 + 0.5 * sin(u), q);
-    put(pose, rarm, q);
-    axis_q(1, 0.8 + 0.6 * cos(u), q);
-    put(pose, rfore, q);
-    axis_q(2, 1.3, q);
-    put(pose, larm, q);
-    axis_q(1, -0.3, q);
-    put(pose, lfore, q);
-  }
-}
 
 /* Stride period (s) of the synthetic walk. */
 static double walk_period(void) {
@@ -101,7 +47,7 @@ static void bake_dribble(double T, double per_stride, double strides,
   bg_add(&s, SMGB_SYNTH_WALK, 12.0f, 0.0f, SMG_BAKE_ROLE_LOWER, "walk");
   bg_add(&s, SMGB_SYNTH_WALK, (float)(strides * T), 0.0f,
          SMG_BAKE_ROLE_UPPER, "dribble");
-  retime_upper_body(&s.clips[1], T, per_stride);
+  bg_retime_upper_body(&s.clips[1], T, per_stride);
   if (bg_bake(&s, NULL, res) != SMG_OK) fail_msg("bake: %s", res->error);
   bg_free(&s);
 }
