@@ -170,6 +170,7 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->anchor[0] = d.position[0];
   ch->anchor[1] = d.position[2];
   ch->sync.rate = 1.0f;
+  ch->sync.error = NAN;
   ch->lower.last_frame = 0xffffffffu;
   r = smgi_plan_start(ch, d.position[0], d.position[2], d.heading);
   if (r != SMG_OK) {

@@ -90,6 +90,7 @@ static int phase_speed(const smg_graph* g, const smg_character* ch,
 void smgi_sync_update(smg_character* ch) {
   if (ch->upper.action == 0) {
     ch->sync.rate = 1.0f;
+    ch->sync.error = NAN;
     return;
   }
   const smg_graph* g = ch->graph;
@@ -142,7 +143,22 @@ void smgi_sync_update(smg_character* ch) {
       if (pl >= 0.0f && pu >= 0.0f) {
         float dphi = pl - pu;
         dphi -= floorf(dphi + 0.5f); /* (-0.5, 0.5] cycles */
+        /* Continuous with the last update's error: once the lock has
+         * chosen which way to make up a difference it keeps going that
+         * way, even when further jumps (an action graph that had to keep
+         * transitions between different gait phases, docs/baker.md) take
+         * the difference past half a cycle. Wrapped, it would turn round
+         * there and make the rest up the other way: a whole stride
+         * slipped against the legs. Up to a cycle; a difference beyond is
+         * let go as a slip. */
+        float prev = ch->sync.error;
+        if (prev == prev) dphi += floorf(prev - dphi + 0.5f);
+        if (dphi > 1.0f) dphi -= 1.0f;
+        if (dphi < -1.0f) dphi += 1.0f;
+        ch->sync.error = dphi;
         rate *= 1.0f + SMGI_SYNC_PHASE_LOCK * dphi;
+      } else {
+        ch->sync.error = NAN;
       }
       rate = smgi_clampf(rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
       ch->sync.rate += SMGI_SYNC_SMOOTH * (rate - ch->sync.rate);

@@ -8,7 +8,9 @@
 #include "smg.h"
 
 typedef struct smgi_sync {
-  float rate; /* upper frames per lower frame */
+  float rate;  /* upper frames per lower frame */
+  float error; /* lower - upper gait phase at the last update, cycles,
+                  kept continuous from update to update (NaN: none yet) */
 } smgi_sync;
 
 /* Recompute the rate; called when the lower playhead enters a new frame. */

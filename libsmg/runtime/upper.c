@@ -71,11 +71,13 @@ static void switch_to(smg_character* ch, uint32_t action, uint32_t uedge,
   ch->upper.next = choose_next(ch, e->to);
   if (ch->upper.next == SMGI_NONE) ch->upper.next = uedge;
   ch->sync.rate = 1.0f;
+  ch->sync.error = NAN;
 }
 
 void smgi_upper_start(smg_character* ch) {
   ch->upper.fade = 1.0f;
   ch->sync.rate = 1.0f;
+  ch->sync.error = NAN;
   memcpy(ch->upper.correction, IDENTITY, sizeof IDENTITY);
   uint32_t a = ch->cons.base_action;
   ch->upper.action = 0;
