@@ -125,6 +125,17 @@ typedef struct smg_bake_desc {
                                 or leave the whole struct zero) */
   smg_bake_progress_fn progress; /* optional */
   void* progress_user;
+  /* Added with retargeting (a desc whose struct_size ends before these
+   * fields bakes onto the first clip's skeleton): */
+  const char* target_path;   /* rig whose skeleton, rest pose and
+                                proportions the blob uses (.bvh, or
+                                .gltf/.glb/.fbx through assimp: the first
+                                frame of target_animation is its rest);
+                                every clip is retargeted onto it. Relative
+                                paths are joined to data_dir. NULL = the
+                                first clip's skeleton */
+  float target_unit_scale;   /* rig file units -> metres; 0 = guess */
+  uint32_t target_animation; /* assimp rigs: which animation */
 } smg_bake_desc;
 
 #define SMG_BAKE_MAX_STAGES 16

@@ -114,6 +114,8 @@ typedef struct smgb_splice {
 typedef struct smgb_bake {
   smgb_options opt;
   smgb_skeleton skel;          /* reference skeleton (owned) */
+  char target_name[SMGB_NAME_MAX]; /* rig file when baking onto a target,
+                                      "" = the first clip's skeleton */
   smgb_body body;
   uint32_t J, stride;
 

@@ -66,6 +66,12 @@ smg_result smgb_segments_init(smgb_bake* b) {
     int32_t p = smgb_skeleton_find(&b->skel, d->proximal);
     int32_t q = smgb_skeleton_find(&b->skel, d->distal);
     smgb_segment* s;
+    /* Skeletons without CMU's helper joints (Mixamo-style rigs): the
+     * trunk ends at the spine base, the head starts at its parent. */
+    if (q < 0 && strcmp(d->distal, "LowerBack") == 0)
+      q = (int32_t)body->spine_base;
+    if (p < 0 && q >= 0 && strcmp(d->proximal, "Neck1") == 0)
+      p = b->skel.parents[q];
     if (p < 0 || q < 0) {
       /* A hand without a finger joint: COG at the wrist. Anything else is
        * a skeleton we cannot split. */

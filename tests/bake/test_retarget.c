@@ -1,0 +1,357 @@
+/*
+ * test_retarget.c - baking onto a target rig (bake_retarget.c): the
+ * generated Mixamo-style A-pose rig with 8 % longer legs
+ * (bake_synth_rig.c) as target, synthetic clips baked onto it and walked
+ * through the public API: exported bone lengths equal the rig's, toes rest
+ * on the floor, planted toes stay put, path error stays in line with the
+ * same clips on their own skeleton. The retarget math is also checked
+ * frame by frame (limb directions, ankles at the scaled source ankles),
+ * and bad rigs/clips give errors naming file and joint with nothing
+ * written.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "bake_graph_helpers.h"
+#include "bake_retarget.h"
+#include "retarget_measure.h"
+
+static char g_dir[256];
+static char g_rig[320];
+
+static int setup(void** state) {
+  smgb_error err;
+  (void)state;
+  snprintf(g_dir, sizeof g_dir, "/tmp/smg_retarget_XXXXXX");
+  if (!mkdtemp(g_dir)) return -1;
+  snprintf(g_rig, sizeof g_rig, "%s/rig.bvh", g_dir);
+  return smgb_synth_write_rig(g_rig, &err) == SMG_OK ? 0 : -1;
+}
+
+static int teardown(void** state) {
+  char cmd[600];
+  (void)state;
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", g_dir);
+  return system(cmd) == 0 ? 0 : -1;
+}
+
+static void bone_lengths(const smgb_skeleton* s, double* len) {
+  uint32_t j;
+  for (j = 0; j < s->joint_count; ++j)
+    len[j] = sqrt((double)s->offsets[j][0] * s->offsets[j][0] +
+                  (double)s->offsets[j][1] * s->offsets[j][1] +
+                  (double)s->offsets[j][2] * s->offsets[j][2]);
+}
+
+static void test_rig_loads(void** state) {
+  smgb_skeleton rig;
+  smgb_error err;
+  (void)state;
+  assert_int_equal(smgb_rig_load(g_rig, 1.0f, 0, &rig, &err), SMG_OK);
+  assert_int_equal(rig.joint_count, 22);
+  assert_string_equal(rig.names[0], "mixamorig:Hips");
+  /* legs 8 % longer than the synthetic skeleton's 0.42 + 0.42 m */
+  assert_true(fabs(smgb_skeleton_leg_length(&rig) - 0.92) < 1e-4);
+  smgb_skeleton_free(&rig);
+}
+
+static void fk_d(const smgb_skeleton* s, const float* pose, double* out) {
+  float* p = malloc(sizeof(float) * 3 * s->joint_count);
+  uint32_t j;
+  smgb_fk(s, pose, p, NULL);
+  for (j = 0; j < 3 * s->joint_count; ++j) out[j] = p[j];
+  free(p);
+}
+
+static void unit_dir(const double* p, int a, int b, double d[3]) {
+  double n;
+  int k;
+  for (k = 0; k < 3; ++k) d[k] = p[3 * b + k] - p[3 * a + k];
+  n = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  for (k = 0; k < 3; ++k) d[k] /= n;
+}
+
+/* Frame by frame: arms, feet and neck point where the source's do, ankles
+ * sit at the source ankles scaled by the leg ratio (the leg solve may bend
+ * thigh and shin a little differently when the proportions differ). */
+static void test_retarget_geometry(void** state) {
+  smgb_synth_params p;
+  smgb_clip src, dst;
+  smgb_skeleton rig;
+  smgb_error err;
+  uint32_t f;
+  double k;
+  static const char* const pairs[][2] = {
+      {"LeftArm", "LeftForeArm"},   {"LeftForeArm", "LeftHand"},
+      {"RightForeArm", "RightHand"}, {"LeftFoot", "LeftToeBase"},
+      {"Neck", "Head"}};
+  (void)state;
+  memset(&p, 0, sizeof p);
+  p.kind = SMGB_SYNTH_WALK;
+  p.duration = 3.0f;
+  p.frame_rate = 30.0f;
+  p.turn_rate = 0.4f;
+  assert_int_equal(smgb_synth_generate(&p, &src, NULL), SMG_OK);
+  assert_int_equal(smgb_clip_copy(&src, &dst), SMG_OK);
+  assert_int_equal(smgb_rig_load(g_rig, 1.0f, 0, &rig, &err), SMG_OK);
+  assert_int_equal(smgb_retarget_clip(&dst, &rig, "rig.bvh", &err), SMG_OK);
+  assert_int_equal(dst.skeleton.joint_count, 22);
+  k = smgb_skeleton_leg_length(&rig) / smgb_skeleton_leg_length(&src.skeleton);
+  for (f = 0; f < src.frame_count; f += 7) {
+    double ps[3 * 31], pt[3 * 22];
+    size_t i;
+    fk_d(&src.skeleton, src.poses + (size_t)f * SMGB_STRIDE(31), ps);
+    fk_d(&dst.skeleton, dst.poses + (size_t)f * SMGB_STRIDE(22), pt);
+    for (i = 0; i < sizeof pairs / sizeof pairs[0]; ++i) {
+      double ds[3], dt[3];
+      int sa = smgb_skeleton_find(&src.skeleton, pairs[i][0]);
+      int sb = smgb_skeleton_find(&src.skeleton, pairs[i][1]);
+      int ta = smgb_skeleton_find(&dst.skeleton, pairs[i][0]);
+      int tb = smgb_skeleton_find(&dst.skeleton, pairs[i][1]);
+      unit_dir(ps, sa, sb, ds);
+      unit_dir(pt, ta, tb, dt);
+      if (ds[0] * dt[0] + ds[1] * dt[1] + ds[2] * dt[2] < 0.999)
+        fail_msg("frame %u %s->%s: %.4f", f, pairs[i][0], pairs[i][1],
+                 ds[0] * dt[0] + ds[1] * dt[1] + ds[2] * dt[2]);
+    }
+    for (i = 0; i < 2; ++i) {
+      const char* n = i ? "RightFoot" : "LeftFoot";
+      int sa = smgb_skeleton_find(&src.skeleton, n);
+      int ta = smgb_skeleton_find(&dst.skeleton, n);
+      int c;
+      for (c = 0; c < 3; ++c)
+        assert_true(fabs(pt[3 * ta + c] - k * ps[3 * sa + c]) < 1e-3);
+    }
+  }
+  smgb_clip_free(&src);
+  smgb_clip_free(&dst);
+  smgb_skeleton_free(&rig);
+}
+
+typedef struct walk_case {
+  const char* name;
+  float xz[2 * 64];
+  uint32_t n;
+} walk_case;
+
+static uint32_t paths(walk_case* c) {
+  uint32_t i;
+  c[0].name = "straight 12 m";
+  c[0].n = 25;
+  for (i = 0; i < 25; ++i) {
+    c[0].xz[2 * i] = 0.0f;
+    c[0].xz[2 * i + 1] = 0.5f * (float)i;
+  }
+  for (i = 0; i < 2; ++i) {
+    /* 5 m, a quarter turn of radius 3 m, 5 m */
+    uint32_t n = 0, s;
+    float sg = i ? -1.0f : 1.0f;
+    c[1 + i].name = i ? "right turn" : "left turn";
+    for (s = 0; s <= 10; ++s, ++n) {
+      c[1 + i].xz[2 * n] = 0.0f;
+      c[1 + i].xz[2 * n + 1] = 0.5f * (float)s;
+    }
+    for (s = 1; s <= 20; ++s, ++n) {
+      float t = 1.5707963f * (float)s / 20.0f;
+      c[1 + i].xz[2 * n] = sg * (3.0f - 3.0f * cosf(t));
+      c[1 + i].xz[2 * n + 1] = 5.0f + 3.0f * sinf(t);
+    }
+    for (s = 1; s <= 10; ++s, ++n) {
+      c[1 + i].xz[2 * n] = sg * (3.0f + 0.5f * (float)s);
+      c[1 + i].xz[2 * n + 1] = 8.0f;
+    }
+    c[1 + i].n = n;
+  }
+  return 3;
+}
+
+/* Walks every path on `g`; returns the worst of each measure. */
+static void walk_all(smg_graph* g, const double* rig_len,
+                     const uint32_t toes[2], rm_result* worst,
+                     double* path_mean) {
+  walk_case c[3];
+  uint32_t n = paths(c), i;
+  memset(worst, 0, sizeof *worst);
+  worst->toe_floor_cm[0] = worst->toe_floor_cm[1] = 1e9;
+  *path_mean = 0.0;
+  for (i = 0; i < n; ++i) {
+    rm_result r;
+    int k;
+    assert_int_equal(rm_walk(g, c[i].xz, c[i].n, 20.0f, rig_len, toes, &r), 0);
+    if (r.bone_error_m > worst->bone_error_m)
+      worst->bone_error_m = r.bone_error_m;
+    for (k = 0; k < 2; ++k) {
+      if (r.toe_floor_cm[k] < worst->toe_floor_cm[k])
+        worst->toe_floor_cm[k] = r.toe_floor_cm[k];
+    }
+    if (r.planted_cms > worst->planted_cms) worst->planted_cms = r.planted_cms;
+    if (r.path_error_max_m > worst->path_error_max_m)
+      worst->path_error_max_m = r.path_error_max_m;
+    *path_mean += r.path_error_mean_m / n;
+  }
+}
+
+static void test_synthetic_onto_rig(void** state) {
+  bg_set s;
+  smg_bake_desc d;
+  smg_bake_result res, own;
+  smg_graph *g = NULL, *go = NULL;
+  smgb_skeleton rig;
+  smgb_error err;
+  double len[22], own_len[64], own_mean, rig_mean;
+  rm_result w, wo;
+  uint32_t toes[2], own_toes[2];
+  smgi_graph_data gd;
+  (void)state;
+  bg_standard(&s, smgt_quick() ? 4.0f : 6.0f);
+  assert_int_equal(smgb_rig_load(g_rig, 1.0f, 0, &rig, &err), SMG_OK);
+  bone_lengths(&rig, len);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.clips = s.descs;
+  d.clip_count = s.count;
+  d.target_path = g_rig;
+  d.target_unit_scale = 1.0f;
+  memset(&res, 0, sizeof res);
+  res.struct_size = sizeof res;
+  if (smg_bake_run(&d, &res) != SMG_OK) fail_msg("bake: %s", res.error);
+  bg_read(&res, &gd);
+  assert_int_equal(gd.joint_count, 22);
+  assert_string_equal(gd.strings + gd.joints[5].name, "mixamorig:Head");
+  assert_int_equal(smg_graph_load_memory(res.blob, res.blob_size, NULL, &g),
+                   SMG_OK);
+  toes[0] = (uint32_t)smgb_skeleton_find(&rig, "LeftToeBase");
+  toes[1] = (uint32_t)smgb_skeleton_find(&rig, "RightToeBase");
+  walk_all(g, len, toes, &w, &rig_mean);
+
+  /* the same clips on their own skeleton */
+  assert_int_equal(bg_bake(&s, NULL, &own), SMG_OK);
+  assert_int_equal(smg_graph_load_memory(own.blob, own.blob_size, NULL, &go),
+                   SMG_OK);
+  bone_lengths(&s.clips[0].skeleton, own_len);
+  own_toes[0] = (uint32_t)smgb_skeleton_find(&s.clips[0].skeleton, "LeftToeBase");
+  own_toes[1] = (uint32_t)smgb_skeleton_find(&s.clips[0].skeleton, "RightToeBase");
+  walk_all(go, own_len, own_toes, &wo, &own_mean);
+  printf("synthetic -> rig: bone error %.2f mm, toe floor %.1f/%.1f cm, "
+         "planted toe %.1f cm/s, path error mean %.3f m max %.2f m "
+         "(own skeleton: planted %.1f cm/s, path mean %.3f max %.2f)\n",
+         1e3 * w.bone_error_m, w.toe_floor_cm[0], w.toe_floor_cm[1],
+         w.planted_cms, rig_mean, w.path_error_max_m, wo.planted_cms,
+         own_mean, wo.path_error_max_m);
+  assert_true(w.bone_error_m < 1e-3);
+  assert_true(w.toe_floor_cm[0] >= 0.0 && w.toe_floor_cm[0] <= 5.0);
+  assert_true(w.toe_floor_cm[1] >= 0.0 && w.toe_floor_cm[1] <= 5.0);
+  /* retargeting adds no skate to what the runtime does with the clips on
+   * their own skeleton (the issue's 20 cm/s is checked on the CMU set in
+   * the measurement, docs/baker.md) */
+  assert_true(w.planted_cms <= 1.2 * wo.planted_cms + 2.0);
+  assert_true(rig_mean <= 1.5 * own_mean + 0.05);
+  smg_graph_destroy(g);
+  smg_graph_destroy(go);
+  smg_bake_result_free(&res);
+  smg_bake_result_free(&own);
+  smgb_skeleton_free(&rig);
+  bg_free(&s);
+}
+
+static void write_text(const char* path, const char* text) {
+  FILE* f = fopen(path, "w");
+  assert_non_null(f);
+  fputs(text, f);
+  fclose(f);
+}
+
+/* A rig whose legs no convention names: the bake fails naming the rig and
+ * the missing joint, and smg-bake writes nothing. */
+static void test_bad_rig(void** state) {
+  static const char* rig =
+      "HIERARCHY\nROOT Pelvis\n{\n OFFSET 0 0 0\n"
+      " CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation "
+      "Yrotation\n JOINT Thing_A\n {\n  OFFSET 0.1 -0.4 0\n"
+      "  CHANNELS 3 Zrotation Xrotation Yrotation\n  End Site\n  {\n"
+      "   OFFSET 0 -0.4 0\n  }\n }\n}\nMOTION\nFrames: 1\n"
+      "Frame Time: 0.0333333\n0 0.9 0 0 0 0 0 0 0\n";
+  char path[400], out[400], cmd[1400];
+  bg_set s;
+  smg_bake_desc d;
+  smg_bake_result res;
+  (void)state;
+  snprintf(path, sizeof path, "%s/legless.bvh", g_dir);
+  write_text(path, rig);
+  bg_standard(&s, 4.0f);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.clips = s.descs;
+  d.clip_count = s.count;
+  d.target_path = path;
+  d.target_unit_scale = 1.0f;
+  memset(&res, 0, sizeof res);
+  res.struct_size = sizeof res;
+  assert_int_not_equal(smg_bake_run(&d, &res), SMG_OK);
+  assert_null(res.blob);
+  printf("error: %s\n", res.error);
+  assert_non_null(strstr(res.error, "legless.bvh"));
+  assert_non_null(strstr(res.error, "LeftUpLeg"));
+  bg_free(&s);
+
+  /* a missing rig file */
+  d.target_path = "no/such/rig.bvh";
+  bg_standard(&s, 4.0f);
+  d.clips = s.descs;
+  assert_int_not_equal(smg_bake_run(&d, &res), SMG_OK);
+  assert_non_null(strstr(res.error, "no/such/rig.bvh"));
+  bg_free(&s);
+
+  /* smg-bake: error naming the rig, no output file */
+  snprintf(out, sizeof out, "%s/out.smg", g_dir);
+  snprintf(cmd, sizeof cmd,
+           "%s/smg-bake -q --lower walk %s/synthetic/synthetic_walk_straight.bvh "
+           "--unit 1 --target '%s' --target-unit 1 -o '%s' 2>'%s/err.txt'",
+           SMG_BUILD_DIR, SMG_BUILD_DIR, path, out, g_dir);
+  assert_int_not_equal(system(cmd), 0);
+  assert_int_not_equal(access(out, F_OK), 0);
+}
+
+/* A clip without legs cannot be put on the rig: the error names it. */
+static void test_clip_without_legs(void** state) {
+  smgb_clip c;
+  smgb_skeleton rig;
+  smgb_error err;
+  smgb_synth_params p;
+  uint32_t j;
+  (void)state;
+  memset(&p, 0, sizeof p);
+  p.kind = SMGB_SYNTH_WALK;
+  p.duration = 2.0f;
+  p.frame_rate = 30.0f;
+  assert_int_equal(smgb_synth_generate(&p, &c, NULL), SMG_OK);
+  snprintf(c.name, sizeof c.name, "odd.bvh");
+  for (j = 0; j < c.skeleton.joint_count; ++j)
+    if (strcmp(c.skeleton.names[j], "RightFoot") == 0)
+      snprintf(c.skeleton.names[j], SMGB_NAME_MAX, "Paw");
+  assert_int_equal(smgb_rig_load(g_rig, 1.0f, 0, &rig, &err), SMG_OK);
+  assert_int_equal(smgb_retarget_clip(&c, &rig, "rig.bvh", &err),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  printf("error: %s\n", err.message);
+  assert_non_null(strstr(err.message, "odd.bvh"));
+  assert_non_null(strstr(err.message, "RightFoot"));
+  assert_int_equal(c.skeleton.joint_count, 31); /* unchanged */
+  smgb_clip_free(&c);
+  smgb_skeleton_free(&rig);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_rig_loads),
+      cmocka_unit_test(test_retarget_geometry),
+      cmocka_unit_test(test_synthetic_onto_rig),
+      cmocka_unit_test(test_bad_rig),
+      cmocka_unit_test(test_clip_without_legs),
+  };
+  return cmocka_run_group_tests(tests, setup, teardown);
+}
