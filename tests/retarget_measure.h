@@ -33,9 +33,10 @@ static int rm_cmp(const void* a, const void* b) {
 }
 
 /* Walk `path_xz` (n points) at 30 Hz for at most `seconds`. `rig_len` (J
- * floats) are the target's bone lengths; toes[2] the toe joints. */
+ * floats) are the target's bone lengths; toes[2] the toe joints; flags are
+ * smg_character_desc.flags (SMG_CHARACTER_NO_IK). */
 static inline int rm_walk(smg_graph* g, const float* path_xz, uint32_t n,
-                          float seconds, const double* rig_len,
+                          float seconds, uint32_t flags, const double* rig_len,
                           const uint32_t toes[2], rm_result* out) {
   smg_graph_info info;
   smg_character* ch = NULL;
@@ -50,6 +51,7 @@ static inline int rm_walk(smg_graph* g, const float* path_xz, uint32_t n,
   J = info.joint_count;
   memset(&cd, 0, sizeof cd);
   cd.struct_size = sizeof cd;
+  cd.flags = flags;
   if (smg_character_create(g, &cd, &ch) != SMG_OK) return -1;
   if (smg_character_set_path(ch, path_xz, n) != SMG_OK) {
     smg_character_destroy(ch);

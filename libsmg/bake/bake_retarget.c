@@ -21,9 +21,10 @@
  *           ancestor, so the end keeps its rest relation to its limb.
  * world(A) = world_source(pair(A)) * alignment(A) [* swing]. Unpaired target
  * joints (fingers, twist bones) keep their rest rotation relative to their
- * parent. Finally the root moves by k = target leg / source leg and a
- * two-bone solve per leg puts the ankle at k * the source ankle, keeping the
- * knee's bend plane.
+ * parent. Finally the root follows the source pelvis scaled by k = target
+ * leg / source leg (shifted so the hips' midpoint matches the scaled
+ * source's) and a two-bone solve per leg puts the ankle at k * the source
+ * ankle, keeping the knee's bend plane.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -542,7 +543,18 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
     }
   }
   propagate_rest(tgt, p, sc->w);
+  /* Root: where the source's pelvis is, scaled by k, then shifted so the
+   * hip joints' midpoint lands on the scaled source's: hip-to-ankle
+   * distances are then k times the source's and the leg solve always
+   * reaches (a rig whose hips sit higher in its pelvis would otherwise
+   * over-stretch its stance legs and drag the feet). */
   for (t = 0; t < 3; ++t) root[t] = p->k * sc->ps[3 * p->map[0] + t];
+  target_positions(tgt, root, sc->w, sc->pt);
+  for (t = 0; t < 3; ++t)
+    root[t] += 0.5 * (p->k * ((double)sc->ps[3 * p->sleg[0][0] + t] +
+                              sc->ps[3 * p->sleg[1][0] + t]) -
+                      sc->pt[3 * p->leg[0][0] + t] -
+                      sc->pt[3 * p->leg[1][0] + t]);
   target_positions(tgt, root, sc->w, sc->pt);
   for (side = 0; side < 2; ++side) {
     double goal[3];
@@ -597,10 +609,21 @@ smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_skeleton* target,
   r = SMG_ERROR_OUT_OF_MEMORY;
   if (sc.ps && sc.ws && sc.w && sc.pt && poses &&
       smgb_skeleton_copy(target, &skel) == SMG_OK) {
-    for (f = 0; f < clip->frame_count; ++f)
+    for (f = 0; f < clip->frame_count; ++f) {
+      float* o = poses + (size_t)f * SMGB_STRIDE(T);
+      uint32_t t;
       retarget_frame(&plan, &clip->skeleton, target,
-                     clip->poses + (size_t)f * SMGB_STRIDE(S),
-                     poses + (size_t)f * SMGB_STRIDE(T), &sc);
+                     clip->poses + (size_t)f * SMGB_STRIDE(S), o, &sc);
+      /* keep each joint's quaternion in the previous frame's hemisphere:
+       * later stages interpolate neighbouring frames component-wise */
+      for (t = 0; f > 0 && t < T; ++t) {
+        float* q = o + 3 + 4 * t;
+        const float* r = q - SMGB_STRIDE(T);
+        if (q[0] * r[0] + q[1] * r[1] + q[2] * r[2] + q[3] * r[3] < 0.0f) {
+          q[0] = -q[0]; q[1] = -q[1]; q[2] = -q[2]; q[3] = -q[3];
+        }
+      }
+    }
     smgb_skeleton_free(&clip->skeleton);
     free(clip->poses);
     clip->skeleton = skel;

@@ -18,6 +18,7 @@
 #include <cmocka.h>
 
 #include "bake_graph_helpers.h"
+#include "bake_manifest.h"
 #include "bake_retarget.h"
 #include "retarget_measure.h"
 
@@ -171,7 +172,7 @@ static uint32_t paths(walk_case* c) {
 }
 
 /* Walks every path on `g`; returns the worst of each measure. */
-static void walk_all(smg_graph* g, const double* rig_len,
+static void walk_all(smg_graph* g, uint32_t flags, const double* rig_len,
                      const uint32_t toes[2], rm_result* worst,
                      double* path_mean) {
   walk_case c[3];
@@ -182,7 +183,7 @@ static void walk_all(smg_graph* g, const double* rig_len,
   for (i = 0; i < n; ++i) {
     rm_result r;
     int k;
-    assert_int_equal(rm_walk(g, c[i].xz, c[i].n, 20.0f, rig_len, toes, &r), 0);
+    assert_int_equal(rm_walk(g, c[i].xz, c[i].n, 20.0f, flags, rig_len, toes, &r), 0);
     if (r.bone_error_m > worst->bone_error_m)
       worst->bone_error_m = r.bone_error_m;
     for (k = 0; k < 2; ++k) {
@@ -227,7 +228,7 @@ static void test_synthetic_onto_rig(void** state) {
                    SMG_OK);
   toes[0] = (uint32_t)smgb_skeleton_find(&rig, "LeftToeBase");
   toes[1] = (uint32_t)smgb_skeleton_find(&rig, "RightToeBase");
-  walk_all(g, len, toes, &w, &rig_mean);
+  walk_all(g, 0, len, toes, &w, &rig_mean);
 
   /* the same clips on their own skeleton */
   assert_int_equal(bg_bake(&s, NULL, &own), SMG_OK);
@@ -236,7 +237,7 @@ static void test_synthetic_onto_rig(void** state) {
   bone_lengths(&s.clips[0].skeleton, own_len);
   own_toes[0] = (uint32_t)smgb_skeleton_find(&s.clips[0].skeleton, "LeftToeBase");
   own_toes[1] = (uint32_t)smgb_skeleton_find(&s.clips[0].skeleton, "RightToeBase");
-  walk_all(go, own_len, own_toes, &wo, &own_mean);
+  walk_all(go, 0, own_len, own_toes, &wo, &own_mean);
   printf("synthetic -> rig: bone error %.2f mm, toe floor %.1f/%.1f cm, "
          "planted toe %.1f cm/s, path error mean %.3f m max %.2f m "
          "(own skeleton: planted %.1f cm/s, path mean %.3f max %.2f)\n",
@@ -345,6 +346,89 @@ static void test_clip_without_legs(void** state) {
   smgb_skeleton_free(&rig);
 }
 
+/* Bakes `manifest` (clips in `data_dir`) onto `rig` (NULL: the first
+ * clip's skeleton), walks the paths and prints one row of the measurement
+ * table in docs/baker.md. */
+/* Bakes `manifest` (clips in `data_dir`) onto `rig` (NULL: the first
+ * clip's skeleton), walks the paths with the runtime's foot IK off and on
+ * and prints one row of the measurement table in docs/baker.md. `worst`
+ * gets the IK-off walk: what the baked motion itself does. */
+static void measure_set(const char* label, const char* manifest,
+                        const char* data_dir, const char* rig,
+                        rm_result* worst, double* path_mean) {
+  smgb_manifest m;
+  smgb_error err;
+  smg_bake_clip_desc descs[64];
+  smg_bake_desc d;
+  smg_bake_result res;
+  smgi_graph_data gd;
+  smg_graph* g = NULL;
+  rm_result with_ik;
+  double len[256], ik_mean;
+  uint32_t toes[2], j;
+  if (smgb_manifest_load(manifest, data_dir, &m, &err) != SMG_OK)
+    fail_msg("%s", err.message);
+  assert_true(m.clip_count <= 64);
+  assert_int_equal(smgb_manifest_descs(&m, descs, m.clip_count), SMG_OK);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.clips = descs;
+  d.clip_count = m.clip_count;
+  d.options.struct_size = sizeof d.options;
+  d.options.frame_rate = m.frame_rate;
+  d.target_path = rig;
+  d.target_unit_scale = rig ? 1.0f : 0.0f;
+  memset(&res, 0, sizeof res);
+  res.struct_size = sizeof res;
+  if (smg_bake_run(&d, &res) != SMG_OK) fail_msg("%s: %s", label, res.error);
+  bg_read(&res, &gd);
+  for (j = 0; j < gd.joint_count && j < 256; ++j) {
+    const float* o = gd.joints[j].offset;
+    len[j] = sqrt((double)o[0] * o[0] + (double)o[1] * o[1] +
+                  (double)o[2] * o[2]);
+  }
+  toes[0] = gd.info->left_leg[3];
+  toes[1] = gd.info->right_leg[3];
+  assert_int_equal(smg_graph_load_memory(res.blob, res.blob_size, NULL, &g),
+                   SMG_OK);
+  walk_all(g, SMG_CHARACTER_NO_IK, len, toes, worst, path_mean);
+  walk_all(g, 0, len, toes, &with_ik, &ik_mean);
+  printf("| %-30s | %2u | %4.2f | %3.1f / %3.1f | %4.1f | %4.1f | "
+         "%5.3f / %4.2f | %5.3f / %4.2f |\n",
+         label, gd.joint_count, 1e3 * worst->bone_error_m,
+         worst->toe_floor_cm[0], worst->toe_floor_cm[1], worst->planted_cms,
+         with_ik.planted_cms, *path_mean, worst->path_error_max_m, ik_mean,
+         with_ik.path_error_max_m);
+  smg_graph_destroy(g);
+  smg_bake_result_free(&res);
+  smgb_manifest_free(&m);
+}
+
+/* The measurement of docs/baker.md ("Retargeting, measured"): the CMU set
+ * on its own skeleton and on the generated rig. Skips without ../shared. */
+static void test_cmu_onto_rig(void** state) {
+  const char* dir = smgt_cmu_dir();
+  rm_result own, on_rig;
+  double own_mean, rig_mean;
+  (void)state;
+  if (!dir || smgt_quick()) {
+    if (dir) printf("SKIP: quick mode\n");
+    return;
+  }
+  printf("| set -> skeleton | joints | bone error mm | toe floor L / R cm "
+         "| planted toe cm/s, IK off | IK on | path error mean / max m, IK "
+         "off | IK on |\n");
+  measure_set("(c) CMU cmu.manifest -> own", "data/cmu.manifest", dir, NULL,
+              &own, &own_mean);
+  measure_set("(c) CMU cmu.manifest -> rig", "data/cmu.manifest", dir,
+              g_rig, &on_rig, &rig_mean);
+  assert_true(on_rig.bone_error_m < 1e-3);
+  assert_true(on_rig.toe_floor_cm[0] >= 0.0 && on_rig.toe_floor_cm[0] <= 5.0);
+  assert_true(on_rig.toe_floor_cm[1] >= 0.0 && on_rig.toe_floor_cm[1] <= 5.0);
+  assert_true(on_rig.planted_cms <= 20.0);
+  assert_true(rig_mean <= 1.5 * own_mean + 0.05);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_rig_loads),
@@ -352,6 +436,7 @@ int main(void) {
       cmocka_unit_test(test_synthetic_onto_rig),
       cmocka_unit_test(test_bad_rig),
       cmocka_unit_test(test_clip_without_legs),
+      cmocka_unit_test(test_cmu_onto_rig),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }
