@@ -13,6 +13,7 @@
  *   internodal     transition frames, displacements, arc lengths, blob
  */
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -263,6 +264,13 @@ static uint32_t label_index(char (*labels)[SMGB_LABEL_MAX], uint32_t* count,
   return (*count)++;
 }
 
+/* The clip's bone map; NULL for descriptors from before the field. */
+static const char* clip_bones(const smg_bake_clip_desc* d) {
+  return d->struct_size >= offsetof(smg_bake_clip_desc, bones) + sizeof d->bones
+             ? d->bones
+             : NULL;
+}
+
 static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
   uint32_t i;
   smg_result r = SMG_OK;
@@ -324,17 +332,25 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       r = smgb_skeleton_copy(&raw.skeleton, &b->skel);
       if (r != SMG_OK) smgb_fail(b, "out of memory (skeleton)");
     }
-    if (r == SMG_OK && (r = smgb_clip_retarget(&raw, &b->skel, &err)) != SMG_OK)
-      smgb_fail(b, "%s (%s): %s", at, name, err.message);
     if (r == SMG_OK && b->J == 0) {
       b->J = b->skel.joint_count;
       b->stride = SMGB_STRIDE(b->J);
-      if ((r = smgb_body_init(b)) != SMG_OK) {
+      if ((r = smgb_body_init(b, clip_bones(d), d->path ? path : name)) !=
+          SMG_OK) {
         char tmp[512];
         snprintf(tmp, sizeof tmp, "%s", b->error);
         b->error[0] = '\0';
         smgb_fail(b, "%s (%s): %s", at, name, tmp);
       }
+    }
+    if (r == SMG_OK) {
+      smgb_roles roles;
+      r = smgb_roles_find(&raw.skeleton, clip_bones(d), d->path ? path : name,
+                          &roles, &err);
+      if (r == SMG_OK)
+        r = smgb_clip_retarget_roles(&raw, &roles, &b->skel, &b->body.roles,
+                                     &err);
+      if (r != SMG_OK) smgb_fail(b, "%s (%s): %s", at, name, err.message);
     }
     if (r == SMG_OK) {
       if (raw.frame_rate != b->opt.frame_rate) {
