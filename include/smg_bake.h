@@ -80,6 +80,11 @@ typedef struct smg_bake_clip_desc {
   uint32_t animation_index; /* assimp files: which animation */
   int32_t source_line;     /* manifest line, for error messages (0 = none) */
   uint32_t reserved0;
+  const char* bones;       /* bone map: which joint plays which body role,
+                              one "role=joint" per line, e.g.
+                              "left_foot=Foot_L\nright_foot=Foot_R"
+                              (docs/manifest.md `bones`); NULL = recognise
+                              the roles from the joint names */
 } smg_bake_clip_desc;
 
 typedef struct smg_bake_options {

@@ -292,6 +292,13 @@ static smg_result load_target(smgb_bake* b, const smg_bake_desc* desc) {
   return SMG_OK;
 }
 
+/* The clip's bone map; NULL for descriptors from before the field. */
+static const char* clip_bones(const smg_bake_clip_desc* d) {
+  return d->struct_size >= offsetof(smg_bake_clip_desc, bones) + sizeof d->bones
+             ? d->bones
+             : NULL;
+}
+
 static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
   uint32_t i;
   smg_result r = load_target(b, desc);
@@ -353,22 +360,13 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       r = smgb_skeleton_copy(&raw.skeleton, &b->skel);
       if (r != SMG_OK) smgb_fail(b, "out of memory (skeleton)");
     }
-    if (r == SMG_OK) {
-      /* Same hierarchy and no rig: rotations kept as they are (the plain
-       * path); otherwise full retargeting onto the blob's skeleton. */
-      if (!b->target_name[0] && smgb_same_hierarchy(&raw.skeleton, &b->skel))
-        r = smgb_clip_retarget(&raw, &b->skel, &err);
-      else
-        r = smgb_retarget_clip(&raw, &b->skel,
-                               b->target_name[0] ? b->target_name
-                                                 : "the first clip's skeleton",
-                               &err);
-      if (r != SMG_OK) smgb_fail(b, "%s (%s): %s", at, name, err.message);
-    }
     if (r == SMG_OK && b->J == 0) {
       b->J = b->skel.joint_count;
       b->stride = SMGB_STRIDE(b->J);
-      if ((r = smgb_body_init(b)) != SMG_OK) {
+      r = b->target_name[0] ? smgb_body_init(b, NULL, b->target_name)
+                            : smgb_body_init(b, clip_bones(d),
+                                             d->path ? path : name);
+      if (r != SMG_OK) {
         char tmp[512];
         snprintf(tmp, sizeof tmp, "%s", b->error);
         b->error[0] = '\0';
@@ -377,6 +375,23 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
         else
           smgb_fail(b, "%s (%s): %s", at, name, tmp);
       }
+    }
+    if (r == SMG_OK) {
+      smgb_roles roles;
+      r = smgb_roles_find(&raw.skeleton, clip_bones(d), d->path ? path : name,
+                          &roles, &err);
+      /* Same hierarchy and no rig: rotations kept as they are (the plain
+       * path); otherwise full retargeting onto the blob's skeleton. */
+      if (r == SMG_OK && !b->target_name[0] &&
+          smgb_same_hierarchy(&raw.skeleton, &b->skel))
+        r = smgb_clip_retarget_roles(&raw, &roles, &b->skel, &b->body.roles,
+                                     &err);
+      else if (r == SMG_OK)
+        r = smgb_retarget_clip(&raw, &roles, &b->skel, &b->body.roles,
+                               b->target_name[0] ? b->target_name
+                                                 : "the first clip's skeleton",
+                               &err);
+      if (r != SMG_OK) smgb_fail(b, "%s (%s): %s", at, name, err.message);
     }
     if (r == SMG_OK) {
       if (raw.frame_rate != b->opt.frame_rate) {

@@ -197,29 +197,44 @@ static int same_name(const char* a, const char* b) {
   return *a == *b;
 }
 
-/* map[t] = source joint paired with target joint t, or -1. */
-static void pair_joints(const smgb_skeleton* src, const smgb_skeleton* tgt,
+/* map[t] = source joint paired with target joint t, or -1: by body role,
+ * then (for joints without a role: extra spine joints, fingers) by name. */
+static void pair_joints(const smgb_skeleton* src, const smgb_roles* sr,
+                        const smgb_skeleton* tgt, const smgb_roles* tr,
                         int32_t* map) {
   uint32_t t, s;
+  int r;
+  for (t = 0; t < tgt->joint_count; ++t) map[t] = -1;
+  for (r = 0; r < SMGB_ROLE_COUNT; ++r)
+    if (tr->joint[r] >= 0 && sr->joint[r] >= 0)
+      map[tr->joint[r]] = sr->joint[r];
   for (t = 0; t < tgt->joint_count; ++t) {
-    map[t] = -1;
-    for (s = 0; s < src->joint_count; ++s)
-      if (same_name(tgt->names[t], src->names[s])) {
-        map[t] = (int32_t)s;
-        break;
-      }
+    if (map[t] >= 0) continue;
+    for (s = 0; s < src->joint_count; ++s) {
+      uint32_t u;
+      int used = 0;
+      if (!same_name(tgt->names[t], src->names[s])) continue;
+      for (u = 0; u < tgt->joint_count && !used; ++u)
+        used = map[u] == (int32_t)s;
+      for (r = 0; r < SMGB_ROLE_COUNT && !used; ++r)
+        used = sr->joint[r] == (int32_t)s;
+      if (!used) map[t] = (int32_t)s;
+      break;
+    }
   }
 }
 
-/* Leg chain of one side: hip, knee, ankle joints. */
-static const char* const k_leg_names[2][3] = {
-    {"LeftUpLeg", "LeftLeg", "LeftFoot"},
-    {"RightUpLeg", "RightLeg", "RightFoot"}};
+static const smgb_role k_leg_roles[2][3] = {
+    {SMGB_ROLE_LEFT_UPPER_LEG, SMGB_ROLE_LEFT_LOWER_LEG, SMGB_ROLE_LEFT_FOOT},
+    {SMGB_ROLE_RIGHT_UPPER_LEG, SMGB_ROLE_RIGHT_LOWER_LEG,
+     SMGB_ROLE_RIGHT_FOOT}};
 
-static int find_leg(const smgb_skeleton* s, int side, int32_t leg[3]) {
+/* Leg chain of one side from the roles: hip, knee, ankle joints; returns
+ * the first missing part (3 = complete). */
+static int find_leg(const smgb_roles* r, int side, int32_t leg[3]) {
   int i;
   for (i = 0; i < 3; ++i) {
-    leg[i] = smgb_skeleton_find(s, k_leg_names[side][i]);
+    leg[i] = r->joint[k_leg_roles[side][i]];
     if (leg[i] < 0) return i;
   }
   return 3;
@@ -246,6 +261,8 @@ typedef struct rt_plan {
   int32_t* map;        /* T: paired source joint or -1 */
   uint8_t* rule;       /* T: RULE_* */
   int32_t* primary;    /* T: target joint B of a SWING joint */
+  int32_t* send;       /* T: source joint the swing aims at (B's pair, or
+                          past it when that bone has no length) */
   double (*align)[4];  /* T: constant alignment quaternion */
   double (*dir)[3];    /* T: target rest direction A->B (SWING) */
   double* pt;          /* 3T target rest positions */
@@ -259,6 +276,7 @@ static void plan_free(rt_plan* p) {
   free(p->map);
   free(p->rule);
   free(p->primary);
+  free(p->send);
   free(p->align);
   free(p->dir);
   free(p->pt);
@@ -301,8 +319,26 @@ static void dir_between(const double* pos, int32_t a, int32_t b,
   v_sub(pos + 3 * b, pos + 3 * a, o);
 }
 
+/* The source joint a bone from source joint a towards b ends at: b, or
+ * when b sits on a (zero-length helper joints such as CMU's LowerBack), the
+ * first descendant down b's first-child chain that does not. */
+static int32_t source_end(const smgb_skeleton* src, const double* ps,
+                          int32_t a, int32_t b) {
+  while (b >= 0) {
+    double d[3];
+    uint32_t c;
+    dir_between(ps, a, b, d);
+    if (v_len(d) > 1e-4) return b;
+    for (c = (uint32_t)b + 1; c < src->joint_count; ++c)
+      if (src->parents[c] == b) break;
+    b = c < src->joint_count ? (int32_t)c : -1;
+  }
+  return -1;
+}
+
 /* Chooses the rule and the constant alignment of every target joint. */
-static void plan_rules(rt_plan* p, const smgb_skeleton* tgt) {
+static void plan_rules(rt_plan* p, const smgb_skeleton* src,
+                       const smgb_skeleton* tgt) {
   uint32_t t;
   int32_t cand[64];
   for (t = 0; t < p->T; ++t) {
@@ -332,19 +368,23 @@ static void plan_rules(rt_plan* p, const smgb_skeleton* tgt) {
     if (n == 1) {
       /* a limb (a zero-length bone in either skeleton: INHERIT) */
       int32_t b = cand[0];
-      double dt[3], ds[3];
+      int32_t e = source_end(src, p->ps, p->map[t], p->map[b]);
+      double dt[3], ds[3] = {0.0, 0.0, 0.0};
       dir_between(p->pt, (int32_t)t, b, dt);
-      dir_between(p->ps, p->map[t], p->map[b], ds);
+      if (e >= 0) dir_between(p->ps, p->map[t], e, ds);
       if (v_unit(dt) && v_unit(ds)) {
         p->rule[t] = RULE_SWING;
         p->primary[t] = b;
+        p->send[t] = e;
         memcpy(p->dir[t], dt, sizeof dt);
         q_arc(dt, ds, p->align[t]);
       }
     } else if (centrals == 1 && left >= 0 && right >= 0) {
-      double ct[3], cs[3], lt[3], ls[3], qt[4], qs[4], qi[4];
+      double ct[3], cs[3] = {0.0, 0.0, 0.0}, lt[3], ls[3], qt[4], qs[4],
+          qi[4];
+      int32_t e = source_end(src, p->ps, p->map[t], p->map[central]);
       dir_between(p->pt, (int32_t)t, central, ct);
-      dir_between(p->ps, p->map[t], p->map[central], cs);
+      if (e >= 0) dir_between(p->ps, p->map[t], e, cs);
       v_sub(p->pt + 3 * left, p->pt + 3 * right, lt);
       v_sub(p->ps + 3 * p->map[left], p->ps + 3 * p->map[right], ls);
       if (q_frame(ct, lt, qt) && q_frame(cs, ls, qs)) {
@@ -362,7 +402,8 @@ static void plan_rules(rt_plan* p, const smgb_skeleton* tgt) {
 }
 
 static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
-                            const smgb_skeleton* tgt, const char* tname,
+                            const smgb_roles* sr, const smgb_skeleton* tgt,
+                            const smgb_roles* tr, const char* tname,
                             smgb_error* err) {
   const smgb_skeleton* src = &clip->skeleton;
   static const char* const side_name[2] = {"left", "right"};
@@ -376,27 +417,28 @@ static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
   p->map = (int32_t*)malloc(sizeof *p->map * T);
   p->rule = (uint8_t*)malloc(sizeof *p->rule * T);
   p->primary = (int32_t*)malloc(sizeof *p->primary * T);
+  p->send = (int32_t*)malloc(sizeof *p->send * T);
   p->align = (double(*)[4])malloc(sizeof *p->align * T);
   p->dir = (double(*)[3])calloc(T, sizeof *p->dir);
   p->pt = (double*)malloc(sizeof *p->pt * 3 * T);
   p->ps = (double*)malloc(sizeof *p->ps * 3 * S);
-  if (!p->map || !p->rule || !p->primary || !p->align || !p->dir || !p->pt ||
+  if (!p->map || !p->rule || !p->primary || !p->send || !p->align || !p->dir || !p->pt ||
       !p->ps) {
     plan_free(p);
     smgb_imp_errorf(err, "%s: out of memory (retarget)", clip->name);
     return SMG_ERROR_OUT_OF_MEMORY;
   }
-  pair_joints(src, tgt, p->map);
+  pair_joints(src, sr, tgt, tr, p->map);
   for (side = 0; side < 2; ++side) {
-    int i, ft = find_leg(tgt, side, p->leg[side]);
-    int fs = find_leg(src, side, p->sleg[side]);
+    int i, ft = find_leg(tr, side, p->leg[side]);
+    int fs = find_leg(sr, side, p->sleg[side]);
     if (ft < 3 || fs < 3) {
       int missing = ft < 3 ? ft : fs;
       smgb_imp_errorf(err,
-                      "%s: cannot retarget onto %s: no %s %s joint ('%s') "
-                      "in the %s",
+                      "%s: cannot retarget onto %s: no %s %s joint (role "
+                      "'%s') in the %s",
                       clip->name, tname, side_name[side], part_name[missing],
-                      k_leg_names[side][missing],
+                      smgb_role_name(k_leg_roles[side][missing]),
                       ft < 3 ? "rig" : "clip");
       plan_free(p);
       return SMG_ERROR_INVALID_ARGUMENT;
@@ -434,7 +476,7 @@ static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
   p->k = lt / ls;
   rest_positions(tgt, p->pt);
   rest_positions(src, p->ps);
-  plan_rules(p, tgt);
+  plan_rules(p, src, tgt);
   return SMG_OK;
 }
 
@@ -531,7 +573,7 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
     for (k = 0; k < 4; ++k) ws[k] = sc->ws[4 * s + k];
     smgb_qmul(ws, p->align[t], w);
     if (p->rule[t] == RULE_SWING) {
-      int32_t sb = p->map[p->primary[t]];
+      int32_t sb = p->send[t];
       double u[3], v[3], q[4], tmp[4];
       smgb_qrot(w, p->dir[t], u);
       for (k = 0; k < 3; ++k) v[k] = (double)sc->ps[3 * sb + k] - sc->ps[3 * s + k];
@@ -578,7 +620,9 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
   }
 }
 
-smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_skeleton* target,
+smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_roles* clip_roles,
+                              const smgb_skeleton* target,
+                              const smgb_roles* target_roles,
                               const char* target_name, smgb_error* err) {
   rt_plan plan;
   rt_scratch sc;
@@ -588,13 +632,15 @@ smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_skeleton* target,
   smg_result r;
   if (err) err->message[0] = '\0';
   if (!clip || !clip->poses || clip->frame_count == 0 || !target ||
+      !clip_roles || !target_roles ||
       target->joint_count == 0 || !target->names || !target->parents ||
       !target->offsets) {
     smgb_imp_errorf(err, "smgb_retarget_clip: invalid clip or target");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   if (!target_name) target_name = "the target rig";
-  r = plan_init(&plan, clip, target, target_name, err);
+  r = plan_init(&plan, clip, clip_roles, target, target_roles, target_name,
+                err);
   if (r != SMG_OK) return r;
   T = target->joint_count;
   S = clip->skeleton.joint_count;

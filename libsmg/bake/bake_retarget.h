@@ -22,6 +22,7 @@
 #define BAKE_RETARGET_H
 
 #include "bake_clip.h"
+#include "bake_roles.h"
 
 /* Load a rig file (BVH, or glTF/GLB/FBX through assimp) as a target
  * skeleton with world-aligned rest offsets, metres. BVH: the rest pose is
@@ -40,10 +41,14 @@ smg_result smgb_rig_from_pose(const smgb_skeleton* s, const float* pose,
  * plain same-skeleton path, smgb_clip_retarget, applies). */
 int smgb_same_hierarchy(const smgb_skeleton* a, const smgb_skeleton* b);
 
-/* Replace `clip` by its motion on `target` (world-aligned rest). Errors name
- * the clip and the joint or body part that could not be paired;
- * `target_name` names the rig in them. On failure `clip` is unchanged. */
-smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_skeleton* target,
+/* Replace `clip` by its motion on `target` (world-aligned rest). Joints
+ * are paired by body role (bake_roles.h), the others by name without
+ * namespace. Errors name the clip and the joint or body part that could not
+ * be paired; `target_name` names the rig in them. On failure `clip` is
+ * unchanged. */
+smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_roles* clip_roles,
+                              const smgb_skeleton* target,
+                              const smgb_roles* target_roles,
                               const char* target_name, smgb_error* err);
 
 #endif /* BAKE_RETARGET_H */
