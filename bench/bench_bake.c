@@ -21,9 +21,11 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "bake_graph.h"
 #include "bake_manifest.h"
+#include "bake_synthetic.h"
 #include "smg_bake.h"
 
 #ifndef SMG_SHARED_DIR
@@ -107,8 +109,9 @@ static void free_set(bake_set* s) {
   smgb_manifest_free(&s->m);
 }
 
-static smg_result bake(const smg_bake_clip_desc* descs, uint32_t n,
-                       uint32_t threads, smg_bake_result* res, double* cpu) {
+static smg_result bake_onto(const smg_bake_clip_desc* descs, uint32_t n,
+                            uint32_t threads, const char* rig,
+                            smg_bake_result* res, double* cpu) {
   smg_bake_desc d;
   double c0 = cpu_seconds();
   smg_result r;
@@ -118,11 +121,68 @@ static smg_result bake(const smg_bake_clip_desc* descs, uint32_t n,
   d.clip_count = n;
   d.options.struct_size = sizeof d.options;
   d.options.threads = threads;
+  d.target_path = rig;
+  d.target_unit_scale = rig ? 1.0f : 0.0f;
   memset(res, 0, sizeof *res);
   res->struct_size = sizeof *res;
   r = smg_bake_run(&d, res);
   if (cpu) *cpu = cpu_seconds() - c0;
   return r;
+}
+
+static smg_result bake(const smg_bake_clip_desc* descs, uint32_t n,
+                       uint32_t threads, smg_bake_result* res, double* cpu) {
+  return bake_onto(descs, n, threads, NULL, res, cpu);
+}
+
+/* The paper-size set onto the generated Mixamo-style rig
+ * (bake_synth_rig.c) against the same set on its own skeleton, runs
+ * interleaved so both see the same machine load. */
+static void retarget_cost(const char* dir) {
+  bake_set s;
+  char rig[] = "/tmp/smg_bench_rig_XXXXXX";
+  char path[64];
+  smgb_error err;
+  double plain[RUNS], onto[RUNS], cp[RUNS], co[RUNS];
+  int run;
+  printf("\n== retargeting cost: paper-size set onto the test rig vs its "
+         "own skeleton, median of %d runs each\n", RUNS);
+  if (!mkdtemp(rig)) {
+    printf("  cannot create a temporary folder\n");
+    return;
+  }
+  snprintf(path, sizeof path, "%s/rig.bvh", rig);
+  if (smgb_synth_write_rig(path, &err) != SMG_OK ||
+      !load_set("data/cmu.manifest", dir, &s)) {
+    printf("  cannot prepare the rig or the set\n");
+    rmdir(rig);
+    return;
+  }
+  for (run = 0; run < RUNS; ++run) {
+    smg_bake_result res;
+    double t0 = now();
+    if (bake(s.descs, s.count, 2, &res, &cp[run]) != SMG_OK) break;
+    plain[run] = now() - t0;
+    smg_bake_result_free(&res);
+    t0 = now();
+    if (bake_onto(s.descs, s.count, 2, path, &res, &co[run]) != SMG_OK) {
+      printf("  bake onto the rig failed: %s\n", res.error);
+      break;
+    }
+    onto[run] = now() - t0;
+    smg_bake_result_free(&res);
+  }
+  if (run == RUNS) {
+    double p = median(plain, RUNS), o = median(onto, RUNS);
+    double pc = median(cp, RUNS), oc = median(co, RUNS);
+    printf("  own skeleton  %.3f s wall, %.3f s CPU\n", p, pc);
+    printf("  onto the rig  %.3f s wall, %.3f s CPU\n", o, oc);
+    printf("  ratio         %.2f wall, %.2f CPU (budget: at most 1.20)\n",
+           o / p, oc / pc);
+  }
+  free_set(&s);
+  remove(path);
+  rmdir(rig);
 }
 
 static double stage_seconds(const smg_bake_result* r, const char* name) {
@@ -343,6 +403,7 @@ int main(void) {
   }
   fclose(fp);
   paper_set(dir);
+  retarget_cost(dir);
   all_clips(dir);
   return 0;
 }
