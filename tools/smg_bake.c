@@ -453,8 +453,10 @@ int main(int argc, char** argv) {
   desc.clips = descs;
   desc.clip_count = m.clip_count;
   desc.options.frame_rate = frame_rate > 0.0f ? frame_rate : m.frame_rate;
-  desc.target_path = target;
-  desc.target_unit_scale = target_unit;
+  /* --target overrides the manifest's `target` */
+  desc.target_path = target ? target : m.target[0] ? m.target : NULL;
+  desc.target_unit_scale = target ? target_unit : m.target_unit;
+  desc.target_animation = target ? 0 : m.target_animation;
   ps.tty = isatty(2);
   ps.last_pct = -1;
   desc.progress = on_progress;

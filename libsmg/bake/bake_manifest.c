@@ -364,6 +364,54 @@ static void dir_of(const char* path, char* out, size_t n) {
   else snprintf(out, n, "%.*s", (int)(slash - path), path);
 }
 
+/* `target RIG [unit=U] [animation=N]`: the rig every clip is retargeted
+ * onto (docs/manifest.md); RIG is relative to the manifest's folder. */
+static int parse_target(smgb_manifest* m, const char* path, char** tok,
+                        int n, const char* at, smgb_error* err) {
+  char base[SMGB_PATH_MAX];
+  int k, i;
+  if (n < 2) {
+    smgb_imp_errorf(err, "%starget needs a rig file", at);
+    return 0;
+  }
+  if (m->target[0]) {
+    smgb_imp_errorf(err, "%s'target' may appear only once", at);
+    return 0;
+  }
+  dir_of(path, base, sizeof base);
+  k = tok[1][0] == '/'
+          ? snprintf(m->target, sizeof m->target, "%s", tok[1])
+          : snprintf(m->target, sizeof m->target, "%s/%s", base, tok[1]);
+  if (k < 0 || (size_t)k >= sizeof m->target) {
+    smgb_imp_errorf(err, "%starget path too long", at);
+    return 0;
+  }
+  if (access(m->target, R_OK) != 0) {
+    smgb_imp_errorf(err, "%starget rig '%s' not found or unreadable (%s)",
+                    at, tok[1], m->target);
+    return 0;
+  }
+  for (i = 2; i < n; ++i) {
+    if (strncmp(tok[i], "unit=", 5) == 0) {
+      if (!parse_float(tok[i] + 5, 0.0f, 1e3f, &m->target_unit)) {
+        smgb_imp_errorf(err, "%starget unit '%.60s' must be in [0, 1000]", at,
+                        tok[i] + 5);
+        return 0;
+      }
+    } else if (strncmp(tok[i], "animation=", 10) == 0) {
+      if (!parse_u32(tok[i] + 10, 1000000u, &m->target_animation)) {
+        smgb_imp_errorf(err, "%starget animation must be an index >= 0", at);
+        return 0;
+      }
+    } else {
+      smgb_imp_errorf(err, "%sunknown target option '%.60s' (unit, animation)",
+                      at, tok[i]);
+      return 0;
+    }
+  }
+  return 1;
+}
+
 smg_result smgb_manifest_load(const char* path, const char* data_dir_override,
                               smgb_manifest* out, smgb_error* err) {
   smgb_manifest m;
@@ -422,6 +470,10 @@ smg_result smgb_manifest_load(const char* path, const char* data_dir_override,
     }
     if (strcmp(tok[0], "bones") == 0) {
       if (!parse_bones(&d, tok, n, at, err)) goto fail;
+      continue;
+    }
+    if (strcmp(tok[0], "target") == 0) {
+      if (!parse_target(&m, path, tok, n, at, err)) goto fail;
       continue;
     }
     if (n != 2) {

@@ -42,6 +42,9 @@ typedef struct smgb_manifest {
   uint32_t clip_count;
   uint32_t clip_capacity;
   smgb_manifest_clip* clips;
+  char target[SMGB_PATH_MAX]; /* `target` rig ("" = first clip's skeleton) */
+  float target_unit;          /* its unit, 0 = guess */
+  uint32_t target_animation;  /* its animation (assimp rigs) */
 } smgb_manifest;
 
 /* Empty manifest whose relative clip paths resolve against `root` (NULL or

@@ -323,6 +323,66 @@ static void test_bad_rig(void** state) {
   assert_int_not_equal(access(out, F_OK), 0);
 }
 
+static int contains(const char* path, const char* text) {
+  char buf[8192];
+  size_t n;
+  FILE* f = fopen(path, "r");
+  if (!f) return 0;
+  n = fread(buf, 1, sizeof buf - 1, f);
+  fclose(f);
+  buf[n] = '\0';
+  return strstr(buf, text) != NULL;
+}
+
+/* The manifest statement `target RIG`: smg-bake bakes onto the rig and
+ * --info lists its skeleton; a missing rig or a second `target` is an
+ * error naming the manifest line, and nothing is written. */
+static void test_manifest_target(void** state) {
+  char man[400], out[400], cmd[2000], txt[400];
+  FILE* f;
+  (void)state;
+  snprintf(man, sizeof man, "%s/onto_rig.manifest", g_dir);
+  snprintf(out, sizeof out, "%s/onto_rig.smg", g_dir);
+  snprintf(txt, sizeof txt, "%s/info.txt", g_dir);
+  f = fopen(man, "w");
+  assert_non_null(f);
+  fprintf(f,
+          "root %s/synthetic\nunit 1\ntarget rig.bvh unit=1\n"
+          "lower walk synthetic_walk_straight.bvh\n"
+          "lower walk synthetic_walk_left.bvh\n"
+          "upper wave synthetic_wave.bvh\n",
+          SMG_BUILD_DIR);
+  fclose(f);
+  snprintf(cmd, sizeof cmd, "%s/smg-bake -q -m '%s' -o '%s' && %s/smg-bake "
+           "--info '%s' > '%s'", SMG_BUILD_DIR, man, out, SMG_BUILD_DIR, out,
+           txt);
+  assert_int_equal(system(cmd), 0);
+  assert_true(contains(txt, "skeleton: 22 joints, pelvis mixamorig:Hips"));
+  assert_true(contains(txt, "mixamorig:LeftLeg"));
+  assert_true(contains(txt, "bone 0.460 m"));
+
+  f = fopen(man, "w");
+  assert_non_null(f);
+  fprintf(f, "root %s/synthetic\nunit 1\ntarget no_such_rig.bvh\n"
+          "lower walk synthetic_walk_straight.bvh\n", SMG_BUILD_DIR);
+  fclose(f);
+  remove(out);
+  snprintf(cmd, sizeof cmd, "%s/smg-bake -q -m '%s' -o '%s' 2> '%s'",
+           SMG_BUILD_DIR, man, out, txt);
+  assert_int_not_equal(system(cmd), 0);
+  assert_true(contains(txt, "onto_rig.manifest:3: target rig 'no_such_rig.bvh'"));
+  assert_int_not_equal(access(out, F_OK), 0);
+
+  f = fopen(man, "w");
+  assert_non_null(f);
+  fprintf(f, "root %s/synthetic\ntarget rig.bvh\ntarget rig.bvh\n"
+          "lower walk synthetic_walk_straight.bvh\n", SMG_BUILD_DIR);
+  fclose(f);
+  assert_int_not_equal(system(cmd), 0);
+  assert_true(contains(txt, "onto_rig.manifest:3: 'target' may appear only once"));
+  assert_int_not_equal(access(out, F_OK), 0);
+}
+
 /* A clip without legs cannot be put on the rig: the error names it. */
 static void test_clip_without_legs(void** state) {
   smgb_clip c;
@@ -538,6 +598,7 @@ int main(void) {
       cmocka_unit_test(test_synthetic_onto_rig),
       cmocka_unit_test(test_bad_rig),
       cmocka_unit_test(test_clip_without_legs),
+      cmocka_unit_test(test_manifest_target),
       cmocka_unit_test(test_cmu_onto_rig),
       cmocka_unit_test(test_bandai_sets),
   };
