@@ -305,6 +305,18 @@ static void test_bad_rig(void** state) {
   assert_non_null(strstr(res.error, "body role"));
   bg_free(&s);
 
+  /* a bone map naming a joint the clip does not have */
+  bg_standard(&s, 4.0f);
+  s.descs[0].bones = "left_foot=NoSuchAnkle";
+  d.clips = s.descs;
+  d.target_path = g_rig;
+  assert_int_not_equal(smg_bake_run(&d, &res), SMG_OK);
+  assert_null(res.blob);
+  printf("error: %s\n", res.error);
+  assert_non_null(strstr(res.error, "NoSuchAnkle"));
+  assert_non_null(strstr(res.error, "left_foot"));
+  bg_free(&s);
+
   /* a missing rig file */
   d.target_path = "no/such/rig.bvh";
   bg_standard(&s, 4.0f);
