@@ -270,6 +270,8 @@ typedef struct rt_plan {
   int32_t leg[2][3];   /* target hip, knee, ankle */
   int32_t sleg[2][3];  /* source hip, knee, ankle */
   double k;            /* target leg / source leg */
+  double side[3];      /* the rig's left-right axis at rest (right hip to
+                          left hip), whatever way the rig faces */
 } rt_plan;
 
 static void plan_free(rt_plan* p) {
@@ -354,14 +356,15 @@ static void plan_rules(rt_plan* p, const smgb_skeleton* src,
     p->rule[t] = RULE_INHERIT;
     n = frontier(tgt, p->map, t, cand, 64);
     for (i = 0; i < n; ++i) {
-      double d[3];
+      double d[3], x;
       dir_between(p->pt, (int32_t)t, cand[i], d);
-      if (fabs(d[0]) < 0.25 * v_len(d)) {
+      x = v_dot(d, p->side);
+      if (fabs(x) < 0.25 * v_len(d)) {
         central = cand[i];
         ++centrals;
-      } else if (d[0] > 0.0 && left < 0) {
+      } else if (x > 0.0 && left < 0) {
         left = cand[i];
-      } else if (d[0] < 0.0 && right < 0) {
+      } else if (x < 0.0 && right < 0) {
         right = cand[i];
       }
     }
@@ -476,6 +479,16 @@ static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
   p->k = lt / ls;
   rest_positions(tgt, p->pt);
   rest_positions(src, p->ps);
+  v_sub(p->pt + 3 * p->leg[0][0], p->pt + 3 * p->leg[1][0], p->side);
+  if (!v_unit(p->side)) {
+    smgb_imp_errorf(err,
+                    "%s: cannot retarget onto %s: the rig's hip joints '%s' "
+                    "and '%s' coincide",
+                    clip->name, tname, tgt->names[p->leg[0][0]],
+                    tgt->names[p->leg[1][0]]);
+    plan_free(p);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
   plan_rules(p, src, tgt);
   return SMG_OK;
 }
