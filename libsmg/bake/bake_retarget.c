@@ -425,8 +425,8 @@ static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
   p->dir = (double(*)[3])calloc(T, sizeof *p->dir);
   p->pt = (double*)malloc(sizeof *p->pt * 3 * T);
   p->ps = (double*)malloc(sizeof *p->ps * 3 * S);
-  if (!p->map || !p->rule || !p->primary || !p->send || !p->align || !p->dir || !p->pt ||
-      !p->ps) {
+  if (!p->map || !p->rule || !p->primary || !p->send || !p->align ||
+      !p->dir || !p->pt || !p->ps) {
     plan_free(p);
     smgb_imp_errorf(err, "%s: out of memory (retarget)", clip->name);
     return SMG_ERROR_OUT_OF_MEMORY;
@@ -527,8 +527,8 @@ static void target_positions(const smgb_skeleton* tgt, const double root[3],
 
 /* Two-bone solve: put the ankle at `goal`, keeping the knee's bend plane
  * (a straight leg bends towards the pelvis' forward). */
-static void solve_leg(const rt_plan* p, const int32_t leg[3],
-                      const double goal[3], double* w, const double* pt) {
+static void solve_leg(const int32_t leg[3], const double goal[3], double* w,
+                      const double* pt) {
   const double *H = pt + 3 * leg[0], *K = pt + 3 * leg[1], *A = pt + 3 * leg[2];
   double hk[3], ka[3], ha[3], hg[3], n[3], th[3], nk[3], s1[3], s2[3];
   double a, b, d, c, alpha, qn[4], r1[4], r2[4], tmp[4];
@@ -568,7 +568,6 @@ static void solve_leg(const rt_plan* p, const int32_t leg[3],
   memcpy(w + 4 * leg[0], tmp, sizeof tmp);
   smgb_qmul(r1, w + 4 * leg[1], tmp);
   smgb_qmul(r2, tmp, w + 4 * leg[1]);
-  (void)p;
 }
 
 static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
@@ -589,7 +588,8 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
       int32_t sb = p->send[t];
       double u[3], v[3], q[4], tmp[4];
       smgb_qrot(w, p->dir[t], u);
-      for (k = 0; k < 3; ++k) v[k] = (double)sc->ps[3 * sb + k] - sc->ps[3 * s + k];
+      for (k = 0; k < 3; ++k)
+        v[k] = (double)sc->ps[3 * sb + k] - sc->ps[3 * s + k];
       if (v_unit(u) && v_unit(v)) {
         q_arc(u, v, q);
         smgb_qmul(q, w, tmp);
@@ -615,7 +615,7 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
     double goal[3];
     int32_t sa = p->sleg[side][2];
     for (t = 0; t < 3; ++t) goal[t] = p->k * sc->ps[3 * sa + t];
-    solve_leg(p, p->leg[side], goal, sc->w, sc->pt);
+    solve_leg(p->leg[side], goal, sc->w, sc->pt);
   }
   propagate_rest(tgt, p, sc->w);
   for (t = 0; t < 3; ++t) out[t] = (float)root[t];

@@ -271,6 +271,25 @@ static void test_synthetic_onto_rig(void** state) {
   bg_free(&s);
 }
 
+/* Without a target, clips of another skeleton are retargeted onto the
+ * first clip's (here the first two clips name their left hip "LThigh"). */
+static void test_mixed_skeletons_without_target(void** state) {
+  bg_set s;
+  smg_bake_result res;
+  smgi_graph_data gd;
+  (void)state;
+  bg_standard(&s, smgt_quick() ? 3.0f : 4.0f);
+  s.names[0][2] = "LThigh";
+  s.names[1][2] = "LThigh";
+  if (bg_bake(&s, NULL, &res) != SMG_OK) fail_msg("%s", res.error);
+  bg_read(&res, &gd);
+  assert_int_equal(gd.joint_count, 31);
+  assert_string_equal(gd.strings + gd.joints[2].name, "LThigh");
+  assert_int_equal(gd.clip_count >= 12, 1);
+  smg_bake_result_free(&res);
+  bg_free(&s);
+}
+
 static void write_text(const char* path, const char* text) {
   FILE* f = fopen(path, "w");
   assert_non_null(f);
@@ -723,6 +742,7 @@ int main(int argc, char** argv) {
       cmocka_unit_test(test_rig_loads),
       cmocka_unit_test(test_retarget_geometry),
       cmocka_unit_test(test_synthetic_onto_rig),
+      cmocka_unit_test(test_mixed_skeletons_without_target),
       cmocka_unit_test(test_bad_rig),
       cmocka_unit_test(test_clip_without_legs),
       cmocka_unit_test(test_manifest_target),
