@@ -4,10 +4,14 @@
  * (bake_synth_rig.c) as target, synthetic clips baked onto it and walked
  * through the public API: exported bone lengths equal the rig's, toes rest
  * on the floor, planted toes stay put, path error stays in line with the
- * same clips on their own skeleton. The retarget math is also checked
- * frame by frame (limb directions, ankles at the scaled source ankles),
- * and bad rigs/clips give errors naming file and joint with nothing
- * written.
+ * same clips on their own skeleton. Also: the retarget math frame by frame
+ * (limb directions, ankles at the scaled source ankles), the same rig as a
+ * glTF whose bones have their own rest axes, clips of different skeletons
+ * without a target, the manifest's `target` statement, and bad rigs, clips
+ * and bone maps (errors naming file and joint or role, nothing written).
+ * With ../shared it prints the measurement table of docs/baker.md
+ * ("Retargeting, measured"): (c) CMU onto the rig, (a) Bandai Namco on its
+ * own skeleton, (b) CMU + Bandai Namco on the CMU skeleton.
  */
 #include <math.h>
 #include <setjmp.h>
