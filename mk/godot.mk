@@ -80,13 +80,15 @@ GODOT_RIG_SMG := $(GODOT_BUILD)/rig.smg
 GODOT_RIG_REF := $(GODOT_BUILD)/rig_ref_positions.csv
 GODOT_RIG_ENV = SMG_RIG_GRAPH=$(abspath $(GODOT_RIG_SMG)) SMG_RIG_REF=$(abspath $(GODOT_RIG_REF))
 
-$(GODOT_RIG_SMG): $(SMG_BAKE) $(SYNTHETIC_STAMP) data/synthetic.manifest
+# (the baker, smg-synth and the synthetic clips are defined in fragments
+# read after this one: named by path here)
+$(GODOT_RIG_SMG): $(BUILD)/smg-bake $(BUILD)/synthetic/README.txt data/synthetic.manifest
 	@mkdir -p $(dir $@)
-	$(SMG_BAKE) -q -m data/synthetic.manifest --data-dir $(SYNTHETIC_DIR) \
-		--target $(SYNTHETIC_DIR)/rig_mixamo_apose.bvh --target-unit 1 -o $@
+	$(BUILD)/smg-bake -q -m data/synthetic.manifest --data-dir $(BUILD)/synthetic \
+		--target $(BUILD)/synthetic/rig_mixamo_apose.bvh --target-unit 1 -o $@
 
-$(GODOT_RIG_REF): $(GODOT_RIG_SMG) $(SMG_SYNTH) $(GODOT_DIR)/test/rig_path.txt $(GODOT_DIR)/test/bvh_positions.py
-	$(SMG_SYNTH) -g $(GODOT_RIG_SMG) -p $(GODOT_DIR)/test/rig_path.txt --seconds 6 \
+$(GODOT_RIG_REF): $(GODOT_RIG_SMG) $(BUILD)/smg-synth $(GODOT_DIR)/test/rig_path.txt $(GODOT_DIR)/test/bvh_positions.py
+	$(BUILD)/smg-synth -g $(GODOT_RIG_SMG) -p $(GODOT_DIR)/test/rig_path.txt --seconds 6 \
 		--csv $(GODOT_BUILD)/rig_ref.csv -o $(GODOT_BUILD)/rig_ref.bvh
 	python3 $(GODOT_DIR)/test/bvh_positions.py $(GODOT_BUILD)/rig_ref.bvh $(GODOT_BUILD)/rig_ref.csv $@
 
