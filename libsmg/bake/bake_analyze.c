@@ -136,7 +136,7 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
   if (r == SMG_OK) {
     b->J = b->skel.joint_count;
     b->stride = SMGB_STRIDE(b->J);
-    r = smgb_body_init(b);
+    r = smgb_body_init(b, NULL, clip->name);
   }
   if (r == SMG_OK)
     r = clip->frame_rate != frame_rate

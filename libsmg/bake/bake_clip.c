@@ -15,6 +15,7 @@
 
 #include "bake_clip.h"
 #include "bake_import_util.h"
+#include "bake_roles.h"
 
 /* ---- skeleton ------------------------------------------------------------ */
 
@@ -66,38 +67,11 @@ int32_t smgb_skeleton_find(const smgb_skeleton* s, const char* name) {
   return -1;
 }
 
-static int32_t find_any(const smgb_skeleton* s, const char* const* names) {
-  for (; *names; ++names) {
-    int32_t j = smgb_skeleton_find(s, *names);
-    if (j >= 0) return j;
-  }
-  return -1;
-}
-
 float smgb_skeleton_leg_length(const smgb_skeleton* s) {
-  static const char* const hips[] = {"LeftUpLeg", "LeftHip", "LeftThigh",
-                                     "LeftUpperLeg", "LHip", "l_hip",
-                                     "thigh_l", "Left_Hip", NULL};
-  static const char* const ankles[] = {"LeftFoot", "LeftAnkle", "LFoot",
-                                       "LAnkle", "l_ankle", "foot_l",
-                                       "Left_Ankle", "Left_Foot", NULL};
-  int32_t hip, j;
-  double len = 0.0;
+  smgb_roles r;
   if (!s || !s->names || !s->parents || !s->offsets) return 0.0f;
-  hip = find_any(s, hips);
-  j = find_any(s, ankles);
-  if (hip < 0 || j < 0) return 0.0f;
-  /* Sum of bone lengths from the ankle up to the hip: independent of how
-   * bent the rest pose is. */
-  while (j != hip) {
-    const float* o;
-    if (j <= 0) return 0.0f; /* the ankle is not below the hip */
-    o = s->offsets[j];
-    len += sqrt((double)o[0] * o[0] + (double)o[1] * o[1] + (double)o[2] * o[2]);
-    j = s->parents[j];
-    if (j < 0 || (uint32_t)j >= s->joint_count) return 0.0f;
-  }
-  return (float)len;
+  smgb_roles_guess(s, &r);
+  return smgb_roles_leg_length(s, &r);
 }
 
 /* ---- clip ---------------------------------------------------------------- */
@@ -211,44 +185,6 @@ smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
 
 /* ---- mirroring ----------------------------------------------------------- */
 
-/* Writes the left/right counterpart name of `name` into `out`, or returns 0
- * when the name has no side. Recognised (after an optional "ns:" prefix):
- * Left.../Right..., L.../R... followed by an upper-case letter or '_' (CMU's
- * LHipJoint, LThumb), left_/right_ and l_/r_ prefixes, and _L/_R, .L/.R,
- * _l/_r suffixes. */
-static int counterpart_name(const char* name, char out[SMGB_NAME_MAX]) {
-  const char* base = strip_namespace(name);
-  size_t pre = (size_t)(base - name), n = strlen(base);
-  char tmp[SMGB_NAME_MAX * 2];
-  const char* rest = NULL;
-  const char* repl = NULL;
-  if (strncmp(base, "Left", 4) == 0) { repl = "Right"; rest = base + 4; }
-  else if (strncmp(base, "Right", 5) == 0) { repl = "Left"; rest = base + 5; }
-  else if (strncmp(base, "left", 4) == 0) { repl = "right"; rest = base + 4; }
-  else if (strncmp(base, "right", 5) == 0) { repl = "left"; rest = base + 5; }
-  else if ((base[0] == 'L' || base[0] == 'R' || base[0] == 'l' ||
-            base[0] == 'r') &&
-           (isupper((unsigned char)base[1]) || base[1] == '_')) {
-    static const char* const swap[4] = {"R", "L", "r", "l"};
-    repl = swap[base[0] == 'L' ? 0 : base[0] == 'R' ? 1 : base[0] == 'l' ? 2 : 3];
-    rest = base + 1;
-  }
-  if (repl) {
-    snprintf(tmp, sizeof tmp, "%.*s%s%s", (int)pre, name, repl, rest);
-  } else if (n >= 2 && (base[n - 2] == '_' || base[n - 2] == '.') &&
-             (base[n - 1] == 'L' || base[n - 1] == 'R' || base[n - 1] == 'l' ||
-              base[n - 1] == 'r')) {
-    char c = base[n - 1];
-    snprintf(tmp, sizeof tmp, "%s", name);
-    tmp[pre + n - 1] = c == 'L' ? 'R' : c == 'R' ? 'L' : c == 'l' ? 'r' : 'l';
-  } else {
-    return 0;
-  }
-  if (strlen(tmp) >= SMGB_NAME_MAX) return 0;
-  memcpy(out, tmp, strlen(tmp) + 1);
-  return 1;
-}
-
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
   smgb_clip c;
   smg_result r;
@@ -262,7 +198,7 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
   for (j = 0; j < J; ++j) {
     char other[SMGB_NAME_MAX];
     int32_t k = -1;
-    if (counterpart_name(src->skeleton.names[j], other)) {
+    if (smgb_roles_counterpart_name(src->skeleton.names[j], other)) {
       uint32_t i;
       for (i = 0; i < J; ++i)
         if (strcmp(src->skeleton.names[i], other) == 0) k = (int32_t)i;
@@ -312,11 +248,28 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
 
 smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
                               smgb_error* err) {
+  smgb_roles rc, rr;
+  if (!clip_valid(clip) || !reference || !reference->names ||
+      !reference->parents || !reference->offsets) {
+    if (err) smgb_imp_errorf(err, "smgb_clip_retarget: invalid clip or reference");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  smgb_roles_guess(&clip->skeleton, &rc);
+  smgb_roles_guess(reference, &rr);
+  return smgb_clip_retarget_roles(clip, &rc, reference, &rr, err);
+}
+
+smg_result smgb_clip_retarget_roles(smgb_clip* clip,
+                                    const smgb_roles* clip_roles,
+                                    const smgb_skeleton* reference,
+                                    const smgb_roles* reference_roles,
+                                    smgb_error* err) {
   uint32_t J, j, f, stride;
   float leg_clip, leg_ref, k;
   if (err) err->message[0] = '\0';
   if (!clip_valid(clip) || !reference || !reference->names ||
-      !reference->parents || !reference->offsets) {
+      !reference->parents || !reference->offsets || !clip_roles ||
+      !reference_roles) {
     smgb_imp_errorf(err, "smgb_clip_retarget: invalid clip or reference");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
@@ -340,12 +293,12 @@ smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
       return SMG_ERROR_INVALID_ARGUMENT;
     }
   }
-  leg_clip = smgb_skeleton_leg_length(&clip->skeleton);
-  leg_ref = smgb_skeleton_leg_length(reference);
+  leg_clip = smgb_roles_leg_length(&clip->skeleton, clip_roles);
+  leg_ref = smgb_roles_leg_length(reference, reference_roles);
   if (!(leg_clip > 1e-6f) || !(leg_ref > 1e-6f)) {
     smgb_imp_errorf(err,
-                    "%s: cannot retarget: no left leg (LeftUpLeg..LeftFoot) "
-                    "to measure in %s",
+                    "%s: cannot retarget: no left leg (roles left_upper_leg "
+                    "down to left_foot) to measure in %s",
                     clip->name, leg_clip > 1e-6f ? "the reference" : "the clip");
     return SMG_ERROR_INVALID_ARGUMENT;
   }

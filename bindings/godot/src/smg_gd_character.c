@@ -48,6 +48,9 @@ typedef struct smg_gd_character {
 	GDObjectInstanceID skel_id;
 	int64_t skel_version;
 	int32_t *bone_of_joint; /* joint -> bone index, -1 if missing */
+	float *rest_of_joint;   /* 8 per joint: global rest rotation of its
+	                         * bone and of that bone's parent (x,y,z,w) */
+	bool rests_identity;    /* every mapped bone rests world-aligned */
 	bool warned_skeleton, warned_bones, warned_step;
 
 	int64_t style, action;
@@ -83,6 +86,8 @@ static void teardown(smg_gd_character *self) {
 	self->rot = NULL;
 	free(self->bone_of_joint);
 	self->bone_of_joint = NULL;
+	free(self->rest_of_joint);
+	self->rest_of_joint = NULL;
 	self->skel_id = 0;
 	self->warned_bones = false;
 }
@@ -227,6 +232,55 @@ static GDExtensionObjectPtr find_skeleton(smg_gd_character *self) {
 	return NULL;
 }
 
+/* Rotation of a rest transform's basis (columns normalised: a scaled
+ * rest keeps its orientation), as (x,y,z,w). */
+static void basis_rotation(const gd_transform3d *t, float *q) {
+	float m[3][3];
+	for (int c = 0; c < 3; c++) {
+		float l = sqrtf(t->basis[0][c] * t->basis[0][c] + t->basis[1][c] * t->basis[1][c] +
+		                t->basis[2][c] * t->basis[2][c]);
+		for (int r = 0; r < 3; r++) m[r][c] = l > 0.0f ? t->basis[r][c] / l : (r == c);
+	}
+	float tr = m[0][0] + m[1][1] + m[2][2];
+	if (tr > 0.0f) {
+		float s = sqrtf(tr + 1.0f) * 2.0f;
+		q[3] = 0.25f * s;
+		q[0] = (m[2][1] - m[1][2]) / s;
+		q[1] = (m[0][2] - m[2][0]) / s;
+		q[2] = (m[1][0] - m[0][1]) / s;
+	} else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
+		float s = sqrtf(1.0f + m[0][0] - m[1][1] - m[2][2]) * 2.0f;
+		q[3] = (m[2][1] - m[1][2]) / s;
+		q[0] = 0.25f * s;
+		q[1] = (m[0][1] + m[1][0]) / s;
+		q[2] = (m[0][2] + m[2][0]) / s;
+	} else if (m[1][1] > m[2][2]) {
+		float s = sqrtf(1.0f + m[1][1] - m[0][0] - m[2][2]) * 2.0f;
+		q[3] = (m[0][2] - m[2][0]) / s;
+		q[0] = (m[0][1] + m[1][0]) / s;
+		q[1] = 0.25f * s;
+		q[2] = (m[1][2] + m[2][1]) / s;
+	} else {
+		float s = sqrtf(1.0f + m[2][2] - m[0][0] - m[1][1]) * 2.0f;
+		q[3] = (m[1][0] - m[0][1]) / s;
+		q[0] = (m[0][2] + m[2][0]) / s;
+		q[1] = (m[1][2] + m[2][1]) / s;
+		q[2] = 0.25f * s;
+	}
+}
+
+/* The global rest rotation of `bone` (identity for -1). */
+static void bone_global_rest(GDExtensionObjectPtr skel, int64_t bone, float *q) {
+	q[0] = q[1] = q[2] = 0.0f;
+	q[3] = 1.0f;
+	if (bone < 0) return;
+	gd_transform3d t;
+	memset(&t, 0, sizeof t);
+	const void *a[1] = { &bone };
+	gd_call(GDB_Skeleton3D_get_bone_global_rest, skel, a, &t);
+	basis_rotation(&t, q);
+}
+
 /* Bones by name, refreshed when the skeleton or its bone list changes. */
 static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 	GDObjectInstanceID id = gd.object_get_instance_id(skel);
@@ -237,6 +291,14 @@ static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 	int32_t *map = realloc(self->bone_of_joint, (n ? n : 1) * sizeof *map);
 	if (!map) return;
 	self->bone_of_joint = map;
+	float *rest = realloc(self->rest_of_joint, (n ? n : 1) * 8 * sizeof *rest);
+	if (!rest) {
+		free(map);
+		self->bone_of_joint = NULL;
+		return;
+	}
+	self->rest_of_joint = rest;
+	self->rests_identity = true;
 	self->skel_id = id;
 	self->skel_version = version;
 	uint32_t matched = 0;
@@ -246,8 +308,10 @@ static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 		ji.struct_size = sizeof ji;
 		map[j] = -1;
 		if (smg_graph_get_joint(self->blob->graph, j, &ji) != SMG_OK || !ji.name) continue;
+		char bone_name[256];
+		smg_gd_bone_name(ji.name, bone_name, sizeof bone_name);
 		gd_string name;
-		gd_str_init(&name, ji.name);
+		gd_str_init(&name, bone_name);
 		int64_t bone = -1;
 		const void *a[1] = { &name };
 		gd_call(GDB_Skeleton3D_find_bone, skel, a, &bone);
@@ -255,6 +319,17 @@ static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 		if (bone >= 0 && bone <= INT32_MAX) {
 			map[j] = (int32_t)bone;
 			matched++;
+			/* A rig whose bones have their own rest orientation (not the
+			 * graph's world-aligned rest) gets its rotations conjugated in
+			 * write_pose_to. */
+			int64_t parent = -1;
+			const void *pa[1] = { &bone };
+			gd_call(GDB_Skeleton3D_get_bone_parent, skel, pa, &parent);
+			bone_global_rest(skel, bone, &rest[8 * j]);
+			bone_global_rest(skel, parent, &rest[8 * j + 4]);
+			for (int k = 0; k < 8; k++)
+				if (fabsf(rest[8 * j + k] - (k % 4 == 3 ? 1.0f : 0.0f)) > 1e-6f)
+					self->rests_identity = false;
 		}
 	}
 	if (matched < n && !self->warned_bones) {
@@ -298,6 +373,14 @@ static void write_pose_to(smg_gd_character *self, GDExtensionObjectPtr skel) {
 	for (uint32_t j = 0; j < n; j++) {
 		int64_t bone = self->bone_of_joint[j];
 		if (bone < 0) continue;
+		if (!self->rests_identity) {
+			/* graph rotations are relative to a world-aligned rest: bone
+			 * pose = parent bone's global rest^-1 * q * bone's global rest */
+			const float *r = &self->rest_of_joint[8 * j];
+			float pi[4] = { -r[4], -r[5], -r[6], r[7] }, t[4];
+			quat_mul(&self->rot[4 * j], r, t);
+			quat_mul(pi, t, &self->rot[4 * j]);
+		}
 		const void *a[2] = { &bone, &self->rot[4 * j] };
 		gd_call(GDB_Skeleton3D_set_bone_pose_rotation, skel, a, NULL);
 		if (j == 0) {

@@ -42,6 +42,28 @@ set -e
 grep -E '^(PASS|FAIL|godot:)' "$LOG_ABS" || true
 sh "$HERE/check_log.sh" "$LOG_ABS"
 
+# A graph retargeted onto a rig that is not the capture skeleton, driven
+# into a Skeleton3D with its own bone axes and compared with smg-synth
+# (test_rig.gd). SMG_RIG_GRAPH / SMG_RIG_REF: the graph and the reference
+# positions (bvh_positions.py output); skipped when not given.
+if [ -n "${SMG_RIG_GRAPH:-}" ]; then
+	RIG_LOG=$(echo "$LOG_ABS" | sed 's/\.log$//')-rig.log
+	cp "$SMG_RIG_GRAPH" "$PROJ/rig.smg"
+	cp "$SMG_RIG_REF" "$PROJ/rig_ref.csv"
+	echo "== godot retargeted rig test ($RIG_LOG)"
+	set +e
+	(cd "$PROJ" && env ${GODOT_PRELOAD:+LD_PRELOAD=$GODOT_PRELOAD} timeout "$TMO" $GD --headless --fixed-fps 30 \
+		--audio-driver Dummy --path . --script res://test_rig.gd > "$RIG_LOG" 2>&1)
+	set -e
+	grep -E '^(PASS|FAIL|rig:)' "$RIG_LOG" || true
+	planned=$(sed -n 's/^const PLANNED := \([0-9]*\).*/\1/p' "$HERE/test_rig.gd")
+	if ! grep -qx "rig: $planned passed, 0 failed" "$RIG_LOG" || grep -qE 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$RIG_LOG"; then
+		echo "test-godot: retargeted rig test failed, see $RIG_LOG" >&2
+		grep -E -A3 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$RIG_LOG" | head -20 >&2
+		exit 1
+	fi
+fi
+
 [ -n "$EDITOR_LOG" ] || exit 0
 
 # The demo project driven by synthetic input (drag, keys, right click).
