@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "bake_clip.h"
+#include "bake_graph.h" /* smgb_horn */
 #include "bake_import_util.h"
 #include "bake_roles.h"
 
@@ -185,16 +186,111 @@ smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
 
 /* ---- mirroring ----------------------------------------------------------- */
 
+/* Child directions that disagree with their reflected partners by less
+ * than this are a symmetric rig's measurement noise (CMU: a few degrees),
+ * reflected as they are; beyond it the rig's joint frames are not mirror
+ * images of each other (Bandai Namco, Maya/MotionBuilder joint orients:
+ * 90-180 deg) and the joint gets a constant correction. */
+#define SMGB_MIRROR_SYMMETRIC_DEG 20.0
+
+static double angle_between(const double a[3], const double b[3]) {
+  double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  double c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+  return acos(c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c) * (180.0 / SMGB_PI);
+}
+
+/* Shortest rotation taking direction a to direction b. */
+static void shortest_arc(const double a[3], const double b[3], double q[4]) {
+  double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  double d = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+  if (d < -0.999999) {
+    /* Opposite: half a turn about any axis perpendicular to a. */
+    double ax[3] = {0.0, -a[2], a[1]};
+    if (ax[1] * ax[1] + ax[2] * ax[2] < 1e-12 * la * la) {
+      ax[0] = -a[1];
+      ax[1] = a[0];
+      ax[2] = 0.0;
+    }
+    q[0] = ax[0]; q[1] = ax[1]; q[2] = ax[2]; q[3] = 0.0;
+  } else {
+    q[0] = (a[1] * b[2] - a[2] * b[1]) / (la * lb);
+    q[1] = (a[2] * b[0] - a[0] * b[2]) / (la * lb);
+    q[2] = (a[0] * b[1] - a[1] * b[0]) / (la * lb);
+    q[3] = 1.0 + d;
+  }
+  smgb_qnormalize(q);
+}
+
+/* Q_j for every joint: the constant rotation with Q_j o_k = S o_partner(k)
+ * for j's children k (S = reflection x -> -x), so that the reflected pose
+ * W'_j = S W_partner(j) S Q_j puts every child where the mirror image of
+ * the partner's child is, on the unchanged skeleton. One child: shortest
+ * arc; several: Horn's least-squares fit; none or symmetric: identity.
+ * Returns in fix[j] whether Q_j is not the identity. */
+static void mirror_corrections(const smgb_skeleton* s, const int32_t* partner,
+                               double (*Q)[4], uint8_t* fix) {
+  uint32_t J = s->joint_count, j, k;
+  double* a = (double*)malloc(sizeof(double) * 6 * J);
+  for (j = 0; j < J; ++j) {
+    uint32_t n = 0;
+    int asym = 0;
+    Q[j][0] = Q[j][1] = Q[j][2] = 0.0;
+    Q[j][3] = 1.0;
+    fix[j] = 0;
+    for (k = j + 1; k < J && a; ++k) {
+      const float* o = s->offsets[k];
+      const float* m = s->offsets[partner[k]];
+      double* ak = a + 6 * n;
+      if (s->parents[k] != (int32_t)j) continue;
+      ak[0] = o[0]; ak[1] = o[1]; ak[2] = o[2];
+      ak[3] = -m[0]; ak[4] = m[1]; ak[5] = m[2];
+      if (ak[0] * ak[0] + ak[1] * ak[1] + ak[2] * ak[2] < 1e-12 ||
+          ak[3] * ak[3] + ak[4] * ak[4] + ak[5] * ak[5] < 1e-12)
+        continue; /* zero-length helper joint: no direction */
+      if (angle_between(ak, ak + 3) > SMGB_MIRROR_SYMMETRIC_DEG) asym = 1;
+      ++n;
+    }
+    if (!asym) continue;
+    fix[j] = 1;
+    if (n == 1) {
+      shortest_arc(a, a + 3, Q[j]);
+    } else {
+      double* from = (double*)malloc(sizeof(double) * 6 * n);
+      uint32_t i;
+      if (!from) continue;
+      for (i = 0; i < n; ++i) {
+        memcpy(from + 3 * i, a + 6 * i, sizeof(double) * 3);
+        memcpy(from + 3 * (n + i), a + 6 * i + 3, sizeof(double) * 3);
+      }
+      smgb_horn(from, from + 3 * n, NULL, n, Q[j]);
+      smgb_qnormalize(Q[j]);
+      free(from);
+    }
+  }
+  free(a);
+}
+
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
   smgb_clip c;
   smg_result r;
   uint32_t J, j, f, stride;
   int32_t* partner;
+  double(*Q)[4];
+  uint8_t* fix;
   if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
   J = src->skeleton.joint_count;
   stride = SMGB_STRIDE(J);
   partner = (int32_t*)malloc(sizeof *partner * J);
-  if (!partner) return SMG_ERROR_OUT_OF_MEMORY;
+  Q = (double(*)[4])malloc(sizeof *Q * J);
+  fix = (uint8_t*)malloc(J);
+  if (!partner || !Q || !fix) {
+    free(partner);
+    free(Q);
+    free(fix);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
   for (j = 0; j < J; ++j) {
     char other[SMGB_NAME_MAX];
     int32_t k = -1;
@@ -208,22 +304,30 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
   /* Only swap true pairs (A->B and B->A); anything else stays in place. */
   for (j = 0; j < J; ++j)
     if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
+  mirror_corrections(&src->skeleton, partner, Q, fix);
 
   r = clip_alloc_like(src, src->frame_count, &c);
   if (r != SMG_OK) {
     free(partner);
+    free(Q);
+    free(fix);
     return r;
   }
-  /* Skeleton: names and parents stay; each joint takes its partner's offset
-   * reflected in x (parents of partners are partners in sane rigs). */
+  /* Skeleton: names and parents stay. Below a symmetric joint each joint
+   * takes its partner's offset reflected in x (parents of partners are
+   * partners in sane rigs); below a corrected one it keeps its own, which
+   * the correction turns onto the reflected partner's direction. */
   for (j = 0; j < J; ++j) {
     const float* o = src->skeleton.offsets[partner[j]];
+    int32_t p = src->skeleton.parents[j];
+    if (p >= 0 && fix[p]) continue;
     c.skeleton.offsets[j][0] = -o[0];
     c.skeleton.offsets[j][1] = o[1];
     c.skeleton.offsets[j][2] = o[2];
   }
   /* Reflection S = diag(-1, 1, 1): a rotation R becomes S R S, which for a
-   * quaternion is (x, -y, -z, w); positions get x -> -x. */
+   * quaternion is (x, -y, -z, w); positions get x -> -x. With corrections:
+   * local q'_j = Q_parent^-1 (S q_partner S) Q_j. */
   for (f = 0; f < src->frame_count; ++f) {
     const float* a = src->poses + (size_t)f * stride;
     float* o = c.poses + (size_t)f * stride;
@@ -233,13 +337,31 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
     for (j = 0; j < J; ++j) {
       const float* q = a + 3 + 4 * partner[j];
       float* d = o + 3 + 4 * j;
-      d[0] = q[0];
-      d[1] = -q[1];
-      d[2] = -q[2];
-      d[3] = q[3];
+      int32_t p = src->skeleton.parents[j];
+      if (fix[j] || (p >= 0 && fix[p])) {
+        double m[4] = {q[0], -q[1], -q[2], q[3]};
+        if (p >= 0 && fix[p]) {
+          double inv[4];
+          smgb_qconj(Q[p], inv);
+          smgb_qmul(inv, m, m);
+        }
+        if (fix[j]) smgb_qmul(m, Q[j], m);
+        smgb_qnormalize(m);
+        d[0] = (float)m[0];
+        d[1] = (float)m[1];
+        d[2] = (float)m[2];
+        d[3] = (float)m[3];
+      } else {
+        d[0] = q[0];
+        d[1] = -q[1];
+        d[2] = -q[2];
+        d[3] = q[3];
+      }
     }
   }
   free(partner);
+  free(Q);
+  free(fix);
   *out = c;
   return SMG_OK;
 }
