@@ -273,13 +273,29 @@ static void mirror_corrections(const smgb_skeleton* s, const int32_t* partner,
 }
 
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
+  int32_t* partner;
+  smg_result r;
+  if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
+  partner = (int32_t*)malloc(sizeof *partner * src->skeleton.joint_count);
+  if (!partner) return SMG_ERROR_OUT_OF_MEMORY;
+  smgb_roles_partners(&src->skeleton, NULL, partner);
+  /* Non-negative indices; signed and unsigned variants may alias. */
+  r = smgb_clip_mirror_partners(src, (const uint32_t*)partner, out);
+  free(partner);
+  return r;
+}
+
+smg_result smgb_clip_mirror_partners(const smgb_clip* src,
+                                     const uint32_t* partner_in,
+                                     smgb_clip* out) {
   smgb_clip c;
   smg_result r;
   uint32_t J, j, f, stride;
   int32_t* partner;
   double(*Q)[4];
   uint8_t* fix;
-  if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!clip_valid(src) || !out || !partner_in)
+    return SMG_ERROR_INVALID_ARGUMENT;
   J = src->skeleton.joint_count;
   stride = SMGB_STRIDE(J);
   partner = (int32_t*)malloc(sizeof *partner * J);
@@ -291,16 +307,8 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
     free(fix);
     return SMG_ERROR_OUT_OF_MEMORY;
   }
-  for (j = 0; j < J; ++j) {
-    char other[SMGB_NAME_MAX];
-    int32_t k = -1;
-    if (smgb_roles_counterpart_name(src->skeleton.names[j], other)) {
-      uint32_t i;
-      for (i = 0; i < J; ++i)
-        if (strcmp(src->skeleton.names[i], other) == 0) k = (int32_t)i;
-    }
-    partner[j] = k >= 0 ? k : (int32_t)j;
-  }
+  for (j = 0; j < J; ++j)
+    partner[j] = partner_in[j] < J ? (int32_t)partner_in[j] : (int32_t)j;
   /* Only swap true pairs (A->B and B->A); anything else stays in place. */
   for (j = 0; j < J; ++j)
     if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;

@@ -390,7 +390,7 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       if (r == SMG_OK && mirror) {
         char mname[SMGB_NAME_MAX];
         snprintf(mname, sizeof mname, "%.50s (mirror)", name);
-        r = smgb_clip_mirror(&rs, &mir);
+        r = smgb_clip_mirror_partners(&rs, b->body.mirror, &mir);
         if (r != SMG_OK)
           smgb_fail(b, "%s: mirroring failed", at);
         else

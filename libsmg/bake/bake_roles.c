@@ -517,3 +517,28 @@ float smgb_roles_leg_length(const smgb_skeleton* s, const smgb_roles* r) {
   }
   return (float)len;
 }
+
+void smgb_roles_partners(const smgb_skeleton* s, const smgb_roles* r,
+                         int32_t* partner) {
+  uint32_t j;
+  int k;
+  if (!s || !partner || !s->names) return;
+  for (j = 0; j < s->joint_count; ++j) {
+    char other[SMGB_NAME_MAX];
+    int32_t m = -1;
+    if (smgb_roles_counterpart_name(s->names[j], other))
+      m = smgb_skeleton_find(s, other);
+    partner[j] = m >= 0 ? m : (int32_t)j;
+  }
+  /* Roles pair joints whose names carry no side (a bone map's names). */
+  for (k = 0; r && k < SMGB_ROLE_COUNT; ++k) {
+    int32_t a = r->joint[k];
+    int32_t b = r->joint[smgb_role_counterpart((smgb_role)k)];
+    if (a >= 0 && b >= 0 && a != b && partner[a] == a && partner[b] == b) {
+      partner[a] = b;
+      partner[b] = a;
+    }
+  }
+  for (j = 0; j < s->joint_count; ++j)
+    if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
+}
