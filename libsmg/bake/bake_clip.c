@@ -223,22 +223,60 @@ static void shortest_arc(const double a[3], const double b[3], double q[4]) {
   smgb_qnormalize(q);
 }
 
+static int is_identity(const double q[4]) {
+  return q[0] == 0.0 && q[1] == 0.0 && q[2] == 0.0;
+}
+
+/* Mean local rotation of every joint over the clip (sign-aligned to the
+ * first frame, normalised sum). */
+static void mean_rotations(const smgb_clip* c, double (*mean)[4]) {
+  uint32_t J = c->skeleton.joint_count, S = SMGB_STRIDE(J), f, j;
+  for (j = 0; j < J; ++j) {
+    const float* q0 = c->poses + 3 + 4 * j;
+    double* m = mean[j];
+    m[0] = m[1] = m[2] = m[3] = 0.0;
+    for (f = 0; f < c->frame_count; ++f) {
+      const float* q = c->poses + (size_t)f * S + 3 + 4 * j;
+      double sg = q[0] * q0[0] + q[1] * q0[1] + q[2] * q0[2] + q[3] * q0[3];
+      sg = sg < 0.0 ? -1.0 : 1.0;
+      m[0] += sg * q[0]; m[1] += sg * q[1]; m[2] += sg * q[2]; m[3] += sg * q[3];
+    }
+    smgb_qnormalize(m);
+  }
+}
+
 /* Q_j for every joint: the constant rotation with Q_j o_k = S o_partner(k)
  * for j's children k (S = reflection x -> -x), so that the reflected pose
  * W'_j = S W_partner(j) S Q_j puts every child where the mirror image of
- * the partner's child is, on the unchanged skeleton. One child: shortest
- * arc; several: Horn's least-squares fit; none or symmetric: identity.
- * Returns in fix[j] whether Q_j is not the identity. */
-static void mirror_corrections(const smgb_skeleton* s, const int32_t* partner,
+ * the partner's child is, on the unchanged skeleton; the local rotations
+ * become q'_j = Q_parent^-1 (S q_partner S) Q_j.
+ *
+ * Several children fix Q_j (Horn's least-squares fit). One child leaves a
+ * twist about it free, no child leaves Q_j free: these are chosen so that
+ * the clip's mean local rotation of the partner, mirrored, equals the
+ * joint's own mean (a gait's left and right sides are mirror images on
+ * average). Any other twist would be a valid mirror too, but the split of
+ * a twist between a chain's joints (Spine -> Chest, a whole arm) would
+ * then differ between a clip and its mirror, and a transition blending
+ * the two local rotations would spin that limb through the twist.
+ * Children already agreeing within SMGB_MIRROR_SYMMETRIC_DEG under an
+ * uncorrected parent give the identity (symmetric rigs such as CMU are
+ * reflected exactly as before). Parents precede children, so one forward
+ * pass sees Q_parent first. fix[j]: Q_j is not the identity. */
+static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
                                double (*Q)[4], uint8_t* fix) {
+  const smgb_skeleton* s = &c->skeleton;
   uint32_t J = s->joint_count, j, k;
   double* a = (double*)malloc(sizeof(double) * 6 * J);
+  double(*mean)[4] = (double(*)[4])malloc(sizeof *mean * J);
+  if (mean) mean_rotations(c, mean);
   for (j = 0; j < J; ++j) {
+    static const double ident[4] = {0.0, 0.0, 0.0, 1.0};
+    const double* qp = j > 0 ? Q[s->parents[j]] : ident;
     uint32_t n = 0;
     int asym = 0;
     Q[j][0] = Q[j][1] = Q[j][2] = 0.0;
     Q[j][3] = 1.0;
-    fix[j] = 0;
     for (k = j + 1; k < J && a; ++k) {
       const float* o = s->offsets[k];
       const float* m = s->offsets[partner[k]];
@@ -252,11 +290,8 @@ static void mirror_corrections(const smgb_skeleton* s, const int32_t* partner,
       if (angle_between(ak, ak + 3) > SMGB_MIRROR_SYMMETRIC_DEG) asym = 1;
       ++n;
     }
-    if (!asym) continue;
-    fix[j] = 1;
-    if (n == 1) {
-      shortest_arc(a, a + 3, Q[j]);
-    } else {
+    if (!asym && (n >= 2 || is_identity(qp))) continue;
+    if (n >= 2) {
       double* from = (double*)malloc(sizeof(double) * 6 * n);
       uint32_t i;
       if (!from) continue;
@@ -267,9 +302,37 @@ static void mirror_corrections(const smgb_skeleton* s, const int32_t* partner,
       smgb_horn(from, from + 3 * n, NULL, n, Q[j]);
       smgb_qnormalize(Q[j]);
       free(from);
+    } else if (mean && a) {
+      /* M = Q_parent^-1 (S mean_partner S): the mirrored mean before Q_j.
+       * No child: Q_j = M^-1 mean_j. One child: Q_j = base R(axis, t) with
+       * base taking the child's direction onto its target and t the twist
+       * of (M base)^-1 mean_j about the child's direction. */
+      const double* mp = mean[partner[j]];
+      double mir[4] = {mp[0], -mp[1], -mp[2], mp[3]}, inv[4], M[4], D[4];
+      smgb_qconj(qp, inv);
+      smgb_qmul(inv, mir, M);
+      if (n == 0) {
+        smgb_qconj(M, inv);
+        smgb_qmul(inv, mean[j], Q[j]);
+      } else {
+        double base[4], axis[3], len, t, tw[4];
+        shortest_arc(a, a + 3, base);
+        smgb_qmul(M, base, D);
+        smgb_qconj(D, inv);
+        smgb_qmul(inv, mean[j], D);
+        len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        axis[0] = a[0] / len; axis[1] = a[1] / len; axis[2] = a[2] / len;
+        t = 2.0 * atan2(D[0] * axis[0] + D[1] * axis[1] + D[2] * axis[2],
+                        D[3]);
+        smgb_qaxis_angle(axis, t, tw);
+        smgb_qmul(base, tw, Q[j]);
+      }
+      smgb_qnormalize(Q[j]);
     }
   }
+  for (j = 0; j < J; ++j) fix[j] = !is_identity(Q[j]);
   free(a);
+  free(mean);
 }
 
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
@@ -312,7 +375,7 @@ smg_result smgb_clip_mirror_partners(const smgb_clip* src,
   /* Only swap true pairs (A->B and B->A); anything else stays in place. */
   for (j = 0; j < J; ++j)
     if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
-  mirror_corrections(&src->skeleton, partner, Q, fix);
+  mirror_corrections(src, partner, Q, fix);
 
   r = clip_alloc_like(src, src->frame_count, &c);
   if (r != SMG_OK) {

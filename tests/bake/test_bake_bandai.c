@@ -7,6 +7,11 @@
  *
  *  - the blob's skeleton is the first clip's (joint_Root folded away, Hips
  *    joint 0) with its bone lengths in metres;
+ *  - every pool frame follows the previous one smoothly, blended
+ *    transitions included: no joint moves more than 0.5 m (15 m/s) relative
+ *    to the hips in one frame (a running foot: 0.32 m; the rig's joint
+ *    frames are not mirror images, and a transition between a clip and
+ *    its mirror once spun whole limbs, 1.1 m per frame);
  *  - styles walk / run / exhausted, actions wave / raise, and walk and
  *    exhausted joined by transitions both ways;
  *  - toes rest 0-5 cm above the floor: each toe's floor level (its 5th
@@ -177,6 +182,65 @@ static void check_feet(const smgi_graph_data* g) {
   free(pos);
 }
 
+/* Largest movement of any joint relative to the hips between consecutive
+ * frames of a clip or of one blended transition window. */
+static void check_smooth(const smgi_graph_data* g) {
+  uint32_t J = g->joint_count, c, j, f;
+  uint32_t k = (uint32_t)(g->info->window_seconds * g->info->frame_rate + 0.5f);
+  char(*names)[SMGB_NAME_MAX] = calloc(J, sizeof *names);
+  int32_t* parents = calloc(J, sizeof *parents);
+  float(*offsets)[3] = calloc(J, sizeof *offsets);
+  float* pose = malloc(sizeof(float) * SMGI_POSE_FLOATS(J));
+  float* pos = malloc(sizeof(float) * 3 * J);
+  float* prev = malloc(sizeof(float) * 3 * J);
+  smgb_skeleton s;
+  double worst = 0.0;
+  const char* where = "";
+  assert_true(names && parents && offsets && pose && pos && prev && k > 0);
+  for (j = 0; j < J; ++j) {
+    parents[j] = g->joints[j].parent;
+    memcpy(offsets[j], g->joints[j].offset, sizeof offsets[j]);
+  }
+  s.joint_count = J;
+  s.names = names;
+  s.parents = parents;
+  s.offsets = offsets;
+  for (c = 0; c < g->clip_count; ++c) {
+    const smgi_clip* cl = &g->clips[c];
+    for (f = 0; f < cl->frame_count; ++f) {
+      smgi_pose_unpack(smgi_pose_record(g, cl->first_frame + f), J, pose);
+      smgb_fk(&s, pose, pos, NULL);
+      for (j = 0; j < J; ++j) {
+        pos[3 * j] -= pos[0];
+        pos[3 * j + 1] -= pos[1];
+        pos[3 * j + 2] -= pos[2];
+      }
+      if (f > 0 && (!(cl->flags & SMGI_CLIP_BLEND) || f % k != 0)) {
+        for (j = 1; j < J; ++j) {
+          double dx = pos[3 * j] - prev[3 * j];
+          double dy = pos[3 * j + 1] - prev[3 * j + 1];
+          double dz = pos[3 * j + 2] - prev[3 * j + 2];
+          double d = sqrt(dx * dx + dy * dy + dz * dz);
+          if (d > worst) {
+            worst = d;
+            where = g->strings + cl->name;
+          }
+        }
+      }
+      memcpy(prev, pos, sizeof(float) * 3 * J);
+    }
+  }
+  printf("largest joint movement relative to the hips in one frame: %.3f m "
+         "(%s)\n", worst, where);
+  assert_true(worst <= 0.5);
+  free(names);
+  free(parents);
+  free(offsets);
+  free(pose);
+  free(pos);
+  free(prev);
+}
+
 /* The blob's bones are the first clip's, in metres. */
 static void check_bones(const smgi_graph_data* g, const char* first_clip) {
   smgb_clip c;
@@ -276,6 +340,7 @@ static void test_bandai_set(void** state) {
          g.upper_edge_count, g.splice_count);
   check_bones(&g, first);
   check_labels(&g);
+  check_smooth(&g);
   check_feet(&g);
   smg_bake_result_free(&res);
   free(descs);

@@ -13,7 +13,11 @@
  *  - Mirroring a rig whose joint frames are not mirror images of each
  *    other (Maya/MotionBuilder joint orients, as in Bandai Namco's files):
  *    the mirrored motion, on the unchanged skeleton, puts every joint at
- *    the reflected position of its counterpart.
+ *    the reflected position of its counterpart; and on a left/right
+ *    symmetric gait the mirror of frame t has the same local rotations as
+ *    frame t + half a cycle, so a transition blending a clip with its
+ *    mirror is smooth (a different but position-equivalent split of a
+ *    twist along a chain spun whole limbs in such blends).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -363,11 +367,122 @@ static void test_mirror_joint_orients(void** state) {
   smgb_clip_free(&mm);
 }
 
+/* Joint orients of the rig in test_mirror_joint_orients: no joint frame
+ * is the mirror image of its counterpart's. */
+static void orient(uint32_t j, double O[4]) {
+  double rz[4], rx[4];
+  smgb_qaxis(2, SMGB_PI / 2.0, rz);
+  smgb_qaxis(0, 37.0 * j * SMGB_PI / 180.0, rx);
+  smgb_qmul(rz, rx, O);
+}
+
+/* A symmetric gait on the unoriented figure: r_partner(t) is the mirror
+ * (x, -y, -z, w) of r_j(t + T/2); central joints sway about y with
+ * sin(wt) and pitch about x with cos(2wt). */
+static void gait_rotation(uint32_t j, int32_t partner, double t, double T,
+                          double q[4]) {
+  double w = 2.0 * SMGB_PI / T, a[4], b[4];
+  if (partner == (int32_t)j) {
+    smgb_qaxis(1, 0.3 * sin(w * t), a);
+    smgb_qaxis(0, 0.2 * cos(2.0 * w * t) + 0.05 * j, b);
+    smgb_qmul(a, b, q);
+    return;
+  }
+  if (partner < (int32_t)j) { /* right side: mirror of the left, later */
+    gait_rotation((uint32_t)partner, (int32_t)j, t + 0.5 * T, T, q);
+    q[1] = -q[1];
+    q[2] = -q[2];
+    return;
+  }
+  smgb_qaxis(0, 0.6 * sin(w * t + 0.4 * j), a);
+  smgb_qaxis(2, 0.25 + 0.2 * cos(w * t + j), b);
+  smgb_qmul(a, b, q);
+}
+
+static void test_mirror_symmetric_gait(void** state) {
+  enum { HALF = 15, FRAMES = 4 * HALF }; /* two cycles of 30 frames */
+  smgb_clip c, m;
+  double O[NJ][4];
+  uint32_t J = NJ, S = SMGB_STRIDE(NJ), j, f;
+  int32_t partner[NJ];
+  double worst = 0.0;
+  (void)state;
+  memset(&c, 0, sizeof c);
+  snprintf(c.name, sizeof c.name, "gait");
+  c.skeleton.joint_count = J;
+  c.skeleton.names = calloc(J, sizeof *c.skeleton.names);
+  c.skeleton.parents = calloc(J, sizeof *c.skeleton.parents);
+  c.skeleton.offsets = calloc(J, sizeof *c.skeleton.offsets);
+  c.frame_count = FRAMES;
+  c.frame_rate = 30.0f;
+  c.poses = calloc((size_t)FRAMES * S, sizeof(float));
+  assert_true(c.skeleton.names && c.skeleton.parents && c.skeleton.offsets &&
+              c.poses);
+  for (j = 0; j < J; ++j) {
+    double inv[4], u[3];
+    orient(j, O[j]);
+    snprintf(c.skeleton.names[j], SMGB_NAME_MAX, "%s", k_names[j]);
+    c.skeleton.parents[j] = k_parents[j];
+    u[0] = k_offsets_cm[j][0] * 0.01;
+    u[1] = k_offsets_cm[j][1] * 0.01;
+    u[2] = k_offsets_cm[j][2] * 0.01;
+    if (j > 0) {
+      smgb_qconj(O[k_parents[j]], inv);
+      smgb_qrot(inv, u, u);
+    }
+    c.skeleton.offsets[j][0] = (float)u[0];
+    c.skeleton.offsets[j][1] = (float)u[1];
+    c.skeleton.offsets[j][2] = (float)u[2];
+  }
+  for (j = 0; j < J; ++j) {
+    char other[SMGB_NAME_MAX];
+    partner[j] = smgb_roles_counterpart_name(k_names[j], other)
+                     ? smgb_skeleton_find(&c.skeleton, other)
+                     : (int32_t)j;
+  }
+  for (f = 0; f < FRAMES; ++f) {
+    float* p = c.poses + (size_t)f * S;
+    p[0] = (float)(0.03 * sin(SMGB_PI * f / HALF));
+    p[1] = 0.9f;
+    p[2] = 0.04f * f;
+    for (j = 0; j < J; ++j) {
+      /* The oriented rig's local rotation: O_parent^-1 r_j O_j. */
+      double r[4], inv[4], q[4];
+      gait_rotation(j, partner[j], f, 2.0 * HALF, r);
+      smgb_qmul(r, O[j], q);
+      if (j > 0) {
+        smgb_qconj(O[k_parents[j]], inv);
+        smgb_qmul(inv, q, q);
+      }
+      smgb_qnormalize(q);
+      p[3 + 4 * j] = (float)q[0];
+      p[4 + 4 * j] = (float)q[1];
+      p[5 + 4 * j] = (float)q[2];
+      p[6 + 4 * j] = (float)q[3];
+    }
+  }
+  assert_int_equal(smgb_clip_mirror(&c, &m), SMG_OK);
+  for (f = 0; f + HALF < FRAMES; ++f)
+    for (j = 0; j < J; ++j) {
+      const float* a = m.poses + (size_t)f * S + 3 + 4 * j;
+      const float* b = c.poses + (size_t)(f + HALF) * S + 3 + 4 * j;
+      double d = fabs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
+      double angle = 2.0 * acos(d > 1.0 ? 1.0 : d) * (180.0 / SMGB_PI);
+      if (angle > worst) worst = angle;
+    }
+  printf("mirrored symmetric gait vs half a cycle later: local rotations "
+         "within %.4f deg\n", worst);
+  assert_true(worst < 0.2); /* float rounding: acos near 1 */
+  smgb_clip_free(&c);
+  smgb_clip_free(&m);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bandai_shape_matches_plain),
       cmocka_unit_test(test_wobbling_positions),
       cmocka_unit_test(test_mirror_joint_orients),
+      cmocka_unit_test(test_mirror_symmetric_gait),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
