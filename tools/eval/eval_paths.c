@@ -507,7 +507,7 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
 }
 
 static void summarize_paths(eval_ctx* ctx, const path_result* res,
-                            const char* graph) {
+                            const char* graph, uint32_t joints) {
   size_t k, ran = 0, ended = 0, sw_total = 0, sw_near = 0;
   double first_max = 0, med_max = 0, p99_max = 0, dev_lo = INFINITY,
          dev_hi = 0, sk_lo = INFINITY, sk_hi = 0;
@@ -538,13 +538,14 @@ static void summarize_paths(eval_ctx* ctx, const path_result* res,
   eval_summary(ctx,
                "**Path following%s%s** (%zu paths, 30 Hz): path given -> first "
                "pose at most %.3f ms (paper: 3-23 s to plan a drawn path); "
-               "per frame (step + 31 matrices) median <= %.1f us, p99 <= "
+               "per frame (step + %u matrices) median <= %.1f us, p99 <= "
                "%.1f us; followed the path to its end (within 1 m) on %zu of %zu "
                "paths; mean "
                "root distance from the path %.2f-%.2f m per path; foot skate "
                "%.2f-%.2f cm per contact frame; %zu of %zu style/action "
                "switches within 1 m of the requested point.",
-               graph ? ", " : "", graph ? graph : "", ran, first_max, med_max,
+               graph ? ", " : "", graph ? graph : "", ran, first_max, joints,
+               med_max,
                p99_max, ended, ran, dev_lo, dev_hi,
                sk_lo, sk_hi, sw_near, sw_total);
 }
@@ -554,7 +555,11 @@ static void report_paths(eval_ctx* ctx, smg_graph* g,
   size_t k;
   uint32_t c;
   char a[32], b[32], d[32], e[32], f[32], h[32], x[32];
-  summarize_paths(ctx, res, graph);
+  smg_graph_info info;
+  memset(&info, 0, sizeof(info));
+  info.struct_size = sizeof(info);
+  smg_graph_get_info(g, &info);
+  summarize_paths(ctx, res, graph, info.joint_count);
   eval_md(ctx,
           "| Path | length (m) | frames | path given -> first pose (ms) | "
           "per frame median / p99 (us) | root distance from path mean / max "
