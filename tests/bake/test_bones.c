@@ -7,6 +7,8 @@
  * the message and write no blob; the same skeleton with a correct map
  * bakes. The clips are synthetic walks with every joint renamed, written
  * here. Skips the smg-bake part when build/smg-bake has not been built.
+ * Through the C API: a malformed smg_bake_clip_desc.bones fails first,
+ * naming the clip.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -191,10 +193,39 @@ static void test_bake_with_bone_map(void** state) {
   imp_rmdir(dir);
 }
 
+/* smg_bake_clip_desc.bones is checked before anything is loaded: the
+ * clip and the bad entry are named; a good map on recognisable names
+ * bakes (the map wins over the names it repeats). */
+static void test_desc_bone_map(void** state) {
+  bg_set set;
+  smg_bake_result res;
+  (void)state;
+  memset(&set, 0, sizeof set);
+  bg_add(&set, SMGB_SYNTH_WALK, 2.0f, 0.0f, SMG_BAKE_ROLE_LOWER, "walk");
+  bg_add(&set, SMGB_SYNTH_PUNCH, 2.0f, 0.0f, SMG_BAKE_ROLE_UPPER, "punch");
+  set.descs[1].bones = "left_foot=LeftFoot\nleft_paw=LeftHand";
+  assert_int_equal(bg_bake(&set, NULL, &res), SMG_ERROR_INVALID_ARGUMENT);
+  assert_non_null(strstr(res.error, "clip 2"));
+  assert_non_null(strstr(res.error, "left_paw"));
+  assert_null(res.blob);
+  smg_bake_result_free(&res);
+  set.descs[1].bones = "left_foot";
+  assert_int_equal(bg_bake(&set, NULL, &res), SMG_ERROR_INVALID_ARGUMENT);
+  assert_non_null(strstr(res.error, "ROLE=JOINT"));
+  smg_bake_result_free(&res);
+  set.descs[0].bones = "left_foot=LeftFoot\nright_foot=RightFoot";
+  set.descs[1].bones = NULL;
+  if (bg_bake(&set, NULL, &res) != SMG_OK) fail_msg("%s", res.error);
+  assert_non_null(res.blob);
+  smg_bake_result_free(&res);
+  bg_free(&set);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_bones_statement),
       cmocka_unit_test(test_bake_with_bone_map),
+      cmocka_unit_test(test_desc_bone_map),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
