@@ -269,7 +269,18 @@ static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
   uint32_t J = s->joint_count, j, k;
   double* a = (double*)malloc(sizeof(double) * 6 * J);
   double(*mean)[4] = (double(*)[4])malloc(sizeof *mean * J);
+  /* unpaired[j]: j has no counterpart but hangs below a joint that has
+   * one (a prop or extra chain on one hand). Its "partner" is itself, so
+   * its offset says nothing about the rig's frames: it keeps its parent's
+   * correction and does not take part in its parent's fit. */
+  uint8_t* unpaired = (uint8_t*)calloc(J, 1);
+  uint8_t* sided = (uint8_t*)calloc(J, 1);
   if (mean) mean_rotations(c, mean);
+  for (j = 0; j < J && sided && unpaired; ++j) {
+    int32_t p = s->parents[j];
+    sided[j] = partner[j] != (int32_t)j || (p >= 0 && sided[p]);
+    unpaired[j] = sided[j] && partner[j] == (int32_t)j;
+  }
   for (j = 0; j < J; ++j) {
     static const double ident[4] = {0.0, 0.0, 0.0, 1.0};
     const double* qp = j > 0 ? Q[s->parents[j]] : ident;
@@ -277,11 +288,15 @@ static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
     int asym = 0;
     Q[j][0] = Q[j][1] = Q[j][2] = 0.0;
     Q[j][3] = 1.0;
+    if (unpaired && unpaired[j]) {
+      memcpy(Q[j], qp, sizeof Q[j]);
+      continue;
+    }
     for (k = j + 1; k < J && a; ++k) {
       const float* o = s->offsets[k];
       const float* m = s->offsets[partner[k]];
       double* ak = a + 6 * n;
-      if (s->parents[k] != (int32_t)j) continue;
+      if (s->parents[k] != (int32_t)j || (unpaired && unpaired[k])) continue;
       ak[0] = o[0]; ak[1] = o[1]; ak[2] = o[2];
       ak[3] = -m[0]; ak[4] = m[1]; ak[5] = m[2];
       if (ak[0] * ak[0] + ak[1] * ak[1] + ak[2] * ak[2] < 1e-12 ||
@@ -333,6 +348,8 @@ static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
   for (j = 0; j < J; ++j) fix[j] = !is_identity(Q[j]);
   free(a);
   free(mean);
+  free(unpaired);
+  free(sided);
 }
 
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
