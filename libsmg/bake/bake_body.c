@@ -9,7 +9,6 @@
  * the common conventions, or a bone map); a skeleton without them is
  * rejected with a message naming the file and the missing role.
  */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 

@@ -8,7 +8,6 @@
  * rotation per joint. FK: W_0 = q_0, P_0 = t; W_j = W_parent q_j,
  * P_j = P_parent + W_parent offset_j.
  */
-#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
