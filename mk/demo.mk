@@ -2,8 +2,13 @@
 # include/smg.h, like any engine. C++17 with GLM and Dear ImGui (Debian's
 # libimgui-dev ships imgui plus its SDL2/OpenGL3 backends in libimgui.a).
 #
-#   make demo              run on the embedded default graph (build/default.smg)
+#   make demo              run on real motion capture when $(SMG_SHARED) has it
+#                          (the Bandai Namco set, data/bandai.manifest: turning
+#                          walks, runs, waving spliced on; baked once into
+#                          build/bandai.smg), else on the synthetic default
+#                          graph (build/default.smg)
 #   make demo DEMO_ARGS="--characters 50"
+#   make demo DEMO_REAL_MANIFEST=M DEMO_REAL_DATA=DIR   other real clips
 #   make demo-cmu          bake the CMU set from $(SMG_SHARED) and run on it
 #   make test-demo         headless smoke test (part of `make test`)
 #   make demo-pictures     regenerate docs/img/demo-*.png from the CMU set
@@ -16,6 +21,12 @@ DEMO_PNGCHECK := $(BUILD)/smg-demo-pngcheck
 DEMO_DEFAULT_BLOB := $(BUILD)/default.smg
 DEMO_CMU_BLOB := $(BUILD)/cmu.smg
 DEMO_CMU_MANIFEST := data/cmu.manifest
+# Real data `make demo` prefers: the manifest and the folder its clips are
+# read from (--data-dir). Baked blobs stay in build/ (the Bandai Namco
+# licence forbids committing anything derived from the clips).
+DEMO_REAL_MANIFEST ?= data/bandai.manifest
+DEMO_REAL_DATA ?= $(SMG_SHARED)/mocap/bandai-namco
+DEMO_REAL_BLOB ?= $(BUILD)/$(basename $(notdir $(DEMO_REAL_MANIFEST))).smg
 # The library the demo links; a static libsmg.a keeps the binary relocatable.
 DEMO_LIBSMG ?= $(LIBSMG_A)
 DEMO_ARGS ?=
@@ -50,8 +61,21 @@ $(DEMO_PNGCHECK): demo/tools/png_check.cpp
 .PHONY: demo demo-cmu test-demo demo-pictures demo-build
 demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK)
 
-demo: $(DEMO_BIN) $(DEMO_DEFAULT_BLOB)
-	$(DEMO_BIN) --graph $(DEMO_DEFAULT_BLOB) $(DEMO_ARGS)
+# Real clips when they are there (baked when missing or older than the
+# manifest or the baker); the synthetic default otherwise, or when that
+# bake fails, so `make demo` works on a bare machine.
+demo: $(DEMO_BIN) $(DEMO_DEFAULT_BLOB) $(BUILD)/smg-bake
+	@graph=$(DEMO_DEFAULT_BLOB); \
+	if [ -d "$(DEMO_REAL_DATA)" ] && [ -f "$(DEMO_REAL_MANIFEST)" ]; then \
+	  if [ ! -f "$(DEMO_REAL_BLOB)" ] || [ "$(DEMO_REAL_MANIFEST)" -nt "$(DEMO_REAL_BLOB)" ] || \
+	      [ "$(BUILD)/smg-bake" -nt "$(DEMO_REAL_BLOB)" ]; then \
+	    echo "demo: baking $(DEMO_REAL_BLOB) from $(DEMO_REAL_MANIFEST)"; \
+	    $(BUILD)/smg-bake -m $(DEMO_REAL_MANIFEST) --data-dir $(DEMO_REAL_DATA) -o $(DEMO_REAL_BLOB) || \
+	      rm -f $(DEMO_REAL_BLOB); fi; \
+	  if [ -f "$(DEMO_REAL_BLOB)" ]; then graph=$(DEMO_REAL_BLOB); fi; \
+	else echo "demo: no clips at $(DEMO_REAL_DATA) (set SMG_SHARED): using the synthetic default graph"; fi; \
+	echo "demo: running on $$graph"; \
+	$(DEMO_BIN) --graph $$graph $(DEMO_ARGS)
 
 # Bakes the CMU blob when missing or older than the manifest or the baker.
 define demo_bake_cmu

@@ -9,7 +9,6 @@
  * the common conventions, or a bone map); a skeleton without them is
  * rejected with a message naming the file and the missing role.
  */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -93,17 +92,22 @@ smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
     smgb_fail(b, "out of memory (body tables)");
     return SMG_ERROR_OUT_OF_MEMORY;
   }
+  {
+    int32_t* partner = (int32_t*)malloc(sizeof *partner * J);
+    if (!partner) {
+      smgb_fail(b, "out of memory (body tables)");
+      return SMG_ERROR_OUT_OF_MEMORY;
+    }
+    /* The rule smgb_clip_mirror_partners is given, so the blob's mirror
+     * table matches the mirrored clips. */
+    smgb_roles_partners(s, &body->roles, partner);
+    for (j = 0; j < J; ++j) body->mirror[j] = (uint32_t)partner[j];
+    free(partner);
+  }
   for (j = 0; j < J; ++j) {
-    char other[SMGB_NAME_MAX];
-    int32_t m = -1;
     body->body_part[j] = j == 0 ? SMG_BODY_ROOT
                          : in_subtree(s, j, body->spine_base) ? SMG_BODY_UPPER
                                                                : SMG_BODY_LOWER;
-    /* The same name rule as smgb_clip_mirror, so the blob's mirror table
-     * matches the mirrored clips. */
-    if (smgb_roles_counterpart_name(s->names[j], other))
-      m = smgb_skeleton_find(s, other);
-    body->mirror[j] = m >= 0 ? (uint32_t)m : j;
     if (body->body_part[j] != SMG_BODY_UPPER && (j == 0 || has_length(s, j)))
       body->lower_points[body->lower_point_count++] = j;
   }

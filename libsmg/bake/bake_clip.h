@@ -77,6 +77,10 @@ smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
  * name (smgb_roles_counterpart_name: Left/Right, L/R, _L/_R, .L/.R, ...).
  * mirror(mirror(c)) == c. */
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out);
+/* The same with the counterpart of every joint given (partner[j] = j for
+ * central joints; smgb_roles_partners). */
+smg_result smgb_clip_mirror_partners(const smgb_clip* src,
+                                     const uint32_t* partner, smgb_clip* out);
 /* Put `clip` on `reference` (same joint names and order required, else
  * SMG_ERROR_INVALID_ARGUMENT with a message): keep joint rotations, scale
  * root translation by the ratio of leg lengths, replace offsets. */

@@ -3,7 +3,7 @@
  *
  * One statement per line, whitespace-separated tokens, '#' starts a comment,
  * "double quotes" allow spaces in a token. Settings (unit, skip_first_frame,
- * mirror, animation) apply to the clip lines that follow them; a clip line
+ * mirror, animation, bones) apply to the clip lines that follow them; a clip line
  * may override them with key=value options. Every error names file:line.
  */
 #include <errno.h>
@@ -478,9 +478,10 @@ smg_result smgb_manifest_load(const char* path, const char* data_dir_override,
     }
     if (n != 2) {
       smgb_imp_errorf(err,
-                      "%sexpected 'lower ...', 'upper ...' or one of "
-                      "frame_rate/root/unit/skip_first_frame/mirror/animation "
-                      "followed by one value, found '%.60s' with %d words",
+                      "%sexpected 'lower ...', 'upper ...', 'bones ...' or "
+                      "one of frame_rate/root/unit/skip_first_frame/mirror/"
+                      "animation followed by one value, found '%.60s' with "
+                      "%d words",
                       at, tok[0], n);
       goto fail;
     }

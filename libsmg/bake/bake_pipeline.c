@@ -335,6 +335,11 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       smgb_fail(b, "%s: neither a path nor an in-memory clip", at);
       return SMG_ERROR_INVALID_ARGUMENT;
     }
+    /* A malformed bone map fails before any file is read. */
+    if ((r = smgb_bone_map_check(clip_bones(d), at, &err)) != SMG_OK) {
+      smgb_fail(b, "%s", err.message);
+      return r;
+    }
     if (d->path) {
       if (desc->data_dir && desc->data_dir[0] && d->path[0] != '/')
         snprintf(path, sizeof path, "%s/%s", desc->data_dir, d->path);
@@ -447,7 +452,7 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       if (r == SMG_OK && mirror) {
         char mname[SMGB_NAME_MAX];
         snprintf(mname, sizeof mname, "%.50s (mirror)", name);
-        r = smgb_clip_mirror(&rs, &mir);
+        r = smgb_clip_mirror_partners(&rs, b->body.mirror, &mir);
         if (r != SMG_OK)
           smgb_fail(b, "%s: mirroring failed", at);
         else

@@ -5,7 +5,8 @@
  * an "ns:" namespace), at camelCase boundaries ("LeftUpLeg" -> Left Up
  * Leg, "LHipJoint" -> L Hip Joint) and around digit runs ("Spine1" ->
  * Spine 1). A word Left/Right/L/R (any case) is the side; digit words and
- * rig prefixes (mixamorig, Bip) are dropped; the remaining words, lower
+ * rig prefixes (mixamorig, Bip, VRoid's J_Bip_C_, Character1_, DEF-) are
+ * dropped; the remaining words, lower
  * case and concatenated, form the *core* ("upleg", "upperleg", "toebase")
  * that the synonym tables below match. Synonyms are listed in order of
  * preference, so a rig with both "LeftUpLeg" and a helper "LHipJoint"
@@ -124,6 +125,18 @@ static int word_side(const name_words* w, uint32_t k) {
   return SIDE_NONE;
 }
 
+/* Words rigs put around the body-part name: Mixamo "mixamorig", 3ds Max
+ * "Bip01", VRoid "J_Bip_C_/L_/R_", HumanIK "Character1_", Rigify "DEF-",
+ * "ORG-". */
+static int rig_prefix(const name_words* w, uint32_t k) {
+  static const char* const words[] = {"mixamorig", "bip", "j", "c",
+                                      "character", "def", "org"};
+  size_t i;
+  for (i = 0; i < sizeof words / sizeof words[0]; ++i)
+    if (word_is(w, k, words[i])) return 1;
+  return 0;
+}
+
 /* Side and core of a name ("mixamorig:LeftUpLeg" -> left, "upleg"). */
 static int name_core(const char* name, char* core, size_t size) {
   name_words w;
@@ -138,8 +151,7 @@ static int name_core(const char* name, char* core, size_t size) {
       side = s;
       continue;
     }
-    if (isdigit((unsigned char)w.base[w.start[k]]) ||
-        word_is(&w, k, "mixamorig") || word_is(&w, k, "bip"))
+    if (isdigit((unsigned char)w.base[w.start[k]]) || rig_prefix(&w, k))
       continue;
     for (i = 0; i < w.len[k] && used + 1 < size; ++i)
       core[used++] = (char)tolower((unsigned char)w.base[w.start[k] + i]);
@@ -516,4 +528,29 @@ float smgb_roles_leg_length(const smgb_skeleton* s, const smgb_roles* r) {
     j = s->parents[j];
   }
   return (float)len;
+}
+
+void smgb_roles_partners(const smgb_skeleton* s, const smgb_roles* r,
+                         int32_t* partner) {
+  uint32_t j;
+  int k;
+  if (!s || !partner || !s->names) return;
+  for (j = 0; j < s->joint_count; ++j) {
+    char other[SMGB_NAME_MAX];
+    int32_t m = -1;
+    if (smgb_roles_counterpart_name(s->names[j], other))
+      m = smgb_skeleton_find(s, other);
+    partner[j] = m >= 0 ? m : (int32_t)j;
+  }
+  /* Roles pair joints whose names carry no side (a bone map's names). */
+  for (k = 0; r && k < SMGB_ROLE_COUNT; ++k) {
+    int32_t a = r->joint[k];
+    int32_t b = r->joint[smgb_role_counterpart((smgb_role)k)];
+    if (a >= 0 && b >= 0 && a != b && partner[a] == a && partner[b] == b) {
+      partner[a] = b;
+      partner[b] = a;
+    }
+  }
+  for (j = 0; j < s->joint_count; ++j)
+    if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
 }

@@ -97,4 +97,12 @@ float smgb_roles_leg_length(const smgb_skeleton* s, const smgb_roles* r);
  * .L/.R, _l/_r, " L"/" R", ...Left/...Right. mirror(mirror(n)) == n. */
 int smgb_roles_counterpart_name(const char* name, char out[SMGB_NAME_MAX]);
 
+/* Left/right counterpart of every joint of `s` (partner[j] = j for central
+ * and unpaired joints): pairs of names (smgb_roles_counterpart_name), then
+ * the joints of paired roles (left_foot/right_foot, ...) of `r`, which may
+ * be NULL. Only mutual pairs are kept. The blob's mirror table and
+ * smgb_clip_mirror_partners use it, so both agree. */
+void smgb_roles_partners(const smgb_skeleton* s, const smgb_roles* r,
+                         int32_t* partner);
+
 #endif /* BAKE_ROLES_H */

@@ -28,6 +28,7 @@ static void usage(void) {
   fprintf(stderr,
           "usage: smg-eval [--shared DIR] [--out results.md] [--img DIR]\n"
           "                [--manifest data/cmu.manifest] [--keep DIR]\n"
+          "                [--bandai-manifest data/bandai.manifest]\n"
           "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
           "--keep DIR also writes the baked blobs and per-path CSV traces "
           "to DIR\n");
@@ -168,6 +169,8 @@ int main(int argc, char** argv) {
       ctx.keep_dir = argv[++i];
     else if (!strcmp(argv[i], "--manifest") && i + 1 < argc)
       ctx.manifest = argv[++i];
+    else if (!strcmp(argv[i], "--bandai-manifest") && i + 1 < argc)
+      ctx.bandai_manifest = argv[++i];
     else if (!strcmp(argv[i], "--check"))
       ctx.check = 1;
     else if (!strcmp(argv[i], "--quick"))
@@ -178,12 +181,18 @@ int main(int argc, char** argv) {
     }
   }
   if (!ctx.manifest) ctx.manifest = "data/cmu.manifest";
+  if (!ctx.bandai_manifest) ctx.bandai_manifest = "data/bandai.manifest";
   if (ctx.keep_dir) mkdir(ctx.keep_dir, 0777);
   if (!shared) shared = getenv("SMG_SHARED");
   if (!shared) shared = "../shared";
   snprintf(ctx.cmu_dir, sizeof(ctx.cmu_dir), "%s/mocap/cmu", shared);
   eval_cmu_clip(&ctx, "09_12", probe, sizeof(probe));
   ctx.have_cmu = file_readable(probe);
+  snprintf(ctx.bandai_dir, sizeof(ctx.bandai_dir), "%s/mocap/bandai-namco",
+           shared);
+  snprintf(probe, sizeof(probe), "%s/dataset-2_walk_normal_001.bvh",
+           ctx.bandai_dir);
+  ctx.have_bandai = file_readable(probe);
   if (ctx.check) ctx.quick = 1;
   t0 = eval_now();
 
@@ -252,6 +261,9 @@ int main(int argc, char** argv) {
             "planned at once); libsmg plans incrementally, so section 2 "
             "reports the time from giving the path to the first pose plus "
             "the per-frame cost.\n\n");
+  }
+  eval_section_bandai(&ctx);
+  if (ctx.md) {
     eval_md(&ctx, "Whole evaluation run: %.1f s wall clock.\n",
             eval_now() - t0);
     fclose(ctx.md);
