@@ -31,6 +31,7 @@ typedef struct eval_ctx {
   const char* default_blob; /* synthetic blob for checks without CMU */
   const char* keep_dir;  /* --keep: also write blobs and CSV traces here */
   const char* manifest;  /* the paper-size set (data/cmu.manifest) */
+  const char* only;      /* --only SECTION: run just that one ("follow") */
 } eval_ctx;
 
 /* Markdown output (no-op in check mode). */
@@ -85,6 +86,10 @@ const char* eval_fmt(char* buf, size_t size, const char* fmt, double v);
 void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size);
 /* Path following on five paths with transition and splice points. */
 void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
+/* Staying on drawn paths (issue 12): data/paths on the CMU blob (may be
+ * NULL) and the sparse set, root steering on and off. */
+void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
+                         size_t cmu_size);
 /* Splicing accuracy (Fig. 5) and the synchronization check. */
 void eval_section_splice(eval_ctx* ctx);
 

@@ -30,7 +30,9 @@ static void usage(void) {
           "                [--manifest data/cmu.manifest] [--keep DIR]\n"
           "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
           "--keep DIR also writes the baked blobs and per-path CSV traces "
-          "to DIR\n");
+          "to DIR\n"
+          "--only follow runs just the bake and the path-following section "
+          "(report to --out)\n");
 }
 
 /* First line of a command's output (trailing newline removed). */
@@ -168,6 +170,8 @@ int main(int argc, char** argv) {
       ctx.keep_dir = argv[++i];
     else if (!strcmp(argv[i], "--manifest") && i + 1 < argc)
       ctx.manifest = argv[++i];
+    else if (!strcmp(argv[i], "--only") && i + 1 < argc)
+      ctx.only = argv[++i];
     else if (!strcmp(argv[i], "--check"))
       ctx.check = 1;
     else if (!strcmp(argv[i], "--quick"))
@@ -176,6 +180,10 @@ int main(int argc, char** argv) {
       usage();
       return 2;
     }
+  }
+  if (ctx.only && strcmp(ctx.only, "follow") != 0) {
+    usage();
+    return 2;
   }
   if (!ctx.manifest) ctx.manifest = "data/cmu.manifest";
   if (ctx.keep_dir) mkdir(ctx.keep_dir, 0777);
@@ -218,8 +226,9 @@ int main(int argc, char** argv) {
              ctx.cmu_dir, ctx.check ? "" : " (the report says so)");
 
   eval_section_bake(&ctx, &blob, &blob_size);
-  eval_section_paths(&ctx, blob, blob_size);
-  eval_section_splice(&ctx);
+  if (!ctx.only) eval_section_paths(&ctx, blob, blob_size);
+  if (!ctx.check) eval_section_follow(&ctx, blob, blob_size);
+  if (!ctx.only) eval_section_splice(&ctx);
   free(blob);
 
   if (ctx.md) {
