@@ -189,7 +189,10 @@ static void follow_run(smg_graph* g, const uint32_t* joint, const double* path,
   {
     const double* feet[2] = {toes, toes + 3};
     eval_feet_geom fg;
-    eval_feet_geom_measure(feet, 2, 6, F + 1, dt, NULL, &fg);
+    /* while moving along the path: a character standing still at the
+     * end for seconds would dilute the figure */
+    size_t upto = out->reached ? (size_t)(out->reach_s / dt) + 1 : F + 1;
+    eval_feet_geom_measure(feet, 2, 6, upto, dt, NULL, &fg);
     out->feet_cm_s = fg.mean_cms;
   }
   out->ok = 1;

@@ -1,0 +1,54 @@
+/*
+ * steer.h - root steering: the state of the stage that keeps a character's
+ * ground transform on its path on top of the motion the planner chose, and
+ * brings it to rest at the path's end (steer.c; docs/runtime.md, "Root
+ * steering").
+ */
+#ifndef SMG_STEER_H
+#define SMG_STEER_H
+
+#include <stdint.h>
+
+#include "smg.h"
+
+#define SMGI_STEER_FOLLOW 0u /* on the path: correct towards it */
+#define SMGI_STEER_BRAKE 1u  /* slowing down onto the chosen stop frame */
+#define SMGI_STEER_REST 2u   /* standing at the end until the path changes */
+
+typedef struct smgi_steer {
+  uint32_t enabled;
+  uint32_t mode;          /* SMGI_STEER_* */
+  /* limits (smg_character_desc, resolved) */
+  float turn_limit;       /* rad/s of heading correction beyond the clip's */
+  float slide_ratio;      /* translation per metre the motion travels */
+  float stop_seconds;     /* braking time at the end */
+  /* what the motion itself did, low-passed over a gait cycle's fraction */
+  uint32_t have_prev;
+  float prev_x, prev_z, prev_h; /* ground transform after the last step */
+  float own_turn;         /* the motion's own turning, rad/s */
+  float own_speed;        /* the motion's own ground speed, m/s */
+  /* the correction, continuous (its rate of change is bounded) */
+  float turn;             /* heading correction, rad/s */
+  float slide[2];         /* translation correction, m/s (x, z) */
+  float rate;             /* playback rate: 1 following, < 1 slowing */
+  /* braking: the frame the character comes to rest on */
+  uint32_t stop_seq;      /* queue entry (seq) holding it */
+  uint32_t stop_offset;   /* frame offset inside that entry's edge */
+} smgi_steer;
+
+
+void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
+                     float slide_ratio, float stop_seconds);
+/* Limits as in smg_character_desc (0 = default). */
+void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
+                           float slide_ratio, float stop_seconds);
+/* The path changed: follow it again (from rest too). */
+void smgi_steer_path_changed(smgi_steer* s);
+/* Frames the playhead advances this step: dt * fps scaled by the playback
+ * rate (slowing for a tight turn, braking at the end, 0 at rest). */
+float smgi_steer_frames(smg_character* ch, float dt);
+/* Correct the pose just composed and the queued placements (before FK and
+ * foot IK, so planted feet keep their world anchors). */
+void smgi_steer_apply(smg_character* ch, float dt);
+
+#endif /* SMG_STEER_H */
