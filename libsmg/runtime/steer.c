@@ -131,16 +131,24 @@ static void consider_stop(smg_character* ch) {
   if (p->length - ch->progress > s->own_speed * s->stop_seconds + SMGI_STEER_STOP_NEAR)
     return;
   const uint32_t ahead = (uint32_t)smgi_frames_ahead(&ch->lower);
-  const uint32_t limit = (uint32_t)(2.0f * brake_frames) + 2u;
-  float best = INFINITY;
-  uint32_t best_k = 0;
+  /* a gait cycle past the braking distance: the next frame with both feet
+   * down is always among them */
+  const uint32_t limit = (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
+  const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
+  float best = INFINITY, x, z;
+  uint32_t best_k = 0, prev = 0;
+  if (!frame_ground(ch, 0, &x, &z, &prev)) return;
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
-    float x, z;
     uint32_t fl;
     if (!frame_ground(ch, k, &x, &z, &fl)) break;
-    const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
     float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
-    if ((fl & both) != both) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
+    /* both feet down: labelled so, or where the label passes from one
+     * foot to the other (contact labels may leave no frame between the
+     * two supports, though both feet are on the floor there) */
+    int down = (fl & both) == both ||
+               ((fl | prev) == both && (fl & both) != 0 && fl != prev);
+    if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
+    prev = fl;
     if (d < best) {
       best = d;
       best_k = k;

@@ -131,5 +131,7 @@
                                     counts as this much further */
 #define SMGI_STEER_NO_FOOT 1.0f       /* ... with no foot down */
 #define SMGI_STEER_REST_RATE 0.03f    /* below this rate the stop is made */
+#define SMGI_STEER_STOP_SCAN 1.5f     /* s of frames beyond the braking
+                                         distance searched for a stop */
 
 #endif /* SMG_TUNING_H */
