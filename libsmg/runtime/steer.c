@@ -63,6 +63,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->turn = 0.0f;
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
+  s->drift_turn = s->drift_move = 0.0f;
 }
 
 void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
@@ -72,7 +73,10 @@ void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
   s->stop_seconds = limit_or(stop_seconds, SMGI_STEER_STOP_SECONDS);
 }
 
-void smgi_steer_path_changed(smgi_steer* s) { s->mode = SMGI_STEER_FOLLOW; }
+void smgi_steer_path_changed(smgi_steer* s) {
+  s->mode = SMGI_STEER_FOLLOW;
+  s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
+}
 
 /* The path's point `ahead` metres past arc s, continued straight past the
  * end along the last segment (a character arriving keeps its line). */
@@ -131,10 +135,13 @@ static void consider_stop(smg_character* ch) {
   if (p->length - ch->progress > s->own_speed * s->stop_seconds + SMGI_STEER_STOP_NEAR)
     return;
   const uint32_t ahead = (uint32_t)smgi_frames_ahead(&ch->lower);
-  /* a gait cycle past the braking distance: the next frame with both feet
-   * down is always among them */
+  /* a gait cycle past the braking distance: a frame with both feet down
+   * is always among them */
   const uint32_t limit = (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
+  /* decide only on a plan that reaches that far (not just after a
+   * re-plan left the edge playing alone) */
+  if (ahead < limit) return;
   float best = INFINITY, x, z;
   uint32_t best_k = 0, prev = 0;
   if (!frame_ground(ch, 0, &x, &z, &prev)) return;
@@ -164,13 +171,18 @@ static void consider_stop(smg_character* ch) {
   s->mode = SMGI_STEER_BRAKE;
 }
 
-/* Heading change of the path between arc s and s + ahead, per metre. */
+/* Signed turning of the path ahead (radians per metre, + = left): the
+ * sharper of two halves of the next SMGI_STEER_CURVE_AHEAD metres, so a
+ * short tight loop is not averaged away. */
 static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
-  float x, z, h0, h1;
+  const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
+  float x, z, h0, h1, h2;
   uint32_t sg = seg;
   smgi_path_eval(p, s, &sg, &x, &z, &h0);
-  smgi_path_eval(p, s + SMGI_STEER_CURVE_AHEAD, &sg, &x, &z, &h1);
-  return fabsf(smgi_wrap_angle(h1 - h0)) / SMGI_STEER_CURVE_AHEAD;
+  smgi_path_eval(p, s + half, &sg, &x, &z, &h1);
+  smgi_path_eval(p, s + 2.0f * half, &sg, &x, &z, &h2);
+  float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
+  return (fabsf(a) > fabsf(b) ? a : b) / half;
 }
 
 float smgi_steer_frames(smg_character* ch, float dt) {
@@ -181,14 +193,26 @@ float smgi_steer_frames(smg_character* ch, float dt) {
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
     return full * s->rate;
   }
+  if (s->mode == SMGI_STEER_FOLLOW &&
+      (s->drift_turn > SMGI_STEER_REPLAN_TURN ||
+       s->drift_move > SMGI_STEER_REPLAN_MOVE)) {
+    /* the planned edges were chosen for where the character would have
+     * been without the correction since: choose them again from where it
+     * is (the edge playing stays) */
+    smgi_replan(ch);
+    s->drift_turn = s->drift_move = 0.0f;
+  }
   if (s->mode == SMGI_STEER_FOLLOW) {
     /* slow down where the path turns tighter than the steering can turn
      * at this speed */
     float kappa = curvature_ahead(&ch->path, ch->progress, ch->seg);
+    float r = s->rate > 0.05f ? s->rate : 0.05f;
+    /* the correction the path asks for at full playback: its turning at
+     * the motion's speed minus the motion's own turning */
+    float need = fabsf(kappa * s->own_speed - s->own_turn) / r;
     float want = 1.0f;
-    float speed1 = s->own_speed / (s->rate > 0.05f ? s->rate : 0.05f);
-    if (kappa * speed1 > s->turn_limit)
-      want = clampf(s->turn_limit / (kappa * speed1), SMGI_STEER_RATE_MIN, 1.0f);
+    if (need > s->turn_limit)
+      want = clampf(s->turn_limit / need, SMGI_STEER_RATE_MIN, 1.0f);
     s->rate = approach(s->rate, want, SMGI_STEER_RATE_ACCEL * dt);
     consider_stop(ch);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
@@ -341,7 +365,28 @@ void smgi_steer_apply(smg_character* ch, float dt) {
       delta_xf(&d, &e->M);
     }
   }
+  s->drift_turn += fabsf(d.da);
+  s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);
   s->prev_x = ch->pose.ground[0];
   s->prev_z = ch->pose.ground[1];
   s->prev_h = ch->pose.heading;
+}
+
+/* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
+static float discount(float e, float reach) {
+  if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
+  return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
+}
+
+void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
+                          float* d, float* a) {
+  if (!s->enabled || u <= 0.0f) return;
+  /* the additive turning per metre travelled at this speed ... */
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
+  /* ... turns the heading by k u and, with the slide, moves the motion
+   * sideways by about ratio u + k u^2 / 2 after u metres; half of that is
+   * counted as reachable, since the heading must first be turned */
+  *d = discount(*d, 0.5f * (s->slide_ratio * u + 0.5f * k * u * u));
+  *a = discount(*a, 0.5f * k * u);
 }

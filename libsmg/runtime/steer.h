@@ -31,6 +31,10 @@ typedef struct smgi_steer {
   float turn;             /* heading correction, rad/s */
   float slide[2];         /* translation correction, m/s (x, z) */
   float rate;             /* playback rate: 1 following, < 1 slowing */
+  /* correction applied since the planned edges were chosen: the plan
+   * moves with the character, so beyond a bound it is chosen again */
+  float drift_turn;       /* radians */
+  float drift_move;       /* metres */
   /* braking: the frame the character comes to rest on */
   uint32_t stop_seq;      /* queue entry (seq) holding it */
   uint32_t stop_offset;   /* frame offset inside that entry's edge */
@@ -50,5 +54,14 @@ float smgi_steer_frames(smg_character* ch, float dt);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
 void smgi_steer_apply(smg_character* ch, float dt);
+
+/* What the planner should count of an error the steering will remove
+ * (steer.c): `d` metres off the path and `a` radians off its direction
+ * after the motion travelled `u` metres at `speed` m/s. Corrections
+ * within reach count SMGI_STEER_PLAN_WEIGHT of themselves, so the
+ * planner still prefers motion that needs little correction; beyond reach
+ * in full. Unchanged with steering off. */
+void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
+                          float* d, float* a);
 
 #endif /* SMG_STEER_H */

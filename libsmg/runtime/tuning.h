@@ -131,7 +131,13 @@
                                     counts as this much further */
 #define SMGI_STEER_NO_FOOT 1.0f       /* ... with no foot down */
 #define SMGI_STEER_REST_RATE 0.03f    /* below this rate the stop is made */
-#define SMGI_STEER_STOP_SCAN 1.5f     /* s of frames beyond the braking
+#define SMGI_STEER_PLAN_WEIGHT 0.5f   /* the planner counts an error the
+                                         steering can remove at this
+                                         fraction of itself */
+#define SMGI_STEER_REPLAN_TURN 0.35f  /* rad of correction (20 deg) ... */
+#define SMGI_STEER_REPLAN_MOVE 0.3f   /* ... or metres of it since the plan
+                                         was chosen: plan again */
+#define SMGI_STEER_STOP_SCAN 1.0f     /* s of frames beyond the braking
                                          distance searched for a stop */
 
 #endif /* SMG_TUNING_H */

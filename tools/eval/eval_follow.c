@@ -395,7 +395,7 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
   } graphs[2] = {{"cmu", "CMU (data/cmu.manifest)"},
                  {"sparse", "Sparse (data/cmu-sparse.manifest)"}};
   eval_md(ctx,
-          "## 2b. Staying on drawn paths (root steering)\n\n"
+          "## 2c. Staying on drawn paths (root steering)\n\n"
           "Characters follow the paths in `data/paths/` (one `x z` point "
           "per line) from their first point, facing the second, stepped at "
           "%.0f Hz through the public API for (path length / %.1f m/s + "
@@ -440,7 +440,7 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
   }
   free(sparse);
   eval_summary(ctx,
-               "**Staying on drawn paths** (section 2b, %d graph(s), 8 "
+               "**Staying on drawn paths** (section 2c, %d graph(s), 8 "
                "paths): the issue-12 targets with steering on are %s.",
                measured, all_met && measured == 2 ? "all met" : "NOT all met");
 }
