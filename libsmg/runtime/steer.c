@@ -378,15 +378,22 @@ static float discount(float e, float reach) {
   return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
 }
 
+float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed) {
+  if (!s->enabled || u <= 0.0f) return 0.0f;
+  /* the additive turning per metre travelled at this speed turns the
+   * heading by k u and, with the slide, moves the motion sideways by
+   * about ratio u + k u^2 / 2 after u metres; half of that counts as
+   * reachable, since the heading must first be turned */
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
+  return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
+}
+
 void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
                           float* d, float* a) {
   if (!s->enabled || u <= 0.0f) return;
-  /* the additive turning per metre travelled at this speed ... */
   float k = 1.0f / SMGI_STEER_TURN_RADIUS;
   if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
-  /* ... turns the heading by k u and, with the slide, moves the motion
-   * sideways by about ratio u + k u^2 / 2 after u metres; half of that is
-   * counted as reachable, since the heading must first be turned */
-  *d = discount(*d, 0.5f * (s->slide_ratio * u + 0.5f * k * u * u));
+  *d = discount(*d, smgi_steer_plan_reach(s, u, speed));
   *a = discount(*a, 0.5f * k * u);
 }

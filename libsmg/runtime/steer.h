@@ -63,5 +63,9 @@ void smgi_steer_apply(smg_character* ch, float dt);
  * in full. Unchanged with steering off. */
 void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
                           float* d, float* a);
+/* How far off the path (metres) the steering brings motion back within
+ * its first `u` metres at `speed` m/s (0 with steering off): the part of
+ * an edge's distance error the planner's threshold need not see. */
+float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed);
 
 #endif /* SMG_STEER_H */

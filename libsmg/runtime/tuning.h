@@ -134,8 +134,8 @@
 #define SMGI_STEER_PLAN_WEIGHT 0.5f   /* the planner counts an error the
                                          steering can remove at this
                                          fraction of itself */
-#define SMGI_STEER_REPLAN_TURN 0.35f  /* rad of correction (20 deg) ... */
-#define SMGI_STEER_REPLAN_MOVE 0.3f   /* ... or metres of it since the plan
+#define SMGI_STEER_REPLAN_TURN 0.7f   /* rad of correction (40 deg) ... */
+#define SMGI_STEER_REPLAN_MOVE 0.5f   /* ... or metres of it since the plan
                                          was chosen: plan again */
 #define SMGI_STEER_STOP_SCAN 1.0f     /* s of frames beyond the braking
                                          distance searched for a stop */
