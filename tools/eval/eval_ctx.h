@@ -87,7 +87,8 @@ void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size);
 /* Path following on five paths with transition and splice points. */
 void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
 /* Staying on drawn paths (issue 12): data/paths on the CMU blob (may be
- * NULL) and the sparse set, root steering on and off. */
+ * NULL) and the sparse set, root steering on and off; in check mode the
+ * tight paths on the default and CMU blobs with steering on. */
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
                          size_t cmu_size);
 /* Splicing accuracy (Fig. 5) and the synchronization check. */

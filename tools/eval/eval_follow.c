@@ -383,8 +383,59 @@ static void* bake(eval_ctx* ctx, const char* manifest, size_t* out_size) {
   return copy;
 }
 
+/* Check mode: the tight paths on one graph, steering on, against the
+ * issue's targets (loose enough for any sane build, tight enough that a
+ * character cutting corners or walking on past the end fails). */
+static void check_graph(eval_ctx* ctx, smg_graph* g, const char* name) {
+  static double path[2 * MAX_POINTS];
+  uint32_t joint[3];
+  if (smg_graph_find_joint(g, "Hips", &joint[0]) != SMG_OK ||
+      smg_graph_find_joint(g, "LeftToeBase", &joint[1]) != SMG_OK ||
+      smg_graph_find_joint(g, "RightToeBase", &joint[2]) != SMG_OK) {
+    eval_check(ctx, 0, "%s: no Hips/LeftToeBase/RightToeBase joints", name);
+    return;
+  }
+  for (size_t k = 0; k < PATH_COUNT; ++k) {
+    const follow_path* p = &k_paths[k];
+    char file[256];
+    follow_result r;
+    snprintf(file, sizeof(file), "data/paths/%s.txt", p->key);
+    size_t n = read_path(file, path, MAX_POINTS);
+    if (!p->tight) continue;
+    if (n < 2) {
+      eval_check(ctx, 0, "cannot read %s", file);
+      continue;
+    }
+    follow_run(g, joint, path, n, 1, &r);
+    eval_check(ctx, r.ok && r.mean_cm <= 10.0 && r.max_cm <= 45.0 &&
+                        r.reached && r.rest_speed <= 0.1 && r.rest_dist <= 0.3,
+               "%s, %s, steering on: hips %.1f / %.1f cm from the path "
+               "(bounds 10 / 45), end %s, last second %.2f m/s at <= %.2f m "
+               "(bounds 0.1, 0.3)",
+               name, p->title, r.mean_cm, r.max_cm,
+               r.reached ? "reached" : "NOT reached", r.rest_speed,
+               r.rest_dist);
+    free(r.hips);
+  }
+}
+
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
                          size_t cmu_size) {
+  if (ctx->check) {
+    smg_graph* g = NULL;
+    if (ctx->default_blob &&
+        smg_graph_load_file(ctx->default_blob, NULL, &g) == SMG_OK) {
+      check_graph(ctx, g, "default blob");
+      smg_graph_destroy(g);
+    }
+    g = NULL;
+    if (cmu_blob && smg_graph_load_memory(cmu_blob, cmu_size, NULL, &g) ==
+                        SMG_OK) {
+      check_graph(ctx, g, "CMU blob");
+      smg_graph_destroy(g);
+    }
+    return;
+  }
   static const char* const k_sparse = "data/cmu-sparse.manifest";
   void* sparse = NULL;
   size_t sparse_size = 0;

@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
 
   eval_section_bake(&ctx, &blob, &blob_size);
   if (!ctx.only) eval_section_paths(&ctx, blob, blob_size);
-  if (!ctx.check) eval_section_follow(&ctx, blob, blob_size);
+  eval_section_follow(&ctx, blob, blob_size);
   if (!ctx.only) eval_section_splice(&ctx);
   free(blob);
 
