@@ -65,6 +65,7 @@ smg_result smgi_step(smg_character* ch, float dt) {
   smgi_plan(ch, SMGI_PLAN_BUDGET, frames);
 
   ch->lower.t += frames;
+  uint32_t pops = 0;
   for (;;) {
     const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
     float fc = (float)edges[h->edge].frame_count;
@@ -79,7 +80,9 @@ smg_result smgi_step(smg_character* ch, float dt) {
     ch->lower.head = (ch->lower.head + 1u) & (SMGI_QUEUE_CAP - 1u);
     ch->lower.count--;
     ch->lower.frames -= edges[h->edge].frame_count;
+    ++pops;
   }
+  smgi_steer_refresh(ch, pops);
   ch->lower.style = edges[smgi_q_at(&ch->lower, 0)->edge].label;
   ch->time += (double)dt;
 

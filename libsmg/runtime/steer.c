@@ -92,6 +92,35 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
   }
 }
 
+/* A queue entry's frame -> world placement from its ground transform W,
+ * as the planner computed it when it pushed the entry. */
+static smgi_xform2 placement_of(const smg_graph* g, const smgi_qentry* q) {
+  const float* r =
+      g->data.frames[g->data.lower_nodes[g->data.lower_edges[q->edge].from]
+                         .frame].root2d;
+  smgi_xform2 ground = {r[0], r[1], r[2]};
+  return smgi_xf_mul(q->W, smgi_xf_inv(ground));
+}
+
+/* Queue entry i's placement. The correction keeps M up to date only for
+ * the two entries the pose samples (every entry's W, which the planner
+ * reads, is corrected every step); further ones derive it from W. */
+static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
+  const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
+  if (i < 2u || !ch->steer.corrected) return q->M;
+  return placement_of(ch->graph, q);
+}
+
+void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
+  if (!ch->steer.corrected || pops == 0) return;
+  /* the entries that moved to index 0 or 1 from further back */
+  for (uint32_t i = pops < 2u ? 2u - pops : 0u; i < 2u && i < ch->lower.count;
+       ++i) {
+    smgi_qentry* q = smgi_q_at(&ch->lower, i);
+    q->M = placement_of(ch->graph, q);
+  }
+}
+
 /* Ground position of the frame k frames after the playhead (0 when the
  * queue is shorter). */
 static int frame_ground(const smg_character* ch, uint32_t k, float* x,
@@ -102,7 +131,7 @@ static int frame_ground(const smg_character* ch, uint32_t k, float* x,
   const smgi_qentry* q = smgi_q_at_c(&ch->lower, entry);
   const smgi_frame* f =
       &g->data.frames[g->data.lower_edges[q->edge].first_frame + offset];
-  smgi_xf_point(q->M, f->root2d[0], f->root2d[1], x, z);
+  smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], x, z);
   if (flags) *flags = f->flags;
   return 1;
 }
@@ -296,7 +325,8 @@ void smgi_steer_apply(smg_character* ch, float dt) {
             &ch->graph->data.frames[ch->graph->data.lower_edges[q->edge]
                                         .first_frame + offset];
         float sx, sz;
-        smgi_xf_point(q->M, f->root2d[0], f->root2d[1], &sx, &sz);
+        smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], &sx,
+                      &sz);
         /* the rest of the braking lasts 2 * left / (fps * rate) */
         float remain = 2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
         if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
@@ -362,8 +392,9 @@ void smgi_steer_apply(smg_character* ch, float dt) {
     for (uint32_t i = 0; i < ch->lower.count; ++i) {
       smgi_qentry* e = smgi_q_at(&ch->lower, i);
       delta_xf(&d, &e->W);
-      delta_xf(&d, &e->M);
+      if (i < 2u) delta_xf(&d, &e->M); /* further ones: entry_M */
     }
+    s->corrected = 1;
   }
   s->drift_turn += fabsf(d.da);
   s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);

@@ -33,6 +33,8 @@ typedef struct smgi_steer {
   float rate;             /* playback rate: 1 following, < 1 slowing */
   /* correction applied since the planned edges were chosen: the plan
    * moves with the character, so beyond a bound it is chosen again */
+  uint32_t corrected;     /* a correction moved the queue: placements (M)
+                             beyond the two next entries derive from W */
   float drift_turn;       /* radians */
   float drift_move;       /* metres */
   /* braking: the frame the character comes to rest on */
@@ -51,6 +53,9 @@ void smgi_steer_path_changed(smgi_steer* s);
 /* Frames the playhead advances this step: dt * fps scaled by the playback
  * rate (slowing for a tight turn, braking at the end, 0 at rest). */
 float smgi_steer_frames(smg_character* ch, float dt);
+/* After the playhead passed `pops` edges: the entries now next in line
+ * get their placements back from their (corrected) ground transforms. */
+void smgi_steer_refresh(smg_character* ch, uint32_t pops);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
 void smgi_steer_apply(smg_character* ch, float dt);
