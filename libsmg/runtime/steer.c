@@ -18,8 +18,9 @@
  *  - both rates change by a bounded amount per second, so the correction
  *    never pops when it starts, saturates or stops.
  * The correction is applied to the pose just composed and to every queued
- * edge's placement, so what is planned ahead moves with the character and
- * the planner continues from where the character really is. It runs
+ * edge's ground transform (and the frame placement of the two the pose
+ * samples), so what is planned ahead moves with the character and the
+ * planner continues from where the character really is. It runs
  * before forward kinematics and foot IK: a planted foot keeps its world
  * anchor while the body turns and slides above it.
  *
@@ -30,7 +31,8 @@
  * way. There it holds the pose (the graph need not contain standing
  * motion) until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the playback slows down (to no
- * less than SMGI_STEER_RATE_MIN).
+ * less than SMGI_STEER_RATE_MIN). What the planner should make of the
+ * correction is smgi_steer_plan_view / _plan_reach (bottom of the file).
  *
  * Deterministic, no allocation, O(frames planned ahead) near the end and
  * O(1) otherwise.
@@ -38,11 +40,6 @@
 #include <math.h>
 
 #include "character_internal.h"
-
-
-static float clampf(float v, float lo, float hi) {
-  return v < lo ? lo : (v > hi ? hi : v);
-}
 
 /* v moved towards target by at most step. */
 static float approach(float v, float target, float step) {
@@ -126,7 +123,9 @@ void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
 static int frame_ground(const smg_character* ch, uint32_t k, float* x,
                         float* z, uint32_t* flags) {
   uint32_t entry, offset;
-  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, k, &entry, &offset)) return 0;
+  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, k, &entry,
+                     &offset))
+    return 0;
   const smg_graph* g = ch->graph;
   const smgi_qentry* q = smgi_q_at_c(&ch->lower, entry);
   const smgi_frame* f =
@@ -161,12 +160,14 @@ static void consider_stop(smg_character* ch) {
   const float brake_frames = 0.5f * s->stop_seconds * ch->fps * s->rate;
   /* nothing to decide while the end is further along the path than
    * braking needs (by progress: a loop may pass near its end early) */
-  if (p->length - ch->progress > s->own_speed * s->stop_seconds + SMGI_STEER_STOP_NEAR)
+  if (p->length - ch->progress >
+      s->own_speed * s->stop_seconds + SMGI_STEER_STOP_NEAR)
     return;
   const uint32_t ahead = (uint32_t)smgi_frames_ahead(&ch->lower);
   /* a gait cycle past the braking distance: a frame with both feet down
    * is always among them */
-  const uint32_t limit = (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
+  const uint32_t limit =
+      (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
   /* decide only on a plan that reaches that far (not just after a
    * re-plan left the edge playing alone) */
@@ -194,7 +195,9 @@ static void consider_stop(smg_character* ch) {
   float frames = (float)best_k - (ch->lower.t - floorf(ch->lower.t));
   if (frames > brake_frames) return;
   uint32_t entry, offset;
-  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, best_k, &entry, &offset)) return;
+  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, best_k,
+                     &entry, &offset))
+    return;
   s->stop_seq = smgi_q_at(&ch->lower, entry)->seq;
   s->stop_offset = offset;
   s->mode = SMGI_STEER_BRAKE;
@@ -241,7 +244,7 @@ float smgi_steer_frames(smg_character* ch, float dt) {
     float need = fabsf(kappa * s->own_speed - s->own_turn) / r;
     float want = 1.0f;
     if (need > s->turn_limit)
-      want = clampf(s->turn_limit / need, SMGI_STEER_RATE_MIN, 1.0f);
+      want = smgi_clampf(s->turn_limit / need, SMGI_STEER_RATE_MIN, 1.0f);
     s->rate = approach(s->rate, want, SMGI_STEER_RATE_ACCEL * dt);
     consider_stop(ch);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
@@ -284,7 +287,8 @@ static void delta_xf(const delta* d, smgi_xform2* x) {
 
 void smgi_steer_apply(smg_character* ch, float dt) {
   smgi_steer* s = &ch->steer;
-  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1], gh = ch->pose.heading;
+  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
+  const float gh = ch->pose.heading;
   if (dt <= 0.0f) return;
   /* the motion's own speed and turning this step, low-passed */
   float k = dt / (SMGI_STEER_SMOOTH + dt);
@@ -306,7 +310,7 @@ void smgi_steer_apply(smg_character* ch, float dt) {
                      NULL) &&
         (fx - gx) * (fx - gx) + (fz - gz) * (fz - gz) > 1e-4f)
       dir = atan2f(fx - gx, fz - gz);
-    look = clampf(s->own_speed * SMGI_STEER_LOOK_TIME, SMGI_STEER_LOOK_MIN,
+    look = smgi_clampf(s->own_speed * SMGI_STEER_LOOK_TIME, SMGI_STEER_LOOK_MIN,
                   SMGI_STEER_LOOK_MAX);
     point_ahead(p, ch->progress + look, ch->seg, &tx, &tz);
     if ((tx - gx) * (tx - gx) + (tz - gz) * (tz - gz) > 1e-4f)
@@ -318,7 +322,9 @@ void smgi_steer_apply(smg_character* ch, float dt) {
       float left = frames_to(ch, s->stop_seq, s->stop_offset);
       uint32_t entry, offset;
       if (left > 0.0f &&
-          smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, (uint32_t)(ch->lower.t - floorf(ch->lower.t) + left + 0.5f),
+          smgi_q_locate(&ch->lower, ch->graph->data.lower_edges,
+                        (uint32_t)(ch->lower.t - floorf(ch->lower.t) + left +
+                                   0.5f),
                         &entry, &offset)) {
         const smgi_qentry* q = smgi_q_at(&ch->lower, entry);
         const smgi_frame* f =
@@ -328,7 +334,8 @@ void smgi_steer_apply(smg_character* ch, float dt) {
         smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], &sx,
                       &sz);
         /* the rest of the braking lasts 2 * left / (fps * rate) */
-        float remain = 2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
+        float remain =
+            2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
         if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
         want_sx = (p->xz[2u * (p->count - 1u)] - sx) / remain;
         want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
@@ -350,14 +357,15 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   float tb = SMGI_STEER_CLIP_SCALE * fabsf(s->own_turn) +
              fminf(s->turn_limit, s->own_speed / SMGI_STEER_TURN_RADIUS);
   float sb = s->slide_ratio * s->own_speed;
-  want_turn = clampf(want_turn, -tb, tb);
+  want_turn = smgi_clampf(want_turn, -tb, tb);
   float wl = sqrtf(want_sx * want_sx + want_sz * want_sz);
   if (wl > sb) {
     want_sx *= sb / wl;
     want_sz *= sb / wl;
   }
   /* continuous: the correction's rates change by bounded steps */
-  s->turn = clampf(approach(s->turn, want_turn, SMGI_STEER_TURN_ACCEL * dt), -tb, tb);
+  s->turn = smgi_clampf(
+      approach(s->turn, want_turn, SMGI_STEER_TURN_ACCEL * dt), -tb, tb);
   s->slide[0] = approach(s->slide[0], want_sx, SMGI_STEER_SLIDE_ACCEL * dt);
   s->slide[1] = approach(s->slide[1], want_sz, SMGI_STEER_SLIDE_ACCEL * dt);
   float sl = sqrtf(s->slide[0] * s->slide[0] + s->slide[1] * s->slide[1]);
