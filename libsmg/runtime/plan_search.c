@@ -172,7 +172,9 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
 
 /* Style penalty of an edge at arc lengths [a, b] of the path. */
 static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b) {
-  if (!c->following) return 10.0f * style_penalty(c->ch, e, c->style0);
+  if (!c->following)
+    return c->yield ? 10.0f * lost_style_penalty(c->ch, e)
+                    : 10.0f * style_penalty(c->ch, e, c->style0);
   if (c->lost || c->yield) return lost_style_penalty(c->ch, e);
   /* s0 <= a <= b: before the next constraint the wanted style is the one
    * at s0 (what edge_style_penalty would find with two scans) */

@@ -436,3 +436,11 @@ void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
   *d = discount(*d, smgi_steer_plan_reach(s, u, speed));
   *a = discount(*a, 0.5f * k * u);
 }
+
+int smgi_steer_settling(const smg_character* ch, float s) {
+  const smgi_steer* st = &ch->steer;
+  if (!st->enabled || ch->path.count < 2u) return 0;
+  return ch->path.length - s <
+         st->own_speed * (st->stop_seconds + SMGI_STEER_SETTLE_SECONDS) +
+             SMGI_STEER_STOP_NEAR;
+}

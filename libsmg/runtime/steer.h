@@ -73,4 +73,11 @@ void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
  * an edge's distance error the planner's threshold need not see. */
 float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed);
 
+/* Whether planning from arc s belongs to coming to rest at the path's end:
+ * the end lies within what the current speed covers in the braking time
+ * plus SMGI_STEER_SETTLE_SECONDS. The planner then wants the graph's most
+ * agile style (walking, in any graph that has it), whose frames with both
+ * feet down make a stop; a run has none. */
+int smgi_steer_settling(const smg_character* ch, float s);
+
 #endif /* SMG_STEER_H */

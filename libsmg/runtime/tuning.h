@@ -137,6 +137,9 @@
 #define SMGI_STEER_REPLAN_TURN 0.7f   /* rad of correction (40 deg) ... */
 #define SMGI_STEER_REPLAN_MOVE 0.5f   /* ... or metres of it since the plan
                                          was chosen: plan again */
+#define SMGI_STEER_SETTLE_SECONDS 1.5f /* s of motion before braking in
+                                          which a stop wants the agile
+                                          style */
 #define SMGI_STEER_STOP_SCAN 1.0f     /* s of frames beyond the braking
                                          distance searched for a stop */
 

@@ -8,6 +8,7 @@
  *  - at the end the character comes to rest with the root within 0.3 m of
  *    the last point, stands (speed <= 0.1 m/s over the last second) and
  *    reports SMG_STATE_PATH_END_REACHED; appending points starts it again;
+ *    a run walks the last metres and stands on both feet;
  *  - the correction is continuous: no per-step root jump beyond what the
  *    same motion does without steering plus the correction's bound, and
  *    switching steering off mid-run fades the correction out;
@@ -217,6 +218,45 @@ static void test_rest_until_path_changes(void** state) {
   smg_character_destroy(ch);
 }
 
+/* A run asked for until the end: the last metres are walked (the graph's
+ * most agile style) so that the stop lands on a frame with both feet down,
+ * within 0.3 m of the last point. */
+static void test_run_comes_to_rest(void** state) {
+  ctx* c = (ctx*)*state;
+  float xz[2 * 21];
+  smg_character* ch = NULL;
+  float root[3], prev[3], rot[4 * FIXTURE_JOINTS];
+  rt_line(xz, 21, 20.0f);
+  assert_int_equal(smg_character_create(c->g, NULL, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, 21), SMG_OK);
+  assert_int_equal(smg_character_add_transition(ch, 2.0f, 1, NULL), SMG_OK);
+  int ran = 0;
+  float travelled = 0.0f;
+  smg_character_get_local_pose(ch, prev, rot, FIXTURE_JOINTS);
+  const int steps = (int)(14.0f / DT);
+  for (int i = 0; i < steps; ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    if (get_state(ch).style == 1) ran = 1;
+    smg_character_get_local_pose(ch, root, rot, FIXTURE_JOINTS);
+    if (i >= steps - (int)(1.0f / DT))
+      travelled += sqrtf((root[0] - prev[0]) * (root[0] - prev[0]) +
+                         (root[2] - prev[2]) * (root[2] - prev[2]));
+    memcpy(prev, root, sizeof prev);
+  }
+  smg_character_state s = get_state(ch);
+  print_message("run to the end: ran %d, rests at z %.2f (end 20) in style "
+                "%u, contacts %u, last second %.3f m\n",
+                ran, root[2], s.style, s.flags & 12u, travelled);
+  assert_true(ran);
+  assert_true(fabsf(root[2] - 20.0f) < 0.3f && fabsf(root[0]) < 0.3f);
+  assert_true(travelled <= 0.1f);
+  assert_true(s.flags & SMG_STATE_PATH_END_REACHED);
+  assert_int_equal(s.style, 0); /* walked out */
+  assert_int_equal(s.flags & (SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT),
+                   SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT);
+  smg_character_destroy(ch);
+}
+
 /* Off: no correction reported, full playback, and switching it off in
  * mid-run fades the correction instead of dropping it. */
 static void test_switch_off(void** state) {
@@ -361,6 +401,7 @@ int main(void) {
       cmocka_unit_test(test_corner_and_rest),
       cmocka_unit_test(test_u_turn),
       cmocka_unit_test(test_rest_until_path_changes),
+      cmocka_unit_test(test_run_comes_to_rest),
       cmocka_unit_test(test_switch_off),
       cmocka_unit_test(test_settings),
       cmocka_unit_test(test_default_graph_corner),
