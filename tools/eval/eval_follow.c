@@ -253,8 +253,10 @@ done:
 static const char* yes_no(int v) { return v ? "yes" : "**no**"; }
 
 /* One graph: every path, steering off and on, table rows and figures. */
+/* met[0]: runs meeting the path, end and rest targets; met[1]: the
+ * planted-toe target; met[2]: runs (steering on). */
 static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
-                         const char* name, int* all_met) {
+                         const char* name, int* met) {
   static double path[2 * MAX_POINTS];
   uint32_t joint[3]; /* hips, left toe, right toe */
   size_t k;
@@ -284,7 +286,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
     if (n < 2) {
       eval_md(ctx, "| %s | | cannot read `%s` | | | | | | | |\n", p->title,
               file);
-      *all_met = 0;
+      met[2]++;
       continue;
     }
     for (s = 0; s < 2; ++s) {
@@ -293,7 +295,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
       if (!x->ok) {
         eval_md(ctx, "| %s | %s | run failed | | | | | | | |\n", p->title,
                 s ? "on" : "off");
-        if (s) *all_met = 0;
+        if (s) met[2]++;
         continue;
       }
       eval_log("follow %s %-12s steering %-3s: %5.1f / %5.1f cm, end %s, "
@@ -316,11 +318,11 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
               eval_fmt(b[7], sizeof(b[7]), "%.1f", x->feet_cm_s));
       if (s) {
         double mean_max = p->tight ? 10.0 : 5.0, max_max = p->tight ? 45.0 : 25.0;
-        if (!(x->mean_cm <= mean_max && x->max_cm <= max_max && x->reached &&
-              x->rest_speed <= 0.1 && x->rest_dist <= 0.3 &&
-              x->feet_cm_s <= 20.0 &&
-              (!r[0].ok || x->feet_cm_s <= r[0].feet_cm_s)))
-          *all_met = 0;
+        met[0] += x->mean_cm <= mean_max && x->max_cm <= max_max &&
+                  x->reached && x->rest_speed <= 0.1 && x->rest_dist <= 0.3;
+        met[1] += x->feet_cm_s <= 20.0 &&
+                  (!r[0].ok || x->feet_cm_s <= r[0].feet_cm_s);
+        met[2]++;
       }
     }
     if (ctx->img_dir) draw(ctx, key, name, p, path, n, &r[0], &r[1]);
@@ -439,7 +441,7 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
   static const char* const k_sparse = "data/cmu-sparse.manifest";
   void* sparse = NULL;
   size_t sparse_size = 0;
-  int all_met = 1, measured = 0;
+  int met[3] = {0, 0, 0}, measured = 0;
   const struct {
     const char* key;
     const char* name;
@@ -482,16 +484,17 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
     if (!blob || smg_graph_load_memory(blob, size, NULL, &g) != SMG_OK) {
       eval_md(ctx, "**%s graph**: not available in this run (bake or load "
                    "failed).\n\n", graphs[k].name);
-      all_met = 0;
       continue;
     }
-    follow_graph(ctx, g, graphs[k].key, graphs[k].name, &all_met);
+    follow_graph(ctx, g, graphs[k].key, graphs[k].name, met);
     smg_graph_destroy(g);
     ++measured;
   }
   free(sparse);
   eval_summary(ctx,
-               "**Staying on drawn paths** (section 2c, %d graph(s), 8 "
-               "paths): the issue-12 targets with steering on are %s.",
-               measured, all_met && measured == 2 ? "all met" : "NOT all met");
+               "**Staying on drawn paths** (section 2c, %d of 2 graphs, 8 "
+               "paths, steering on): the distance, end-reached and at-rest "
+               "targets are met on %d of %d runs, the planted-toe target "
+               "(<= 20 cm/s and not above steering off) on %d of %d.",
+               measured, met[0], met[2], met[1], met[2]);
 }
