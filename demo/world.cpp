@@ -179,7 +179,7 @@ bool World::spawn(int n, std::string* error) {
     smg_character_desc d;
     std::memset(&d, 0, sizeof d);
     d.struct_size = sizeof d;
-    d.flags = ik_ ? 0u : SMG_CHARACTER_NO_IK;
+    d.flags = (ik_ ? 0u : SMG_CHARACTER_NO_IK) | (steering_ ? 0u : SMG_CHARACTER_NO_STEERING);
     d.path_capacity = kPathCapacity;
     d.constraint_capacity = kConstraintCapacity;
     d.seed = uint32_t(i + 1);
@@ -382,6 +382,12 @@ void World::set_error_threshold(float metres) {
 void World::set_ik(bool on) {
   ik_ = on;
   for (Character& c : characters_) check(smg_character_set_ik(c.handle, on ? 1u : 0u), "smg_character_set_ik");
+}
+
+void World::set_steering(bool on) {
+  steering_ = on;
+  for (Character& c : characters_)
+    check(smg_character_set_steering(c.handle, on ? 1u : 0u), "smg_character_set_steering");
 }
 
 void World::set_style_now(uint32_t style) {

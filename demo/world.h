@@ -95,6 +95,8 @@ class World {
   float error_threshold() const { return threshold_; }
   void set_ik(bool on);
   bool ik() const { return ik_; }
+  void set_steering(bool on);
+  bool steering() const { return steering_; }
   void set_style_now(uint32_t style);
   void set_action_now(uint32_t action);
 
@@ -150,6 +152,7 @@ class World {
   int next_uid_ = 1;
   float threshold_ = 0.25f;
   bool ik_ = true;
+  bool steering_ = true;
   double sim_time_ = 0.0;
   double step_us_avg_ = 0.0, step_us_max_ = 0.0, step_us_total_ = 0.0;
   std::vector<TrailPose> trail_;

@@ -31,7 +31,9 @@ static void usage(void) {
           "                [--bandai-manifest data/bandai.manifest]\n"
           "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
           "--keep DIR also writes the baked blobs and per-path CSV traces "
-          "to DIR\n");
+          "to DIR\n"
+          "--only follow runs just the bake and the path-following section "
+          "(report to --out)\n");
 }
 
 /* First line of a command's output (trailing newline removed). */
@@ -171,6 +173,8 @@ int main(int argc, char** argv) {
       ctx.manifest = argv[++i];
     else if (!strcmp(argv[i], "--bandai-manifest") && i + 1 < argc)
       ctx.bandai_manifest = argv[++i];
+    else if (!strcmp(argv[i], "--only") && i + 1 < argc)
+      ctx.only = argv[++i];
     else if (!strcmp(argv[i], "--check"))
       ctx.check = 1;
     else if (!strcmp(argv[i], "--quick"))
@@ -179,6 +183,10 @@ int main(int argc, char** argv) {
       usage();
       return 2;
     }
+  }
+  if (ctx.only && strcmp(ctx.only, "follow") != 0) {
+    usage();
+    return 2;
   }
   if (!ctx.manifest) ctx.manifest = "data/cmu.manifest";
   if (!ctx.bandai_manifest) ctx.bandai_manifest = "data/bandai.manifest";
@@ -227,9 +235,10 @@ int main(int argc, char** argv) {
              ctx.cmu_dir, ctx.check ? "" : " (the report says so)");
 
   eval_section_bake(&ctx, &blob, &blob_size);
-  eval_section_paths(&ctx, blob, blob_size);
-  eval_section_feet(&ctx, blob, blob_size);
-  eval_section_splice(&ctx);
+  if (!ctx.only) eval_section_paths(&ctx, blob, blob_size);
+  if (!ctx.only) eval_section_feet(&ctx, blob, blob_size);
+  eval_section_follow(&ctx, blob, blob_size);
+  if (!ctx.only) eval_section_splice(&ctx);
   free(blob);
 
   if (ctx.md) {
@@ -262,7 +271,7 @@ int main(int argc, char** argv) {
             "reports the time from giving the path to the first pose plus "
             "the per-frame cost.\n\n");
   }
-  eval_section_bandai(&ctx);
+  if (!ctx.only) eval_section_bandai(&ctx);
   if (ctx.md) {
     eval_md(&ctx, "Whole evaluation run: %.1f s wall clock.\n",
             eval_now() - t0);

@@ -56,6 +56,8 @@ typedef struct smg_gd_character {
 	int64_t style, action;
 	double threshold;
 	bool ik, active, in_editor;
+	bool steering;          /* root steering (smg.h): on by default */
+	double steer_limits[3]; /* turn rate rad/s, slide ratio, stop s; 0 = default */
 
 	float *path_xz;         /* mirror of the path, replayed after reload */
 	uint32_t path_count, path_cap;
@@ -136,7 +138,10 @@ static bool ensure_character(smg_gd_character *self) {
 	smg_character_desc d;
 	memset(&d, 0, sizeof d);
 	d.struct_size = sizeof d;
-	d.flags = self->ik ? 0 : SMG_CHARACTER_NO_IK;
+	d.flags = (self->ik ? 0 : SMG_CHARACTER_NO_IK) | (self->steering ? 0 : SMG_CHARACTER_NO_STEERING);
+	d.steer_turn_rate = (float)self->steer_limits[0];
+	d.steer_slide_ratio = (float)self->steer_limits[1];
+	d.stop_seconds = (float)self->steer_limits[2];
 	d.initial_style = self->style >= 0 && self->style < info.style_count ? (uint32_t)self->style : 0;
 	d.initial_action = self->action >= 0 && self->action < info.action_count ? (uint32_t)self->action : 0;
 	d.path_capacity = PATH_CAPACITY;
@@ -621,6 +626,74 @@ static void m_is_ik_enabled(void *vself, const gd_value *a, gd_value *r) {
 	r->b = self->ik;
 }
 
+static void m_set_steering_enabled(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	self->steering = a[0].b != 0;
+	if (self->ch) smg_character_set_steering(self->ch, self->steering ? 1u : 0u);
+}
+
+static void m_is_steering_enabled(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->b = self->steering;
+}
+
+/* One of the three steering limits (0 = the library's default); the
+ * library refuses negative or non-finite values and keeps the old ones. */
+static void set_steer_limit(smg_gd_character *self, int which, double v, const char *name) {
+	double l[3] = { self->steer_limits[0], self->steer_limits[1], self->steer_limits[2] };
+	l[which] = v;
+	if (!(v >= 0.0) || !isfinite(v)) {
+		GD_ERR("SmgCharacter.%s: must be >= 0 (0 = default)", name);
+		return;
+	}
+	if (self->ch) {
+		smg_result res = smg_character_set_steering_limits(self->ch, (float)l[0], (float)l[1], (float)l[2]);
+		if (res != SMG_OK) {
+			GD_ERR("SmgCharacter.%s: rejected: %s", name, smg_result_string(res));
+			return;
+		}
+	}
+	self->steer_limits[which] = v;
+}
+
+static void m_set_steer_turn_rate(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	set_steer_limit(self, 0, a[0].f, "steer_turn_rate");
+}
+
+static void m_get_steer_turn_rate(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->steer_limits[0];
+}
+
+static void m_set_steer_slide_ratio(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	set_steer_limit(self, 1, a[0].f, "steer_slide_ratio");
+}
+
+static void m_get_steer_slide_ratio(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->steer_limits[1];
+}
+
+static void m_set_stop_seconds(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	set_steer_limit(self, 2, a[0].f, "stop_seconds");
+}
+
+static void m_get_stop_seconds(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->steer_limits[2];
+}
+
 static void m_set_active(void *vself, const gd_value *a, gd_value *r) {
 	SELF;
 	(void)r;
@@ -934,6 +1007,14 @@ static const gd_method methods[] = {
 	{ "get_error_threshold", m_get_error_threshold, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
 	{ "set_ik_enabled", m_set_ik_enabled, GT_NIL, NULL, 1, { { "enabled", GT_BOOL, NULL } }, 0 },
 	{ "is_ik_enabled", m_is_ik_enabled, GT_BOOL, NULL, 0, { { 0 } }, 1 },
+	{ "set_steering_enabled", m_set_steering_enabled, GT_NIL, NULL, 1, { { "enabled", GT_BOOL, NULL } }, 0 },
+	{ "is_steering_enabled", m_is_steering_enabled, GT_BOOL, NULL, 0, { { 0 } }, 1 },
+	{ "set_steer_turn_rate", m_set_steer_turn_rate, GT_NIL, NULL, 1, { { "radians_per_second", GT_FLOAT, NULL } }, 0 },
+	{ "get_steer_turn_rate", m_get_steer_turn_rate, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_steer_slide_ratio", m_set_steer_slide_ratio, GT_NIL, NULL, 1, { { "ratio", GT_FLOAT, NULL } }, 0 },
+	{ "get_steer_slide_ratio", m_get_steer_slide_ratio, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_stop_seconds", m_set_stop_seconds, GT_NIL, NULL, 1, { { "seconds", GT_FLOAT, NULL } }, 0 },
+	{ "get_stop_seconds", m_get_stop_seconds, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
 	{ "set_active", m_set_active, GT_NIL, NULL, 1, { { "active", GT_BOOL, NULL } }, 0 },
 	{ "is_active", m_is_active, GT_BOOL, NULL, 0, { { 0 } }, 1 },
 	{ "set_path", m_set_path, GT_INT, NULL, 1, { { "points", GT_PV3, NULL } }, 0 },
@@ -968,6 +1049,7 @@ static GDExtensionObjectPtr create(void *ud, GDExtensionBool notify) {
 	gd_node_path_init(&self->skeleton_path, "");
 	self->threshold = 0.25;
 	self->ik = true;
+	self->steering = true;
 	self->active = true;
 	self->owner = gd_object_create("Node3D", CLASS, self, notify);
 	if (!self->owner) {
@@ -1007,6 +1089,17 @@ void smg_gd_character_register(void) {
 		"get_error_threshold");
 	gd_arg p_ik = { "ik_enabled", GT_BOOL, NULL };
 	gd_register_property(CLASS, &p_ik, GD_PROPERTY_HINT_NONE, NULL, "set_ik_enabled", "is_ik_enabled");
+	gd_arg p_steer = { "steering_enabled", GT_BOOL, NULL };
+	gd_register_property(CLASS, &p_steer, GD_PROPERTY_HINT_NONE, NULL, "set_steering_enabled", "is_steering_enabled");
+	gd_arg p_turn = { "steer_turn_rate", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_turn, GD_PROPERTY_HINT_RANGE, "0,6.3,0.01,suffix:rad/s", "set_steer_turn_rate",
+		"get_steer_turn_rate");
+	gd_arg p_slide = { "steer_slide_ratio", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_slide, GD_PROPERTY_HINT_RANGE, "0,1,0.01", "set_steer_slide_ratio",
+		"get_steer_slide_ratio");
+	gd_arg p_stop = { "stop_seconds", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_stop, GD_PROPERTY_HINT_RANGE, "0,5,0.05,suffix:s", "set_stop_seconds",
+		"get_stop_seconds");
 	gd_arg p_active = { "active", GT_BOOL, NULL };
 	gd_register_property(CLASS, &p_active, GD_PROPERTY_HINT_NONE, NULL, "set_active", "is_active");
 
