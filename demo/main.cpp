@@ -387,6 +387,14 @@ int main(int argc, char** argv) {
     close_window(app);
     return 1;
   }
+  // Without a body the demo shows the capsule skeletons only.
+  if (app.world.body().indices.empty()) {
+    std::fprintf(stderr, "smg-demo: no skinned body, showing skeletons (%s)\n", app.world.body_error().c_str());
+    app.view.show_skeleton = true;
+  } else if (!app.renderer.set_body(app.world.body(), &error)) {
+    std::fprintf(stderr, "smg-demo: %s; showing skeletons\n", error.c_str());
+    app.view.show_skeleton = true;
+  }
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // never write imgui.ini into the caller's directory

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -57,6 +58,43 @@ void main() {
   vec3 c = v_colour.rgb * (0.30 + 0.22 * hemi + 0.62 * diffuse) + 0.10 * rim;
   float fog = clamp((length(u_eye - v_world) - 60.0) / 140.0, 0.0, 1.0);
   frag = vec4(mix(c, u_sky, fog), v_colour.a);
+}
+)";
+
+// Linear-blend skinning with up to 4 joints per vertex; the skinning
+// matrices of instance i start at texel 4 * i * u_joint_count of u_joints.
+// Colours: lower body, upper body (per instance) or skin, by the vertex's
+// material, lightened by the instance's ghost factor (strobe trail).
+const char* kBodyVS = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in uvec4 a_joints;
+layout(location = 3) in vec4 a_weights;
+layout(location = 4) in float a_material;
+layout(location = 5) in vec4 i_lower;
+layout(location = 6) in vec4 i_upper;
+uniform samplerBuffer u_joints;
+uniform int u_joint_count;
+uniform mat4 u_view_proj;
+uniform mat4 u_flatten;
+uniform vec3 u_skin;
+out vec3 v_normal;
+out vec3 v_world;
+out vec4 v_colour;
+mat4 joint(uint j) {
+  int t = 4 * (gl_InstanceID * u_joint_count + int(j));
+  return mat4(texelFetch(u_joints, t), texelFetch(u_joints, t + 1), texelFetch(u_joints, t + 2),
+              texelFetch(u_joints, t + 3));
+}
+void main() {
+  mat4 m = a_weights.x * joint(a_joints.x) + a_weights.y * joint(a_joints.y) +
+           a_weights.z * joint(a_joints.z) + a_weights.w * joint(a_joints.w);
+  vec4 w = u_flatten * (m * vec4(a_position, 1.0));
+  v_world = w.xyz / w.w;
+  v_normal = mat3(m) * a_normal;
+  vec3 c = a_material < 0.5 ? i_lower.rgb : (a_material < 1.5 ? i_upper.rgb : u_skin);
+  v_colour = vec4(c + (vec3(1.0) - c) * i_upper.a, 1.0);
+  gl_Position = u_view_proj * w;
 }
 )";
 
@@ -242,6 +280,8 @@ bool Renderer::init(std::string* error) {
   if (!ground_program_) return false;
   flat_program_ = link(kFlatVS, kFlatFS, error);
   if (!flat_program_) return false;
+  body_program_ = link(kBodyVS, kLitFS, error);
+  if (!body_program_) return false;
 
   std::vector<float> v;
   std::vector<unsigned> i;
@@ -294,6 +334,59 @@ void Renderer::shutdown() {
   glDeleteProgram(lit_program_);
   glDeleteProgram(ground_program_);
   glDeleteProgram(flat_program_);
+  glDeleteProgram(body_program_);
+  glDeleteVertexArrays(1, &body_vao_);
+  for (unsigned b : {body_vbo_, body_ibo_, body_instance_vbo_, joint_tbo_}) glDeleteBuffers(1, &b);
+  glDeleteTextures(1, &joint_texture_);
+}
+
+bool Renderer::set_body(const BodyMesh& mesh, std::string* error) {
+  if (!body_vao_) {
+    glGenVertexArrays(1, &body_vao_);
+    glGenBuffers(1, &body_vbo_);
+    glGenBuffers(1, &body_ibo_);
+    glGenBuffers(1, &body_instance_vbo_);
+    glGenBuffers(1, &joint_tbo_);
+    glGenTextures(1, &joint_texture_);
+  }
+  glBindVertexArray(body_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, body_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(BodyVertex)), mesh.vertices.data(),
+               GL_STATIC_DRAW);
+  const GLsizei stride = sizeof(BodyVertex);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, normal)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribIPointer(2, 4, GL_UNSIGNED_SHORT, stride, reinterpret_cast<void*>(offsetof(BodyVertex, joints)));
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, weights)));
+  glEnableVertexAttribArray(4);
+  glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, material)));
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, body_ibo_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, body_instance_vbo_);
+  for (int c = 0; c < 2; ++c) {
+    glEnableVertexAttribArray(GLuint(5 + c));
+    glVertexAttribPointer(GLuint(5 + c), 4, GL_FLOAT, GL_FALSE, sizeof(BodyColours),
+                          reinterpret_cast<void*>(sizeof(glm::vec4) * size_t(c)));
+    glVertexAttribDivisor(GLuint(5 + c), 1);
+  }
+  glBindVertexArray(0);
+  body_index_count_ = int(mesh.indices.size());
+  body_joints_ = int(mesh.inverse_bind.size());
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  max_body_instances_ = body_joints_ > 0 ? int(max_texels / (4 * body_joints_)) : 0;
+  if (max_body_instances_ < 1 || glGetError() != GL_NO_ERROR) {
+    *error = "cannot upload the body mesh (" + std::to_string(body_joints_) + " joints, texture buffers of " +
+             std::to_string(max_texels) + " texels)";
+    body_index_count_ = 0;
+    return false;
+  }
+  return true;
 }
 
 void Renderer::begin(int width, int height, const OrbitCamera& camera) {
@@ -306,6 +399,46 @@ void Renderer::begin(int width, int height, const OrbitCamera& camera) {
   shadow_spheres_.clear();
   cylinders_.clear();
   decals_.clear();
+  body_matrices_.clear();
+  body_colours_.clear();
+}
+
+void Renderer::body(const glm::mat4* skin, glm::vec3 lower, glm::vec3 upper, float ghost) {
+  if (body_index_count_ == 0) return;
+  body_matrices_.insert(body_matrices_.end(), skin, skin + body_joints_);
+  body_colours_.push_back({glm::vec4(lower, 0.0f), glm::vec4(upper, ghost)});
+}
+
+// Draws every queued body, as many per instanced draw as the texture
+// buffer holds.
+void Renderer::draw_bodies(bool shadow) {
+  if (body_colours_.empty()) return;
+  glUseProgram(body_program_);
+  glUniformMatrix4fv(loc(body_program_, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj_));
+  glUniform3fv(loc(body_program_, "u_light_dir"), 1, glm::value_ptr(kLightDir));
+  glUniform3fv(loc(body_program_, "u_eye"), 1, glm::value_ptr(eye_));
+  glUniform3fv(loc(body_program_, "u_sky"), 1, glm::value_ptr(kSkyColour));
+  glUniform3fv(loc(body_program_, "u_skin"), 1, glm::value_ptr(kSkinColour));
+  glm::mat4 flatten = shadow ? flatten_matrix(kLightDir, 0.003f) : glm::mat4(1.0f);
+  glUniformMatrix4fv(loc(body_program_, "u_flatten"), 1, GL_FALSE, glm::value_ptr(flatten));
+  glUniform1i(loc(body_program_, "u_shadow"), shadow ? 1 : 0);
+  glUniform1i(loc(body_program_, "u_joint_count"), body_joints_);
+  glUniform1i(loc(body_program_, "u_joints"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, joint_texture_);
+  glBindVertexArray(body_vao_);
+  const size_t total = body_colours_.size();
+  for (size_t first = 0; first < total; first += size_t(max_body_instances_)) {
+    size_t count = std::min(total - first, size_t(max_body_instances_));
+    glBindBuffer(GL_TEXTURE_BUFFER, joint_tbo_);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(count * size_t(body_joints_) * sizeof(glm::mat4)),
+                 &body_matrices_[first * size_t(body_joints_)], GL_STREAM_DRAW);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, joint_tbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, body_instance_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(BodyColours)), &body_colours_[first], GL_STREAM_DRAW);
+    glDrawElementsInstanced(GL_TRIANGLES, body_index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(count));
+  }
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
 }
 
 void Renderer::sphere(glm::vec3 c, float r, glm::vec4 colour, bool casts_shadow) {
@@ -393,6 +526,8 @@ void Renderer::end() {
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   draw_instances(sphere_, shadow_spheres_);
   draw_instances(cylinder_, cylinders_);
+  draw_bodies(true);
+  glUseProgram(lit_program_);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
@@ -404,8 +539,14 @@ void Renderer::end() {
   glUniform1i(loc(lit_program_, "u_shadow"), 0);
   draw_instances(sphere_, spheres_);
   draw_instances(cylinder_, cylinders_);
+  // Bodies are closed and wound outward: culling halves the fragment work.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  draw_bodies(false);
+  glDisable(GL_CULL_FACE);
 
   glBindVertexArray(0);
   glUseProgram(0);
   last_instances_ = int(spheres_.size() + cylinders_.size());
+  last_bodies_ = int(body_colours_.size());
 }

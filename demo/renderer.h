@@ -1,9 +1,11 @@
 // renderer.h - the demo's OpenGL 3.3 core renderer: a ground plane with a
 // procedural grid, flat decals on the ground (path, footprints, marker
-// rings), and instanced lit spheres and cylinders (bones, joints, marker
-// poles) with planar projected shadows. Knows nothing about libsmg.
+// rings), instanced lit spheres and cylinders (bones, joints, marker
+// poles) and GPU-skinned bodies, all with planar projected shadows. Knows
+// nothing about libsmg.
 #pragma once
 
+#include "body.h"
 #include "camera.h"
 
 #include <glm/glm.hpp>
@@ -32,12 +34,18 @@ class Renderer {
   // Joint spheres inside a capsule's shadow need not cast their own.
   void sphere(glm::vec3 centre, float radius, glm::vec4 colour, bool casts_shadow = true);
   void cylinder(glm::vec3 a, glm::vec3 b, float radius, glm::vec4 colour);
+  // A skinned body (the mesh given to set_body) posed by one skinning
+  // matrix per joint; lower/upper body colours, lightened by `ghost`.
+  void body(const glm::mat4* skin, glm::vec3 lower, glm::vec3 upper, float ghost);
+  // The mesh every body() call draws; false if it cannot be uploaded.
+  bool set_body(const BodyMesh& mesh, std::string* error);
   // Ground decals: triangles lying on y ~ 0, drawn over the grid.
   std::vector<FlatVertex>& decals() { return decals_; }
   // Draws everything queued: ground, decals, shadows, lit meshes.
   void end();
 
   int instance_count() const { return last_instances_; }
+  int body_count() const { return last_bodies_; }
 
  private:
   struct Mesh {
@@ -46,6 +54,21 @@ class Renderer {
   };
   bool build_mesh(Mesh* mesh, const std::vector<float>& vertices, const std::vector<unsigned>& indices);
   void draw_instances(const Mesh& mesh, const std::vector<Instance>& instances);
+  void draw_bodies(bool shadow);
+
+  // Skinned bodies: the mesh, per-instance colours, and every instance's
+  // skinning matrices in a texture buffer (instance i, joint j at texels
+  // 4 * (i * joints + j) ...), so one instanced draw poses the whole crowd.
+  struct BodyColours {
+    glm::vec4 lower, upper;  // upper.a = ghost (lightening)
+  };
+  unsigned body_program_ = 0;
+  unsigned body_vao_ = 0, body_vbo_ = 0, body_ibo_ = 0, body_instance_vbo_ = 0;
+  unsigned joint_tbo_ = 0, joint_texture_ = 0;
+  int body_index_count_ = 0, body_joints_ = 0, max_body_instances_ = 0;
+  std::vector<glm::mat4> body_matrices_;
+  std::vector<BodyColours> body_colours_;
+  int last_bodies_ = 0;
 
   unsigned lit_program_ = 0, ground_program_ = 0, flat_program_ = 0;
   Mesh sphere_, cylinder_;

@@ -1,6 +1,7 @@
 // world.cpp - the demo's simulation state on top of the libsmg runtime.
 #include "world.h"
 
+#include "body_graph.h"
 #include "palette.h"
 
 #include <algorithm>
@@ -18,6 +19,9 @@ constexpr uint32_t kConstraintCapacity = 64;
 constexpr size_t kFootprints = 48;
 constexpr size_t kTrailMax = 400;
 constexpr float kDrawSpacing = 0.15f;  // metres between drawn points
+// Body mesh resolution: ~60 cells over the rest height gives ~7k triangles
+// for a human, light enough for a crowd on a software rasteriser.
+constexpr int kBodyCellsPerHeight = 60;
 
 void collect_log(uint32_t level, const char* message, void* user) {
   if (level == SMG_LOG_ERROR || level == SMG_LOG_WARNING) {
@@ -109,6 +113,11 @@ bool World::load(const std::string& path, std::string* error) {
   style_count_ = info.style_count;
   action_count_ = info.action_count;
   build_layout();
+  // A bad body only costs the skinned view; the skeleton view still works.
+  BodySkeleton skeleton;
+  if (!body_skeleton_from_graph(graph_, &skeleton, &body_error_) ||
+      !build_body(skeleton, kBodyCellsPerHeight, &body_, &body_error_))
+    body_ = BodyMesh();
   return true;
 }
 
@@ -451,6 +460,7 @@ void World::step(float dt) {
     p.style = c.state.style;
     p.action = c.state.action;
     for (uint32_t j = 0; j < joint_count_; ++j) p.joints.push_back(joint_position(c.matrices, int(j)));
+    p.matrices = c.matrices;
     if (trail_.size() >= kTrailMax) trail_.erase(trail_.begin());
     trail_.push_back(std::move(p));
     next_trail_time_ = sim_time_ + trail_interval;

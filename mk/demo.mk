@@ -13,6 +13,8 @@ DEMO_SRC := $(sort $(wildcard demo/*.cpp))
 DEMO_OBJ := $(DEMO_SRC:%.cpp=$(BUILD)/obj/%.o)
 DEMO_BIN := $(BUILD)/smg-demo
 DEMO_PNGCHECK := $(BUILD)/smg-demo-pngcheck
+DEMO_BODYTEST := $(BUILD)/smg-demo-bodytest
+DEMO_BODY_OBJ := $(BUILD)/obj/demo/body.o $(BUILD)/obj/demo/body_graph.o
 DEMO_DEFAULT_BLOB := $(BUILD)/default.smg
 DEMO_CMU_BLOB := $(BUILD)/cmu.smg
 DEMO_CMU_MANIFEST := data/cmu.manifest
@@ -20,7 +22,7 @@ DEMO_CMU_MANIFEST := data/cmu.manifest
 DEMO_LIBSMG ?= $(LIBSMG_A)
 DEMO_ARGS ?=
 
-ALL_TARGETS += $(DEMO_BIN) $(DEMO_PNGCHECK)
+ALL_TARGETS += $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST)
 
 # Third-party headers are -isystem so -Werror applies to our code only.
 DEMO_IMGUI_INC := $(shell pkg-config --variable=includedir imgui 2>/dev/null || echo /usr/include/imgui)
@@ -47,8 +49,13 @@ $(DEMO_PNGCHECK): demo/tools/png_check.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++17 -Wall -Wextra -Werror $(OPT) -isystem /usr/include/stb $< -o $@ -lstb -lm
 
+# The generated body's unit test: the demo's body code and libsmg, no GL.
+$(DEMO_BODYTEST): demo/tools/body_test.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/body.h demo/body_graph.h
+	@mkdir -p $(dir $@)
+	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
+
 .PHONY: demo demo-cmu test-demo demo-pictures demo-build
-demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK)
+demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST)
 
 demo: $(DEMO_BIN) $(DEMO_DEFAULT_BLOB)
 	$(DEMO_BIN) --graph $(DEMO_DEFAULT_BLOB) $(DEMO_ARGS)

@@ -1,0 +1,176 @@
+// body_test.cpp - unit test of the generated skinned body (make test-demo):
+// for each blob given, the mesh is well formed (indices, weights, normals
+// outward), the bind pose skins to the rest mesh, and a walking frame
+// skinned with the runtime's model matrices times the inverse bind matrices
+// equals linear-blend skinning computed independently from the local pose
+// (quaternion FK written here), and the feet meet the floor.
+//
+// usage: smg-demo-bodytest BLOB...
+#include "../body.h"
+#include "../body_graph.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+int failures = 0;
+
+void check(bool ok, const std::string& what) {
+  std::printf("%s %s\n", ok ? "PASS" : "FAIL", what.c_str());
+  if (!ok) ++failures;
+}
+
+// World joint rotations and positions from the runtime's local pose.
+void local_fk(const BodySkeleton& sk, const float* root, const float* rot, std::vector<glm::quat>* R,
+              std::vector<glm::vec3>* X) {
+  size_t n = sk.parent.size();
+  R->resize(n);
+  X->resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    glm::quat q(rot[j * 4 + 3], rot[j * 4 + 0], rot[j * 4 + 1], rot[j * 4 + 2]);  // stored x y z w
+    int p = sk.parent[j];
+    if (p < 0) {
+      (*R)[j] = q;
+      (*X)[j] = glm::vec3(root[0], root[1], root[2]);
+    } else {
+      (*R)[j] = (*R)[size_t(p)] * q;
+      (*X)[j] = (*X)[size_t(p)] + (*R)[size_t(p)] * sk.rest_offset[j];
+    }
+  }
+}
+
+void test_blob(const char* path) {
+  std::string name = std::string(path) + ": ";
+  smg_graph* g = nullptr;
+  if (smg_graph_load_file(path, nullptr, &g) != SMG_OK) {
+    check(false, name + "load");
+    return;
+  }
+  BodySkeleton sk;
+  BodyMesh mesh;
+  std::string err;
+  bool ok = body_skeleton_from_graph(g, &sk, &err) && build_body(sk, 60, &mesh, &err);
+  check(ok, name + "body built " + err);
+  if (!ok) {
+    smg_graph_destroy(g);
+    return;
+  }
+  const size_t nj = sk.parent.size(), nv = mesh.vertices.size();
+  std::printf("  %zu joints, %zu vertices, %zu triangles, rest height %.2f m\n", nj, nv, mesh.indices.size() / 3,
+              double(mesh.height));
+
+  // --- well formed ---
+  bool indices_ok = mesh.indices.size() % 3 == 0 && mesh.indices.size() >= 3000;
+  for (uint32_t i : mesh.indices) indices_ok = indices_ok && i < nv;
+  bool weights_ok = true;
+  for (const BodyVertex& v : mesh.vertices) {
+    float sum = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+      weights_ok = weights_ok && v.joints[k] < nj && v.weights[k] >= 0.0f;
+      sum += v.weights[k];
+      if (k > 0) weights_ok = weights_ok && v.weights[k] <= v.weights[k - 1];
+    }
+    weights_ok = weights_ok && std::fabs(sum - 1.0f) < 1e-5f && std::isfinite(v.position.x) &&
+                 std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f;
+  }
+  check(indices_ok, name + "at least 1000 triangles, indices in range");
+  check(weights_ok, name + "weights: at most 4, sorted, sum 1, valid joints; unit normals");
+  // Outward: the enclosed volume is positive and triangle winding agrees
+  // with the vertex normals.
+  double volume = 0.0;
+  size_t agree = 0;
+  for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+    const BodyVertex &a = mesh.vertices[mesh.indices[t]], &b = mesh.vertices[mesh.indices[t + 1]],
+                     &c = mesh.vertices[mesh.indices[t + 2]];
+    volume += double(glm::dot(a.position, glm::cross(b.position, c.position))) / 6.0;
+    glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+    agree += glm::dot(n, a.normal + b.normal + c.normal) > 0.0f;
+  }
+  std::printf("  volume %.4f m^3\n", volume);
+  check(volume > 0.01 * double(mesh.height * mesh.height * mesh.height) && agree == mesh.indices.size() / 3,
+        name + "normals outward (positive volume, every triangle wound with its normals)");
+
+  // --- bind pose: identity local rotations skin to the rest mesh ---
+  std::vector<float> rest_model(nj * 16, 0.0f);
+  {
+    std::vector<float> root(3, 0.0f), rot(nj * 4, 0.0f);
+    for (size_t j = 0; j < nj; ++j) rot[j * 4 + 3] = 1.0f;
+    root[0] = sk.rest_offset[0].x;
+    root[1] = sk.rest_offset[0].y;
+    root[2] = sk.rest_offset[0].z;
+    std::vector<glm::quat> R;
+    std::vector<glm::vec3> X;
+    local_fk(sk, root.data(), rot.data(), &R, &X);
+    for (size_t j = 0; j < nj; ++j) {
+      glm::mat4 m = glm::mat4_cast(R[j]);
+      m[3] = glm::vec4(X[j], 1.0f);
+      std::memcpy(&rest_model[j * 16], &m[0][0], 16 * sizeof(float));
+    }
+  }
+  std::vector<glm::mat4> skin(nj);
+  body_skin_matrices(mesh, rest_model.data(), skin.data());
+  float bind_err = 0.0f;
+  for (const BodyVertex& v : mesh.vertices) bind_err = std::max(bind_err, glm::length(body_skin_point(v, skin.data()) - v.position));
+  std::printf("  bind pose: max |skinned - rest| = %.2g m\n", double(bind_err));
+  check(bind_err < 1e-5f, name + "bind pose skins to the rest mesh");
+
+  // --- a walking frame: runtime matrices x inverse bind vs independent LBS ---
+  smg_character* ch = nullptr;
+  smg_character_create(g, nullptr, &ch);
+  const float xz[] = {0.0f, 0.0f, 0.0f, 12.0f};
+  smg_character_set_path(ch, xz, 2);
+  std::vector<float> model(nj * 16), root(3), rot(nj * 4);
+  float lbs_err = 0.0f, lowest = 1e9f, lowest_joint = 1e9f;
+  bool calls_ok = ch != nullptr;
+  for (int f = 0; f < 150 && calls_ok; ++f) {
+    calls_ok = smg_character_step(ch, 1.0f / 60.0f) == SMG_OK &&
+               smg_character_get_model_matrices(ch, SMG_SPACE_WORLD, model.data(), uint32_t(nj)) == SMG_OK &&
+               smg_character_get_local_pose(ch, root.data(), rot.data(), uint32_t(nj)) == SMG_OK;
+    if (!calls_ok || f % 10 != 9) continue;
+    body_skin_matrices(mesh, model.data(), skin.data());
+    std::vector<glm::quat> R;
+    std::vector<glm::vec3> X;
+    local_fk(sk, root.data(), rot.data(), &R, &X);
+    std::vector<glm::vec3> P(nj);  // rest joint positions
+    for (size_t j = 0; j < nj; ++j) P[j] = (sk.parent[j] >= 0 ? P[size_t(sk.parent[j])] : glm::vec3(0)) + sk.rest_offset[j];
+    float frame_lowest = 1e9f;
+    for (const BodyVertex& v : mesh.vertices) {
+      glm::vec3 mine(0.0f);
+      for (int k = 0; k < 4; ++k) mine += v.weights[k] * (R[v.joints[k]] * (v.position - P[v.joints[k]]) + X[v.joints[k]]);
+      glm::vec3 gpu = body_skin_point(v, skin.data());
+      lbs_err = std::max(lbs_err, glm::length(gpu - mine));
+      frame_lowest = std::min(frame_lowest, gpu.y);
+    }
+    float joint_lowest = 1e9f;
+    for (size_t j = 0; j < nj; ++j) joint_lowest = std::min(joint_lowest, X[j].y);
+    lowest = std::min(lowest, frame_lowest);
+    lowest_joint = std::min(lowest_joint, joint_lowest);
+  }
+  check(calls_ok, name + "runtime calls");
+  std::printf("  walking: max |model x inverse bind - own LBS| = %.2g m; lowest vertex %.3f m, lowest joint %.3f m\n",
+              double(lbs_err), double(lowest), double(lowest_joint));
+  check(lbs_err < 1e-4f * mesh.height, name + "skinning matrices match FK-based linear blend skinning");
+  // The soles: the lowest point of the body over the walk is at the floor
+  // (y = 0), neither floating nor sunk by more than 2.5 cm.
+  check(std::fabs(lowest) < 0.025f, name + "feet meet the floor");
+  if (ch) smg_character_destroy(ch);
+  smg_graph_destroy(g);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s BLOB...\n", argv[0]);
+    return 2;
+  }
+  for (int i = 1; i < argc; ++i) test_blob(argv[i]);
+  std::printf("body-test: %s\n", failures ? "FAILED" : "passed");
+  return failures ? 1 : 0;
+}
