@@ -128,9 +128,9 @@ bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S
         }
       }
     if (width > 0.0f) {
-      torso_r = glm::clamp(0.6f * width, 0.05f * S, 0.085f * S);
+      torso_r = glm::clamp(0.75f * width, 0.06f * S, 0.11f * S);
       shape->depth_axis = glm::normalize(glm::cross(lateral, glm::vec3(0, 1, 0)));
-      shape->depth_scale = 1.45f;
+      shape->depth_scale = 1.5f;
     }
   }
   std::vector<float> radius(n);
@@ -138,7 +138,7 @@ bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S
     if (torso[j]) {
       radius[j] = torso_r;
     } else {
-      float r = 0.02f * S + 0.05f * reach[j];
+      float r = 0.024f * S + 0.05f * reach[j];
       radius[j] = std::min(r * (sk.upper[j] ? 0.8f : 1.0f), 0.85f * torso_r);
     }
   }
