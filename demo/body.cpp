@@ -270,6 +270,7 @@ void polygonise(const Shape& s, float cell, BodyMesh* out) {
     const glm::vec3 &pa = out->vertices[size_t(a)].position, &pb = out->vertices[size_t(b)].position,
                     &pc = out->vertices[size_t(c)].position;
     glm::vec3 n = glm::cross(pb - pa, pc - pa);
+    if (!(glm::dot(n, n) > 1e-14f)) return;  // degenerate: no facing to give it
     glm::vec3 outward = out->vertices[size_t(a)].normal + out->vertices[size_t(b)].normal + out->vertices[size_t(c)].normal;
     if (glm::dot(n, outward) < 0.0f) std::swap(b, c);
     out->indices.insert(out->indices.end(), {uint32_t(a), uint32_t(b), uint32_t(c)});

@@ -61,8 +61,10 @@ void main() {
 }
 )";
 
-// Linear-blend skinning with up to 4 joints per vertex; the skinning
-// matrices of instance i start at texel 4 * i * u_joint_count of u_joints.
+// Linear-blend skinning with up to 4 joints per vertex. Each skinning
+// matrix is stored as its 3 affine rows (3 texels); instance i's joints
+// start at texel 3 * i * u_joint_count of u_joints. Blending the rows
+// first skins the position with 3 dot products.
 // Colours: lower body, upper body (per instance) or skin, by the vertex's
 // material, lightened by the instance's ghost factor (strobe trail).
 const char* kBodyVS = R"(#version 330 core
@@ -81,17 +83,19 @@ uniform vec3 u_skin;
 out vec3 v_normal;
 out vec3 v_world;
 out vec4 v_colour;
-mat4 joint(uint j) {
-  int t = 4 * (gl_InstanceID * u_joint_count + int(j));
-  return mat4(texelFetch(u_joints, t), texelFetch(u_joints, t + 1), texelFetch(u_joints, t + 2),
-              texelFetch(u_joints, t + 3));
-}
 void main() {
-  mat4 m = a_weights.x * joint(a_joints.x) + a_weights.y * joint(a_joints.y) +
-           a_weights.z * joint(a_joints.z) + a_weights.w * joint(a_joints.w);
-  vec4 w = u_flatten * (m * vec4(a_position, 1.0));
+  int base = 3 * gl_InstanceID * u_joint_count;
+  vec4 r0 = vec4(0.0), r1 = vec4(0.0), r2 = vec4(0.0);
+  for (int k = 0; k < 4; ++k) {
+    int t = base + 3 * int(a_joints[k]);
+    r0 += a_weights[k] * texelFetch(u_joints, t);
+    r1 += a_weights[k] * texelFetch(u_joints, t + 1);
+    r2 += a_weights[k] * texelFetch(u_joints, t + 2);
+  }
+  vec4 p = vec4(a_position, 1.0);
+  vec4 w = u_flatten * vec4(dot(r0, p), dot(r1, p), dot(r2, p), 1.0);
   v_world = w.xyz / w.w;
-  v_normal = mat3(m) * a_normal;
+  v_normal = vec3(dot(r0.xyz, a_normal), dot(r1.xyz, a_normal), dot(r2.xyz, a_normal));
   vec3 c = a_material < 0.5 ? i_lower.rgb : (a_material < 1.5 ? i_upper.rgb : u_skin);
   v_colour = vec4(c + (vec3(1.0) - c) * i_upper.a, 1.0);
   gl_Position = u_view_proj * w;
@@ -379,7 +383,7 @@ bool Renderer::set_body(const BodyMesh& mesh, std::string* error) {
   body_joints_ = int(mesh.inverse_bind.size());
   GLint max_texels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-  max_body_instances_ = body_joints_ > 0 ? int(max_texels / (4 * body_joints_)) : 0;
+  max_body_instances_ = body_joints_ > 0 ? int(max_texels / (3 * body_joints_)) : 0;
   if (max_body_instances_ < 1 || glGetError() != GL_NO_ERROR) {
     *error = "cannot upload the body mesh (" + std::to_string(body_joints_) + " joints, texture buffers of " +
              std::to_string(max_texels) + " texels)";
@@ -399,13 +403,16 @@ void Renderer::begin(int width, int height, const OrbitCamera& camera) {
   shadow_spheres_.clear();
   cylinders_.clear();
   decals_.clear();
-  body_matrices_.clear();
+  body_rows_.clear();
   body_colours_.clear();
 }
 
 void Renderer::body(const glm::mat4* skin, glm::vec3 lower, glm::vec3 upper, float ghost) {
   if (body_index_count_ == 0) return;
-  body_matrices_.insert(body_matrices_.end(), skin, skin + body_joints_);
+  for (int j = 0; j < body_joints_; ++j) {
+    glm::mat4 t = glm::transpose(skin[j]);  // rows; the 4th is (0 0 0 1)
+    body_rows_.insert(body_rows_.end(), {t[0], t[1], t[2]});
+  }
   body_colours_.push_back({glm::vec4(lower, 0.0f), glm::vec4(upper, ghost)});
 }
 
@@ -431,8 +438,8 @@ void Renderer::draw_bodies(bool shadow) {
   for (size_t first = 0; first < total; first += size_t(max_body_instances_)) {
     size_t count = std::min(total - first, size_t(max_body_instances_));
     glBindBuffer(GL_TEXTURE_BUFFER, joint_tbo_);
-    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(count * size_t(body_joints_) * sizeof(glm::mat4)),
-                 &body_matrices_[first * size_t(body_joints_)], GL_STREAM_DRAW);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(count * size_t(body_joints_) * 3 * sizeof(glm::vec4)),
+                 &body_rows_[first * size_t(body_joints_) * 3], GL_STREAM_DRAW);
     glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, joint_tbo_);
     glBindBuffer(GL_ARRAY_BUFFER, body_instance_vbo_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(BodyColours)), &body_colours_[first], GL_STREAM_DRAW);
@@ -526,7 +533,12 @@ void Renderer::end() {
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   draw_instances(sphere_, shadow_spheres_);
   draw_instances(cylinder_, cylinders_);
+  // A flattened body seen from above keeps the winding of its light-facing
+  // side: culling the rest rasterises each shadow once instead of twice.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
   draw_bodies(true);
+  glDisable(GL_CULL_FACE);
   glUseProgram(lit_program_);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_POLYGON_OFFSET_FILL);

@@ -57,8 +57,9 @@ class Renderer {
   void draw_bodies(bool shadow);
 
   // Skinned bodies: the mesh, per-instance colours, and every instance's
-  // skinning matrices in a texture buffer (instance i, joint j at texels
-  // 4 * (i * joints + j) ...), so one instanced draw poses the whole crowd.
+  // skinning matrices in a texture buffer (the 3 affine rows of instance i,
+  // joint j at texels 3 * (i * joints + j) ...), so one instanced draw
+  // poses the whole crowd.
   struct BodyColours {
     glm::vec4 lower, upper;  // upper.a = ghost (lightening)
   };
@@ -66,7 +67,7 @@ class Renderer {
   unsigned body_vao_ = 0, body_vbo_ = 0, body_ibo_ = 0, body_instance_vbo_ = 0;
   unsigned joint_tbo_ = 0, joint_texture_ = 0;
   int body_index_count_ = 0, body_joints_ = 0, max_body_instances_ = 0;
-  std::vector<glm::mat4> body_matrices_;
+  std::vector<glm::vec4> body_rows_;
   std::vector<BodyColours> body_colours_;
   int last_bodies_ = 0;
 

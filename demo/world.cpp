@@ -19,9 +19,6 @@ constexpr uint32_t kConstraintCapacity = 64;
 constexpr size_t kFootprints = 48;
 constexpr size_t kTrailMax = 400;
 constexpr float kDrawSpacing = 0.15f;  // metres between drawn points
-// Body mesh resolution: ~60 cells over the rest height gives ~7k triangles
-// for a human, light enough for a crowd on a software rasteriser.
-constexpr int kBodyCellsPerHeight = 60;
 
 void collect_log(uint32_t level, const char* message, void* user) {
   if (level == SMG_LOG_ERROR || level == SMG_LOG_WARNING) {

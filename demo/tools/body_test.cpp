@@ -11,6 +11,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -55,7 +56,7 @@ void test_blob(const char* path) {
   BodySkeleton sk;
   BodyMesh mesh;
   std::string err;
-  bool ok = body_skeleton_from_graph(g, &sk, &err) && build_body(sk, 60, &mesh, &err);
+  bool ok = body_skeleton_from_graph(g, &sk, &err) && build_body(sk, kBodyCellsPerHeight, &mesh, &err);
   check(ok, name + "body built " + err);
   if (!ok) {
     smg_graph_destroy(g);
@@ -66,7 +67,7 @@ void test_blob(const char* path) {
               double(mesh.height));
 
   // --- well formed ---
-  bool indices_ok = mesh.indices.size() % 3 == 0 && mesh.indices.size() >= 3000;
+  bool indices_ok = mesh.indices.size() % 3 == 0 && mesh.indices.size() >= 3000;  // 1000 triangles
   for (uint32_t i : mesh.indices) indices_ok = indices_ok && i < nv;
   bool weights_ok = true;
   for (const BodyVertex& v : mesh.vertices) {
@@ -92,9 +93,43 @@ void test_blob(const char* path) {
     glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
     agree += glm::dot(n, a.normal + b.normal + c.normal) > 0.0f;
   }
-  std::printf("  volume %.4f m^3\n", volume);
+  std::printf("  volume %.4f m^3, %zu of %zu triangles wound with their normals\n", volume, agree,
+              mesh.indices.size() / 3);
   check(volume > 0.01 * double(mesh.height * mesh.height * mesh.height) && agree == mesh.indices.size() / 3,
         name + "normals outward (positive volume, every triangle wound with its normals)");
+
+  // --- generality: the same rig in centimetres under a floor-level root
+  // bone (as many game rigs have) gets the same body, scaled, and the
+  // root above the pelvis moves no vertex ---
+  {
+    std::vector<glm::vec3> P(nj);
+    float floor_y = 1e9f;
+    for (size_t j = 0; j < nj; ++j) {
+      P[j] = (sk.parent[j] >= 0 ? P[size_t(sk.parent[j])] : glm::vec3(0)) + sk.rest_offset[j];
+      floor_y = std::min(floor_y, P[j].y);
+    }
+    BodySkeleton big;
+    big.parent.push_back(-1);
+    big.rest_offset.push_back(glm::vec3(P[0].x, floor_y, P[0].z) * 100.0f);
+    big.upper.push_back(0);
+    for (size_t j = 0; j < nj; ++j) {
+      big.parent.push_back(sk.parent[j] + 1);
+      big.rest_offset.push_back((j == 0 ? glm::vec3(0.0f, P[0].y - floor_y, 0.0f) : sk.rest_offset[j]) * 100.0f);
+      big.upper.push_back(sk.upper[j]);
+    }
+    BodyMesh m2;
+    std::string e2;
+    bool built = build_body(big, kBodyCellsPerHeight, &m2, &e2);
+    size_t t1 = mesh.indices.size() / 3, t2 = m2.indices.size() / 3;
+    bool root_free = true;
+    for (const BodyVertex& v : m2.vertices)
+      for (int k = 0; k < 4; ++k) root_free = root_free && !(v.joints[k] == 0 && v.weights[k] > 0.0f);
+    std::printf("  in centimetres under a floor root: %zu triangles (%zu in metres), height %.1f\n", t2, t1,
+                double(m2.height));
+    check(built && root_free && t2 > t1 * 9 / 10 && t2 < t1 * 11 / 10 &&
+              std::fabs(m2.height - 100.0f * mesh.height) < 0.01f * m2.height,
+          name + "any scale and a floor-level root bone give the same body " + e2);
+  }
 
   // --- bind pose: identity local rotations skin to the rest mesh ---
   std::vector<float> rest_model(nj * 16, 0.0f);
