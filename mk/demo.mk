@@ -14,6 +14,7 @@ DEMO_OBJ := $(DEMO_SRC:%.cpp=$(BUILD)/obj/%.o)
 DEMO_BIN := $(BUILD)/smg-demo
 DEMO_PNGCHECK := $(BUILD)/smg-demo-pngcheck
 DEMO_BODYTEST := $(BUILD)/smg-demo-bodytest
+DEMO_BODYGLTF := $(BUILD)/smg-body-gltf
 DEMO_BODY_OBJ := $(BUILD)/obj/demo/body.o $(BUILD)/obj/demo/body_graph.o
 DEMO_DEFAULT_BLOB := $(BUILD)/default.smg
 DEMO_CMU_BLOB := $(BUILD)/cmu.smg
@@ -22,7 +23,7 @@ DEMO_CMU_MANIFEST := data/cmu.manifest
 DEMO_LIBSMG ?= $(LIBSMG_A)
 DEMO_ARGS ?=
 
-ALL_TARGETS += $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST)
+ALL_TARGETS += $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF)
 
 # Third-party headers are -isystem so -Werror applies to our code only.
 DEMO_IMGUI_INC := $(shell pkg-config --variable=includedir imgui 2>/dev/null || echo /usr/include/imgui)
@@ -54,8 +55,13 @@ $(DEMO_BODYTEST): demo/tools/body_test.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/
 	@mkdir -p $(dir $@)
 	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
 
+# The generated body as a glTF file for engines (the Godot demo loads it).
+$(DEMO_BODYGLTF): demo/tools/body_gltf.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/body.h demo/body_graph.h
+	@mkdir -p $(dir $@)
+	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
+
 .PHONY: demo demo-cmu test-demo demo-pictures demo-build
-demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST)
+demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF)
 
 demo: $(DEMO_BIN) $(DEMO_DEFAULT_BLOB)
 	$(DEMO_BIN) --graph $(DEMO_DEFAULT_BLOB) $(DEMO_ARGS)

@@ -112,10 +112,12 @@ test-godot-asan: $(GODOT_ASAN_EXT) $(GODOT_ASAN_SHIM) $(GODOT_DEFAULT_SMG)
 
 # The demo project runs from bindings/godot/demo in the editor once the
 # extension and a graph are copied in (both git-ignored).
-godot-demo: $(GODOT_EXT) $(GODOT_DEFAULT_SMG)
+# body.gltf is the generated skinned body of the graph's skeleton.
+godot-demo: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(DEMO_BODYGLTF)
 	@mkdir -p $(GODOT_DEMO)/bin $(GODOT_DEMO)/.godot
 	cp $(GODOT_EXT) $(GODOT_DEMO)/bin/
 	cp $(GODOT_DEFAULT_SMG) $(GODOT_DEMO)/default.smg
+	$(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG) $(GODOT_DEMO)/body.gltf
 	@echo 'res://smg.gdextension' > $(GODOT_DEMO)/.godot/extension_list.cfg
 
 godot-screenshot: godot-demo
