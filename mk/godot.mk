@@ -76,8 +76,20 @@ godot-ext: $(GODOT_EXT)
 # The scripted headless test, then the test scene opened in the headless
 # editor; bindings/godot/test/run_test.sh prepares a throw-away project
 # copy and decides from the output (see check_log.sh).
-test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG)
-	@GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) sh $(GODOT_DIR)/test/run_test.sh \
+# The skinned-character check needs the generated body of the graph and
+# smg-synth's poses along the same path (see test/test_skinned.gd).
+GODOT_BODY_GLTF := $(GODOT_BUILD)/body.gltf
+GODOT_SKINNED_BVH := $(GODOT_BUILD)/skinned.bvh
+$(GODOT_BODY_GLTF): $(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG)
+	@mkdir -p $(dir $@)
+	$(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG) $@
+$(GODOT_SKINNED_BVH): $(BUILD)/smg-synth $(GODOT_DEFAULT_SMG) $(GODOT_DIR)/test/skinned_path.txt
+	@mkdir -p $(dir $@)
+	$(BUILD)/smg-synth -g $(GODOT_DEFAULT_SMG) -p $(GODOT_DIR)/test/skinned_path.txt --seconds 8 --fps 30 -o $@
+
+test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_BODY_GLTF) $(GODOT_SKINNED_BVH)
+	@GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) GODOT_BODY=$(GODOT_BODY_GLTF) \
+		GODOT_BVH=$(GODOT_SKINNED_BVH) sh $(GODOT_DIR)/test/run_test.sh \
 		$(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_TEST_PROJ) $(GODOT_TEST_LOG) $(GODOT_TEST_EDITOR_LOG)
 
 # The same scripted test with the extension and libsmg built with
