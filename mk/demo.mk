@@ -100,5 +100,7 @@ demo-pictures: $(DEMO_BIN) $(BUILD)/smg-bake
 	  --frames 515 --width 1280 --height 720 --screenshot docs/img/demo-walk-run-punch.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/s-curve.txt \
 	  --frames 960 --width 1280 --height 720 --screenshot docs/img/demo-s-curve.png
+	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/closeup.txt \
+	  --frames 515 --width 1280 --height 540 --screenshot docs/img/demo-skinned.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/crowd.txt \
 	  --characters 100 --frames 600 --width 1280 --height 720 --screenshot docs/img/demo-crowd.png
