@@ -12,6 +12,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -56,15 +57,17 @@ void test_blob(const char* path) {
   BodySkeleton sk;
   BodyMesh mesh;
   std::string err;
+  auto t0 = std::chrono::steady_clock::now();
   bool ok = body_skeleton_from_graph(g, &sk, &err) && build_body(sk, kBodyCellsPerHeight, &mesh, &err);
+  double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   check(ok, name + "body built " + err);
   if (!ok) {
     smg_graph_destroy(g);
     return;
   }
   const size_t nj = sk.parent.size(), nv = mesh.vertices.size();
-  std::printf("  %zu joints, %zu vertices, %zu triangles, rest height %.2f m\n", nj, nv, mesh.indices.size() / 3,
-              double(mesh.height));
+  std::printf("  %zu joints, %zu vertices, %zu triangles, rest height %.2f m, built in %.1f ms\n", nj, nv,
+              mesh.indices.size() / 3, double(mesh.height), build_ms);
 
   // --- well formed ---
   bool indices_ok = mesh.indices.size() % 3 == 0 && mesh.indices.size() >= 3000;  // 1000 triangles
