@@ -12,7 +12,9 @@
 //  * limb bones are round cones whose radius at a joint grows with the
 //    length of the limb still hanging below it (thick thighs, thin wrists),
 //    thinner in the upper body;
-//  * the highest leaf gets an ellipsoid head.
+//  * the highest leaf gets an ellipsoid head;
+//  * the soles are cut flat at the lowest joint, where the runtime's foot
+//    contacts put the floor.
 // Bone p -> c is driven by joint p (the runtime rotates the segment with
 // p's rotation). Vertices take the joints of the bones they lie closest to;
 // near a joint two bones are about as close, which blends the weights.

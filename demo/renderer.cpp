@@ -560,5 +560,4 @@ void Renderer::end() {
   glBindVertexArray(0);
   glUseProgram(0);
   last_instances_ = int(spheres_.size() + cylinders_.size());
-  last_bodies_ = int(body_colours_.size());
 }

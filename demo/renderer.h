@@ -45,7 +45,7 @@ class Renderer {
   void end();
 
   int instance_count() const { return last_instances_; }
-  int body_count() const { return last_bodies_; }
+  bool has_body() const { return body_index_count_ > 0; }
 
  private:
   struct Mesh {
@@ -69,7 +69,6 @@ class Renderer {
   int body_index_count_ = 0, body_joints_ = 0, max_body_instances_ = 0;
   std::vector<glm::vec4> body_rows_;
   std::vector<BodyColours> body_colours_;
-  int last_bodies_ = 0;
 
   unsigned lit_program_ = 0, ground_program_ = 0, flat_program_ = 0;
   Mesh sphere_, cylinder_;

@@ -187,7 +187,7 @@ void draw_scene(Renderer& r, const World& world, const SceneView& view) {
   }
 
   // Strobe trail of character 0 (Fig. 4 of the paper).
-  const bool bodies = !view.show_skeleton && !world.body().indices.empty();
+  const bool bodies = !view.show_skeleton && r.has_body();
   std::vector<glm::mat4> skin;
   for (const TrailPose& t : world.trail()) {
     if (bodies) body(r, world, t.matrices, t.style, t.action, 0.45f, &skin);
