@@ -272,9 +272,12 @@ void polygonise(const Shape& s, float cell, BodyMesh* out) {
     const glm::vec3 &pa = out->vertices[size_t(a)].position, &pb = out->vertices[size_t(b)].position,
                     &pc = out->vertices[size_t(c)].position;
     glm::vec3 n = glm::cross(pb - pa, pc - pa);
-    if (!(glm::dot(n, n) > 1e-14f)) return;  // degenerate: no facing to give it
     glm::vec3 outward = out->vertices[size_t(a)].normal + out->vertices[size_t(b)].normal + out->vertices[size_t(c)].normal;
-    if (glm::dot(n, outward) < 0.0f) std::swap(b, c);
+    // Degenerate or edge-on to the surface (a sliver where the grid cuts
+    // the flat soles): no facing to give it, and nothing to see.
+    float facing = glm::dot(n, outward);
+    if (!(std::fabs(facing) > 1e-3f * glm::length(n) * glm::length(outward))) return;
+    if (facing < 0.0f) std::swap(b, c);
     out->indices.insert(out->indices.end(), {uint32_t(a), uint32_t(b), uint32_t(c)});
   };
   // Edges along axis a from grid point (i, j, k); the cells around it are

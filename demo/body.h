@@ -43,6 +43,8 @@ struct BodyMesh {
 // triangles for a human, smooth enough close up and light enough for a
 // crowd of 50 on a software rasteriser.
 constexpr int kBodyCellsPerHeight = 40;
+// Half that for bodies small on screen (crowds): ~0.9k triangles.
+constexpr int kBodyCoarseCellsPerHeight = 20;
 
 // Builds the body. cells_per_height sets the grid resolution (cells over
 // the skeleton's height). Fails with a message for an empty or

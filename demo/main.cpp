@@ -409,7 +409,7 @@ int main(int argc, char** argv) {
   if (app.world.body().indices.empty()) {
     std::fprintf(stderr, "smg-demo: no skinned body, showing skeletons (%s)\n", app.world.body_error().c_str());
     app.view.show_skeleton = true;
-  } else if (!app.renderer.set_body(app.world.body(), &error)) {
+  } else if (!app.renderer.set_body(app.world.body(), app.world.coarse_body(), &error)) {
     std::fprintf(stderr, "smg-demo: %s; showing skeletons\n", error.c_str());
     app.view.show_skeleton = true;
   }

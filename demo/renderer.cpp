@@ -339,55 +339,67 @@ void Renderer::shutdown() {
   glDeleteProgram(ground_program_);
   glDeleteProgram(flat_program_);
   glDeleteProgram(body_program_);
-  glDeleteVertexArrays(1, &body_vao_);
-  for (unsigned b : {body_vbo_, body_ibo_, body_instance_vbo_, joint_tbo_}) glDeleteBuffers(1, &b);
+  for (BodyLod& lod : lods_) {
+    glDeleteVertexArrays(1, &lod.vao);
+    for (unsigned b : {lod.vbo, lod.ibo, lod.instance_vbo}) glDeleteBuffers(1, &b);
+  }
+  glDeleteBuffers(1, &joint_tbo_);
   glDeleteTextures(1, &joint_texture_);
 }
 
-bool Renderer::set_body(const BodyMesh& mesh, std::string* error) {
-  if (!body_vao_) {
-    glGenVertexArrays(1, &body_vao_);
-    glGenBuffers(1, &body_vbo_);
-    glGenBuffers(1, &body_ibo_);
-    glGenBuffers(1, &body_instance_vbo_);
+bool Renderer::set_body(const BodyMesh& detailed, const BodyMesh& coarse, std::string* error) {
+  const BodyMesh* meshes[2] = {&detailed, &coarse};
+  for (int l = 0; l < 2; ++l) {
+    const BodyMesh& mesh = *meshes[l];
+    BodyLod& lod = lods_[l];
+    if (!lod.vao) {
+      glGenVertexArrays(1, &lod.vao);
+      glGenBuffers(1, &lod.vbo);
+      glGenBuffers(1, &lod.ibo);
+      glGenBuffers(1, &lod.instance_vbo);
+    }
+    glBindVertexArray(lod.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, lod.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(BodyVertex)), mesh.vertices.data(),
+                 GL_STATIC_DRAW);
+    const GLsizei stride = sizeof(BodyVertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribIPointer(2, 4, GL_UNSIGNED_SHORT, stride, reinterpret_cast<void*>(offsetof(BodyVertex, joints)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, weights)));
+    glEnableVertexAttribArray(4);
+    glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, material)));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, lod.ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, lod.instance_vbo);
+    for (int c = 0; c < 2; ++c) {
+      glEnableVertexAttribArray(GLuint(5 + c));
+      glVertexAttribPointer(GLuint(5 + c), 4, GL_FLOAT, GL_FALSE, sizeof(BodyColours),
+                            reinterpret_cast<void*>(sizeof(glm::vec4) * size_t(c)));
+      glVertexAttribDivisor(GLuint(5 + c), 1);
+    }
+    glBindVertexArray(0);
+    lod.index_count = int(mesh.indices.size());
+  }
+  if (!joint_tbo_) {
     glGenBuffers(1, &joint_tbo_);
     glGenTextures(1, &joint_texture_);
   }
-  glBindVertexArray(body_vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, body_vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(BodyVertex)), mesh.vertices.data(),
-               GL_STATIC_DRAW);
-  const GLsizei stride = sizeof(BodyVertex);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, position)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, normal)));
-  glEnableVertexAttribArray(2);
-  glVertexAttribIPointer(2, 4, GL_UNSIGNED_SHORT, stride, reinterpret_cast<void*>(offsetof(BodyVertex, joints)));
-  glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, weights)));
-  glEnableVertexAttribArray(4);
-  glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, material)));
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, body_ibo_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
-               GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, body_instance_vbo_);
-  for (int c = 0; c < 2; ++c) {
-    glEnableVertexAttribArray(GLuint(5 + c));
-    glVertexAttribPointer(GLuint(5 + c), 4, GL_FLOAT, GL_FALSE, sizeof(BodyColours),
-                          reinterpret_cast<void*>(sizeof(glm::vec4) * size_t(c)));
-    glVertexAttribDivisor(GLuint(5 + c), 1);
-  }
-  glBindVertexArray(0);
-  body_index_count_ = int(mesh.indices.size());
-  body_joints_ = int(mesh.inverse_bind.size());
+  body_joints_ = int(detailed.inverse_bind.size());
+  body_height_ = detailed.height;
   GLint max_texels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
   max_body_instances_ = body_joints_ > 0 ? int(max_texels / (3 * body_joints_)) : 0;
-  if (max_body_instances_ < 1 || glGetError() != GL_NO_ERROR) {
-    *error = "cannot upload the body mesh (" + std::to_string(body_joints_) + " joints, texture buffers of " +
+  if (max_body_instances_ < 1 || coarse.inverse_bind.size() != detailed.inverse_bind.size() ||
+      glGetError() != GL_NO_ERROR) {
+    *error = "cannot upload the body meshes (" + std::to_string(body_joints_) + " joints, texture buffers of " +
              std::to_string(max_texels) + " texels)";
-    body_index_count_ = 0;
+    for (BodyLod& lod : lods_) lod.index_count = 0;
     return false;
   }
   return true;
@@ -396,30 +408,40 @@ bool Renderer::set_body(const BodyMesh& mesh, std::string* error) {
 void Renderer::begin(int width, int height, const OrbitCamera& camera) {
   width_ = width;
   height_ = height;
-  view_proj_ = camera.projection(float(width) / float(height > 0 ? height : 1)) * camera.view();
+  glm::mat4 projection = camera.projection(float(width) / float(height > 0 ? height : 1));
+  proj_y_ = projection[1][1];
+  view_proj_ = projection * camera.view();
   eye_ = camera.eye();
   target_ = camera.target;
   spheres_.clear();
   shadow_spheres_.clear();
   cylinders_.clear();
   decals_.clear();
-  body_rows_.clear();
-  body_colours_.clear();
+  for (BodyLod& lod : lods_) {
+    lod.rows.clear();
+    lod.colours.clear();
+  }
 }
 
-void Renderer::body(const glm::mat4* skin, glm::vec3 lower, glm::vec3 upper, float ghost) {
-  if (body_index_count_ == 0) return;
+void Renderer::body(const glm::mat4* skin, glm::vec3 centre, glm::vec3 lower, glm::vec3 upper, float ghost) {
+  if (!has_body()) return;
+  // Bodies under kCoarseBelow pixels tall take the coarse mesh, whose
+  // cells are then a few pixels: the same picture for half the work.
+  const float kCoarseBelow = 150.0f;
+  glm::vec4 clip = view_proj_ * glm::vec4(centre, 1.0f);
+  float pixels = clip.w > 1e-4f ? body_height_ * proj_y_ / clip.w * 0.5f * float(height_) : 1e9f;
+  BodyLod& lod = lods_[pixels < kCoarseBelow ? 1 : 0];
   for (int j = 0; j < body_joints_; ++j) {
     glm::mat4 t = glm::transpose(skin[j]);  // rows; the 4th is (0 0 0 1)
-    body_rows_.insert(body_rows_.end(), {t[0], t[1], t[2]});
+    lod.rows.insert(lod.rows.end(), {t[0], t[1], t[2]});
   }
-  body_colours_.push_back({glm::vec4(lower, 0.0f), glm::vec4(upper, ghost)});
+  lod.colours.push_back({glm::vec4(lower, 0.0f), glm::vec4(upper, ghost)});
 }
 
-// Draws every queued body, as many per instanced draw as the texture
-// buffer holds.
+// Draws every queued body, per level of detail as many per instanced draw
+// as the texture buffer holds.
 void Renderer::draw_bodies(bool shadow) {
-  if (body_colours_.empty()) return;
+  if (lods_[0].colours.empty() && lods_[1].colours.empty()) return;
   glUseProgram(body_program_);
   glUniformMatrix4fv(loc(body_program_, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj_));
   glUniform3fv(loc(body_program_, "u_light_dir"), 1, glm::value_ptr(kLightDir));
@@ -433,17 +455,19 @@ void Renderer::draw_bodies(bool shadow) {
   glUniform1i(loc(body_program_, "u_joints"), 0);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, joint_texture_);
-  glBindVertexArray(body_vao_);
-  const size_t total = body_colours_.size();
-  for (size_t first = 0; first < total; first += size_t(max_body_instances_)) {
-    size_t count = std::min(total - first, size_t(max_body_instances_));
-    glBindBuffer(GL_TEXTURE_BUFFER, joint_tbo_);
-    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(count * size_t(body_joints_) * 3 * sizeof(glm::vec4)),
-                 &body_rows_[first * size_t(body_joints_) * 3], GL_STREAM_DRAW);
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, joint_tbo_);
-    glBindBuffer(GL_ARRAY_BUFFER, body_instance_vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(BodyColours)), &body_colours_[first], GL_STREAM_DRAW);
-    glDrawElementsInstanced(GL_TRIANGLES, body_index_count_, GL_UNSIGNED_INT, nullptr, GLsizei(count));
+  for (const BodyLod& lod : lods_) {
+    glBindVertexArray(lod.vao);
+    const size_t total = lod.colours.size();
+    for (size_t first = 0; first < total; first += size_t(max_body_instances_)) {
+      size_t count = std::min(total - first, size_t(max_body_instances_));
+      glBindBuffer(GL_TEXTURE_BUFFER, joint_tbo_);
+      glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(count * size_t(body_joints_) * 3 * sizeof(glm::vec4)),
+                   &lod.rows[first * size_t(body_joints_) * 3], GL_STREAM_DRAW);
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, joint_tbo_);
+      glBindBuffer(GL_ARRAY_BUFFER, lod.instance_vbo);
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(BodyColours)), &lod.colours[first], GL_STREAM_DRAW);
+      glDrawElementsInstanced(GL_TRIANGLES, lod.index_count, GL_UNSIGNED_INT, nullptr, GLsizei(count));
+    }
   }
   glBindTexture(GL_TEXTURE_BUFFER, 0);
 }

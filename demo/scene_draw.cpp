@@ -122,7 +122,8 @@ void body(Renderer& r, const World& world, const std::vector<float>& matrices, u
   glm::vec3 upper = action == 0 ? lower : world.action_colour_of(action);
   skin->resize(world.body().inverse_bind.size());
   body_skin_matrices(world.body(), matrices.data(), skin->data());
-  r.body(skin->data(), lower, upper, ghost);
+  glm::vec3 root(matrices[12], matrices[13], matrices[14]);
+  r.body(skin->data(), root, lower, upper, ghost);
 }
 
 }  // namespace

@@ -113,8 +113,11 @@ bool World::load(const std::string& path, std::string* error) {
   // A bad body only costs the skinned view; the skeleton view still works.
   BodySkeleton skeleton;
   if (!body_skeleton_from_graph(graph_, &skeleton, &body_error_) ||
-      !build_body(skeleton, kBodyCellsPerHeight, &body_, &body_error_))
+      !build_body(skeleton, kBodyCellsPerHeight, &body_, &body_error_) ||
+      !build_body(skeleton, kBodyCoarseCellsPerHeight, &coarse_body_, &body_error_)) {
     body_ = BodyMesh();
+    coarse_body_ = BodyMesh();
+  }
   return true;
 }
 

@@ -119,9 +119,10 @@ class World {
   glm::vec3 style_colour_of(uint32_t s) const;
   glm::vec3 action_colour_of(uint32_t a) const;
   const JointLayout& joints() const { return layout_; }
-  // The body generated from the graph's skeleton; empty (no triangles)
-  // when it could not be made, body_error() says why.
+  // The body generated from the graph's skeleton, detailed and coarse;
+  // empty (no triangles) when it could not be made, body_error() says why.
   const BodyMesh& body() const { return body_; }
+  const BodyMesh& coarse_body() const { return coarse_body_; }
   const std::string& body_error() const { return body_error_; }
   const std::vector<Character>& characters() const { return characters_; }
   const smg_graph_info& info() const { return info_; }
@@ -150,7 +151,7 @@ class World {
   smg_graph_info info_{};
   uint32_t joint_count_ = 0, style_count_ = 0, action_count_ = 0;
   JointLayout layout_;
-  BodyMesh body_;
+  BodyMesh body_, coarse_body_;
   std::string body_error_;
   std::vector<Character> characters_;
   Polyline path_;

@@ -47,6 +47,42 @@ void local_fk(const BodySkeleton& sk, const float* root, const float* rot, std::
   }
 }
 
+// Indices in range, at most 4 sorted weights summing to 1 on valid joints,
+// unit normals, outward winding.
+void well_formed(const std::string& name, const BodyMesh& mesh, size_t nj, size_t min_triangles) {
+  const size_t nv = mesh.vertices.size();
+  bool indices_ok = mesh.indices.size() % 3 == 0 && mesh.indices.size() >= 3 * min_triangles;
+  for (uint32_t i : mesh.indices) indices_ok = indices_ok && i < nv;
+  bool weights_ok = true;
+  for (const BodyVertex& v : mesh.vertices) {
+    float sum = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+      weights_ok = weights_ok && v.joints[k] < nj && v.weights[k] >= 0.0f;
+      sum += v.weights[k];
+      if (k > 0) weights_ok = weights_ok && v.weights[k] <= v.weights[k - 1];
+    }
+    weights_ok = weights_ok && std::fabs(sum - 1.0f) < 1e-5f && std::isfinite(v.position.x) &&
+                 std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f;
+  }
+  check(indices_ok, name + "at least " + std::to_string(min_triangles) + " triangles, indices in range");
+  check(weights_ok, name + "weights: at most 4, sorted, sum 1, valid joints; unit normals");
+  // Outward: the enclosed volume is positive and triangle winding agrees
+  // with the vertex normals.
+  double volume = 0.0;
+  size_t agree = 0;
+  for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+    const BodyVertex &a = mesh.vertices[mesh.indices[t]], &b = mesh.vertices[mesh.indices[t + 1]],
+                     &c = mesh.vertices[mesh.indices[t + 2]];
+    volume += double(glm::dot(a.position, glm::cross(b.position, c.position))) / 6.0;
+    glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+    agree += glm::dot(n, a.normal + b.normal + c.normal) > 0.0f;
+  }
+  std::printf("  %zu vertices, volume %.4f m^3, %zu of %zu triangles wound with their normals\n", nv, volume, agree,
+              mesh.indices.size() / 3);
+  check(volume > 0.01 * double(mesh.height * mesh.height * mesh.height) && agree == mesh.indices.size() / 3,
+        name + "normals outward (positive volume, every triangle wound with its normals)");
+}
+
 void test_blob(const char* path) {
   std::string name = std::string(path) + ": ";
   smg_graph* g = nullptr;
@@ -69,37 +105,10 @@ void test_blob(const char* path) {
   std::printf("  %zu joints, %zu vertices, %zu triangles, rest height %.2f m, built in %.1f ms\n", nj, nv,
               mesh.indices.size() / 3, double(mesh.height), build_ms);
 
-  // --- well formed ---
-  bool indices_ok = mesh.indices.size() % 3 == 0 && mesh.indices.size() >= 3000;  // 1000 triangles
-  for (uint32_t i : mesh.indices) indices_ok = indices_ok && i < nv;
-  bool weights_ok = true;
-  for (const BodyVertex& v : mesh.vertices) {
-    float sum = 0.0f;
-    for (int k = 0; k < 4; ++k) {
-      weights_ok = weights_ok && v.joints[k] < nj && v.weights[k] >= 0.0f;
-      sum += v.weights[k];
-      if (k > 0) weights_ok = weights_ok && v.weights[k] <= v.weights[k - 1];
-    }
-    weights_ok = weights_ok && std::fabs(sum - 1.0f) < 1e-5f && std::isfinite(v.position.x) &&
-                 std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f;
-  }
-  check(indices_ok, name + "at least 1000 triangles, indices in range");
-  check(weights_ok, name + "weights: at most 4, sorted, sum 1, valid joints; unit normals");
-  // Outward: the enclosed volume is positive and triangle winding agrees
-  // with the vertex normals.
-  double volume = 0.0;
-  size_t agree = 0;
-  for (size_t t = 0; t < mesh.indices.size(); t += 3) {
-    const BodyVertex &a = mesh.vertices[mesh.indices[t]], &b = mesh.vertices[mesh.indices[t + 1]],
-                     &c = mesh.vertices[mesh.indices[t + 2]];
-    volume += double(glm::dot(a.position, glm::cross(b.position, c.position))) / 6.0;
-    glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
-    agree += glm::dot(n, a.normal + b.normal + c.normal) > 0.0f;
-  }
-  std::printf("  volume %.4f m^3, %zu of %zu triangles wound with their normals\n", volume, agree,
-              mesh.indices.size() / 3);
-  check(volume > 0.01 * double(mesh.height * mesh.height * mesh.height) && agree == mesh.indices.size() / 3,
-        name + "normals outward (positive volume, every triangle wound with its normals)");
+  well_formed(name + "detailed: ", mesh, nj, 1000);
+  BodyMesh coarse;
+  check(build_body(sk, kBodyCoarseCellsPerHeight, &coarse, &err), name + "coarse body built " + err);
+  well_formed(name + "coarse: ", coarse, nj, 300);
 
   // --- generality: the same rig in centimetres under a floor-level root
   // bone (as many game rigs have) gets the same body, scaled, and the
