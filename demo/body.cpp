@@ -6,7 +6,7 @@
 //    further than 0.2 S (legs and spine at the pelvis, arms at the chest;
 //    fingers at a hand do not count). Joints on the chain between branching
 //    joints form the torso; joints above the lowest branching joint (a
-//    floor-level root above the pelvis) carry no geometry.
+//    floor-level root bone above the pelvis) carry no geometry.
 //  * torso bones get one radius from the hip width (the spread of the
 //    limbs leaving the lowest branching joint), flattened front to back;
 //  * limb bones are round cones whose radius at a joint grows with the
@@ -101,7 +101,7 @@ bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S
     torso[j] = branching[j] || (below_branch[j] && above_branch[j]);
     carrier[j] = above_branch[j] && !branching[j] && !below_branch[j];
   }
-  // The lowest branching joint (the pelvis of a human).
+  // The first branching joint down the hierarchy (the pelvis of a human).
   int pelvis = -1;
   for (size_t j = 0; j < n && pelvis < 0; ++j)
     if (branching[j]) pelvis = int(j);
