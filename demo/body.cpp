@@ -11,7 +11,7 @@
 //    limbs leaving the lowest branching joint), flattened front to back;
 //  * limb bones are round cones whose radius at a joint grows with the
 //    length of the limb still hanging below it (thick thighs, thin wrists),
-//    thinner in the upper body;
+//    thinner in the upper body, never thinner than 0.6 grid cells;
 //  * the highest leaf gets an ellipsoid head;
 //  * the soles are cut flat at the lowest joint, where the runtime's foot
 //    contacts put the floor.
@@ -72,7 +72,8 @@ glm::vec3 gradient(const Shape& s, glm::vec3 x, float h) {
 }
 
 // The shape of the body around the rest pose (rules in the file comment).
-bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S, Shape* shape, std::string* error) {
+bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S, float min_radius, Shape* shape,
+                std::string* error) {
   const size_t n = P.size();
   std::vector<std::vector<int>> children(n);
   for (size_t j = 1; j < n; ++j)
@@ -141,7 +142,7 @@ bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S
       radius[j] = torso_r;
     } else {
       float r = 0.024f * S + 0.05f * reach[j];
-      radius[j] = std::min(r * (sk.upper[j] ? 0.8f : 1.0f), 0.85f * torso_r);
+      radius[j] = std::max(std::min(r * (sk.upper[j] ? 0.8f : 1.0f), 0.85f * torso_r), min_radius);
     }
   }
   for (size_t c = 0; c < n; ++c) {
@@ -343,12 +344,15 @@ bool build_body(const BodySkeleton& sk, int cells_per_height, BodyMesh* out, std
     *error = "body: the rest pose has no extent (all joints at one point)";
     return false;
   }
+  // Limbs thinner than a grid cell would fall apart on the grid: a coarse
+  // body gets slightly thicker wrists instead of missing hands.
+  const float cell = S / float(cells_per_height);
   Shape shape;
-  if (!make_shape(sk, P, S, &shape, error)) return false;
+  if (!make_shape(sk, P, S, 0.6f * cell, &shape, error)) return false;
   // The runtime plants the lowest joints (toes) on the floor, so the rest
   // pose's floor is at the lowest joint: cut the soles flat there.
   shape.floor = lo.y;
-  polygonise(shape, S / float(cells_per_height), out);
+  polygonise(shape, cell, out);
   if (out->indices.empty()) {
     *error = "body: the surface produced no triangles";
     return false;
