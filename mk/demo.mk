@@ -88,8 +88,9 @@ demo-cmu: $(DEMO_BIN) $(BUILD)/smg-bake
 # clicks, drags and deletes through the real input handler; robustness.sh
 # feeds bad graphs, sizes, scripts and a GL 3.0-only context.
 DEMO_TEST_DIR := $(BUILD)/tests/demo
-test-demo: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_DEFAULT_BLOB)
-	@sh demo/tools/test_demo.sh $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_DEFAULT_BLOB) $(DEMO_TEST_DIR) $(DEMO_BODYTEST)
+test-demo: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF) $(DEMO_DEFAULT_BLOB)
+	@sh demo/tools/test_demo.sh $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_DEFAULT_BLOB) $(DEMO_TEST_DIR) $(DEMO_BODYTEST) \
+	  $(DEMO_BODYGLTF)
 
 TEST_TARGETS += test-demo
 

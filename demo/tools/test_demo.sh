@@ -2,13 +2,14 @@
 # test_demo.sh - the demo's smoke test (make test-demo): scripted drawings
 # rendered headless on one private Xvfb server with Mesa's software GL,
 # checked by smg-demo-pngcheck; then robustness.sh. See docs/demo.md.
-# usage: test_demo.sh SMG_DEMO PNGCHECK GOOD_BLOB SCRATCH_DIR BODYTEST
+# usage: test_demo.sh SMG_DEMO PNGCHECK GOOD_BLOB SCRATCH_DIR BODYTEST BODYGLTF
 set -eu
 demo=$1
 check=$2
 blob=$3
 dir=$4
 bodytest=$5
+bodygltf=$6
 mkdir -p "$dir"
 rm -f "$dir"/*.png "$dir"/*.log
 
@@ -34,8 +35,21 @@ echo "== demo smoke test (headless, Xvfb $DISPLAY + Mesa llvmpipe)"
 run() { echo "+ $*"; "$@"; }
 small="--no-hud --width 640 --height 360"
 
-# 0. The generated body: mesh, bind pose, skinning matrices vs own FK + LBS.
+# 0. The generated body: mesh, bind pose, skinning matrices vs own FK + LBS;
+# the glTF writer writes it, and refuses a bad blob or an unwritable file.
 run "$bodytest" "$blob"
+run "$bodygltf" "$blob" "$dir/body.gltf"
+head -c 2048 /dev/urandom >"$dir/garbage.smg"
+for bad in "$dir/garbage.smg $dir/garbage.gltf" "$blob $dir/no-such-dir/body.gltf"; do
+  set +e
+  "$bodygltf" $bad 2>"$dir/gltf.err"
+  rc=$?
+  set -e
+  [ $rc -eq 1 ] && grep -q "smg-body-gltf: " "$dir/gltf.err" ||
+    { echo "test-demo: FAIL: smg-body-gltf $bad: exit $rc"; cat "$dir/gltf.err"; exit 1; }
+  echo "test-demo: ok   smg-body-gltf $bad: exit 1, \"$(head -1 "$dir/gltf.err")\""
+done
+rm -f "$dir/garbage.smg" "$dir/gltf.err"
 # 1. A drawn path and the walking skinned character are visible, its head
 # and hands where its skeleton projects.
 run "$demo" --graph "$blob" --script demo/scripts/smoke.txt --frames 150 $small --screenshot "$dir/smoke.png" \
