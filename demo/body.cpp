@@ -180,23 +180,26 @@ bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S
   return true;
 }
 
-// Up to 4 joints by closeness of their bones to x, weights sum to 1.
+// Up to 4 joints by closeness of their bones to x, weights sum to 1; the
+// material likewise.
 void weigh(const Shape& s, float S, BodyVertex* v) {
   const float sigma = 0.025f * S;
   std::vector<float> d(s.prims.size());
   float dmin = 1e9f;
-  size_t nearest = 0;
   for (size_t i = 0; i < s.prims.size(); ++i) {
     d[i] = prim_distance(s, s.prims[i], v->position);
-    if (d[i] < dmin) {
-      dmin = d[i];
-      nearest = i;
-    }
+    dmin = std::min(dmin, d[i]);
   }
+  // The same falloff blends the materials, so a sleeve or a waistline is
+  // a short gradient rather than a jagged edge along the triangles.
   std::map<int, float> by_joint;
+  float material = 0.0f, total = 0.0f;
   for (size_t i = 0; i < s.prims.size(); ++i) {
     float t = 1.0f - (d[i] - dmin) / sigma;
-    if (t > 0.0f) by_joint[s.prims[i].joint] += t * t;
+    if (t <= 0.0f) continue;
+    by_joint[s.prims[i].joint] += t * t;
+    material += t * t * float(s.prims[i].material);
+    total += t * t;
   }
   std::vector<std::pair<float, int>> w;
   for (const auto& kv : by_joint) w.push_back({kv.second, kv.first});
@@ -211,7 +214,7 @@ void weigh(const Shape& s, float S, BodyVertex* v) {
     v->joints[k] = used ? uint16_t(w[size_t(k)].second) : 0;
     v->weights[k] = used ? w[size_t(k)].first / sum : 0.0f;
   }
-  v->material = float(s.prims[nearest].material);
+  v->material = material / total;
 }
 
 // Surface nets: one vertex per grid cell the surface crosses (the mean of

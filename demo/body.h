@@ -21,7 +21,8 @@ struct BodySkeleton {
   std::vector<uint8_t> upper;        // 1 = upper body (thinner limbs)
 };
 
-// What a vertex is dressed in: lower body, upper body, bare skin.
+// What a vertex is dressed in: lower body, upper body, bare skin (in this
+// order on the body, so a blend of neighbours is a value in between).
 enum BodyMaterial : uint8_t { kBodyLower = 0, kBodyUpper = 1, kBodySkin = 2 };
 
 struct BodyVertex {
@@ -29,7 +30,7 @@ struct BodyVertex {
   glm::vec3 normal;     // outward, unit
   uint16_t joints[4];   // influences, weights sorted descending
   float weights[4];     // sum to 1; unused slots are 0 with joint 0
-  float material;       // BodyMaterial
+  float material;       // 0..2: BodyMaterial, blended near boundaries
 };
 
 struct BodyMesh {

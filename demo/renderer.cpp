@@ -65,8 +65,8 @@ void main() {
 // matrix is stored as its 3 affine rows (3 texels); instance i's joints
 // start at texel 3 * i * u_joint_count of u_joints. Blending the rows
 // first skins the position with 3 dot products.
-// Colours: lower body, upper body (per instance) or skin, by the vertex's
-// material, lightened by the instance's ghost factor (strobe trail).
+// Colours: lower body, upper body (per instance) and skin, blended by the
+// vertex's material (0..2), lightened by the instance's ghost factor (strobe trail).
 const char* kBodyVS = R"(#version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -96,7 +96,7 @@ void main() {
   vec4 w = u_flatten * vec4(dot(r0, p), dot(r1, p), dot(r2, p), 1.0);
   v_world = w.xyz / w.w;
   v_normal = vec3(dot(r0.xyz, a_normal), dot(r1.xyz, a_normal), dot(r2.xyz, a_normal));
-  vec3 c = a_material < 0.5 ? i_lower.rgb : (a_material < 1.5 ? i_upper.rgb : u_skin);
+  vec3 c = mix(mix(i_lower.rgb, i_upper.rgb, clamp(a_material, 0.0, 1.0)), u_skin, clamp(a_material - 1.0, 0.0, 1.0));
   v_colour = vec4(c + (vec3(1.0) - c) * i_upper.a, 1.0);
   gl_Position = u_view_proj * w;
 }

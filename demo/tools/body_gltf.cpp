@@ -10,6 +10,7 @@
 #include "../body.h"
 #include "../body_graph.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -115,7 +116,9 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 4; ++k) {
       jnt.push_back(v.joints[k]);
       wts.push_back(v.weights[k]);
-      col.push_back(kColours[int(v.material)][k]);
+      int m = std::min(int(v.material), 1);  // blend between materials m and m + 1
+      float f = std::min(std::max(v.material - float(m), 0.0f), 1.0f);
+      col.push_back(kColours[m][k] + (kColours[m + 1][k] - kColours[m][k]) * f);
     }
     lo = glm::min(lo, v.position);
     hi = glm::max(hi, v.position);

@@ -62,10 +62,10 @@ void well_formed(const std::string& name, const BodyMesh& mesh, size_t nj, size_
       if (k > 0) weights_ok = weights_ok && v.weights[k] <= v.weights[k - 1];
     }
     weights_ok = weights_ok && std::fabs(sum - 1.0f) < 1e-5f && std::isfinite(v.position.x) &&
-                 std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f;
+                 std::fabs(glm::length(v.normal) - 1.0f) < 1e-3f && v.material >= 0.0f && v.material <= 2.0f;
   }
   check(indices_ok, name + "at least " + std::to_string(min_triangles) + " triangles, indices in range");
-  check(weights_ok, name + "weights: at most 4, sorted, sum 1, valid joints; unit normals");
+  check(weights_ok, name + "weights: at most 4, sorted, sum 1, valid joints; unit normals; materials 0..2");
   // Outward: the enclosed volume is positive and triangle winding agrees
   // with the vertex normals.
   double volume = 0.0;

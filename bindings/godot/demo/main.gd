@@ -265,7 +265,7 @@ func _screenshot(out: String) -> void:
 			_extend_path(pts[i - 1].lerp(pts[i], float(k) / n))
 	_add_marker("S", Vector3(0.5, 0, 4))
 	_add_marker("T", Vector3(5, 0, 6.5))
-	camera.transform = Transform3D(Basis(), Vector3(2.5, 3.2, 10.0)).looking_at(Vector3(2.5, 0.5, 3.5), Vector3.UP)
+	camera.transform = Transform3D(Basis(), Vector3(2.6, 2.3, 9.2)).looking_at(Vector3(2.6, 0.6, 4.2), Vector3.UP)
 	for i in 150:
 		await get_tree().process_frame
 	await RenderingServer.frame_post_draw
