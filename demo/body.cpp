@@ -1,7 +1,7 @@
 // body.cpp - the generated skinned body (see body.h).
 //
-// Shape rules, all relative to the skeleton's rest height S so that any rig
-// and scale works:
+// Shape rules, all relative to the height S of the bind pose (the rest pose
+// or a given pose, see body.h) so that any rig and scale works:
 //  * a joint is *branching* when two or more of its child subtrees reach
 //    further than 0.2 S (legs and spine at the pelvis, arms at the chest;
 //    fingers at a hand do not count). Joints on the chain between branching
@@ -83,6 +83,7 @@ bool make_shape(const BodySkeleton& sk, const std::vector<glm::vec3>& P, float S
   for (size_t j = n; j-- > 0;)
     for (int c : children[j]) reach[j] = std::max(reach[j], glm::length(sk.rest_offset[size_t(c)]) + reach[size_t(c)]);
   auto branch_reach = [&](int c) { return glm::length(sk.rest_offset[size_t(c)]) + reach[size_t(c)]; };
+  // (Bone lengths are the rest offsets' in any pose: FK is rigid.)
   std::vector<uint8_t> branching(n, 0), torso(n, 0), below_branch(n, 0), carrier(n, 0);
   for (size_t j = 0; j < n; ++j) {
     int limbs = 0;
@@ -313,7 +314,7 @@ void polygonise(const Shape& s, float cell, BodyMesh* out) {
 bool build_body(const BodySkeleton& sk, int cells_per_height, BodyMesh* out, std::string* error) {
   *out = BodyMesh();
   const size_t n = sk.parent.size();
-  if (n == 0 || sk.rest_offset.size() != n || sk.upper.size() != n) {
+  if (n == 0 || sk.rest_offset.size() != n || sk.upper.size() != n || (!sk.pose.empty() && sk.pose.size() != n)) {
     *error = "body: empty skeleton or mismatched joint arrays";
     return false;
   }
@@ -332,19 +333,23 @@ bool build_body(const BodySkeleton& sk, int cells_per_height, BodyMesh* out, std
       *error = "body: joint " + std::to_string(j) + " has parent " + std::to_string(p) + " (must come before it)";
       return false;
     }
-    P[j] = (p >= 0 ? P[size_t(p)] : glm::vec3(0.0f)) + sk.rest_offset[j];
+    P[j] = sk.pose.empty() ? (p >= 0 ? P[size_t(p)] : glm::vec3(0.0f)) + sk.rest_offset[j] : glm::vec3(sk.pose[j][3]);
+    if (!std::isfinite(P[j].x) || !std::isfinite(P[j].y) || !std::isfinite(P[j].z)) {
+      *error = "body: joint " + std::to_string(j) + " of the bind pose is not finite";
+      return false;
+    }
   }
   glm::vec3 lo(1e9f), hi(-1e9f);
   for (glm::vec3 p : P) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  // Rest height; a skeleton lying down still gets a body from its extent.
+  // Bind-pose height; a skeleton lying down still gets a body from its extent.
   float S = hi.y - lo.y;
   glm::vec3 extent = hi - lo;
   if (S < 0.25f * std::max(extent.x, extent.z)) S = std::max(std::max(extent.x, extent.y), extent.z);
   if (!(S > 1e-4f) || !std::isfinite(S)) {
-    *error = "body: the rest pose has no extent (all joints at one point)";
+    *error = "body: the bind pose has no extent (all joints at one point)";
     return false;
   }
   // Limbs thinner than a grid cell would fall apart on the grid: a coarse
@@ -352,7 +357,7 @@ bool build_body(const BodySkeleton& sk, int cells_per_height, BodyMesh* out, std
   const float cell = S / float(cells_per_height);
   Shape shape;
   if (!make_shape(sk, P, S, 0.6f * cell, &shape, error)) return false;
-  // The runtime plants the lowest joints (toes) on the floor, so the rest
+  // The runtime plants the lowest joints (toes) on the floor, so the bind
   // pose's floor is at the lowest joint: cut the soles flat there.
   shape.floor = lo.y;
   polygonise(shape, cell, out);
@@ -365,7 +370,7 @@ bool build_body(const BodySkeleton& sk, int cells_per_height, BodyMesh* out, std
   for (size_t j = 0; j < n; ++j) {
     glm::mat4 m(1.0f);
     m[3] = glm::vec4(-P[j], 1.0f);
-    out->inverse_bind[j] = m;
+    out->inverse_bind[j] = sk.pose.empty() ? m : glm::inverse(sk.pose[j]);
   }
   out->height = S;
   return true;

@@ -1,8 +1,8 @@
 // body.h - a smooth skinned body generated from any skeleton (no model
-// file): round cones around the bones of the rest pose and an ellipsoid
+// file): round cones around the bones of a bind pose and an ellipsoid
 // head, blended into one implicit surface, polygonised on a grid, each
 // vertex weighted to up to 4 joints by how close it lies to their bones.
-// Works from the hierarchy and rest offsets alone (no joint names), so any
+// Works from the hierarchy and joint positions alone (no joint names), so any
 // rig a blob carries gets a body. Knows nothing about OpenGL or libsmg.
 #pragma once
 
@@ -12,13 +12,17 @@
 #include <string>
 #include <vector>
 
-// The rest pose: every joint's local rotation is the identity, so joint j
-// sits at the sum of the rest offsets from the root down to j (the runtime's
-// FK with identity rotations).
+// The skeleton and the pose the body is built around (its bind pose): the
+// rest pose, where every joint's local rotation is the identity and joint j
+// sits at the sum of the rest offsets from the root down to j (the
+// runtime's FK with identity rotations), or `pose` when given. A T-pose
+// rest keeps the arms clear of the torso; rigs whose rest offsets live in
+// rotated joint frames have no upright rest pose and need `pose`.
 struct BodySkeleton {
   std::vector<int> parent;           // -1 for a root; parent[j] < j
   std::vector<glm::vec3> rest_offset;  // from the parent, metres
   std::vector<uint8_t> upper;        // 1 = upper body (thinner limbs)
+  std::vector<glm::mat4> pose;       // empty, or per joint its model matrix (rigid, upright, floor y = 0)
 };
 
 // What a vertex is dressed in: lower body, upper body, bare skin (in this
@@ -26,7 +30,7 @@ struct BodySkeleton {
 enum BodyMaterial : uint8_t { kBodyLower = 0, kBodyUpper = 1, kBodySkin = 2 };
 
 struct BodyVertex {
-  glm::vec3 position;   // rest pose, metres
+  glm::vec3 position;   // bind pose, metres
   glm::vec3 normal;     // outward, unit
   uint16_t joints[4];   // influences, weights sorted descending
   float weights[4];     // sum to 1; unused slots are 0 with joint 0
@@ -36,11 +40,11 @@ struct BodyVertex {
 struct BodyMesh {
   std::vector<BodyVertex> vertices;
   std::vector<uint32_t> indices;        // triangles, counter-clockwise outside
-  std::vector<glm::mat4> inverse_bind;  // per joint: inverse of its rest matrix
-  float height = 0.0f;                  // rest-pose joint height range, metres
+  std::vector<glm::mat4> inverse_bind;  // per joint: inverse of its bind-pose matrix
+  float height = 0.0f;                  // bind-pose joint height range, metres
 };
 
-// The resolution the demos use: 40 cells over the rest height gives ~3k
+// The resolution the demos use: 40 cells over the body's height gives ~3k
 // triangles for a human, smooth enough close up and light enough for a
 // crowd of 50 on a software rasteriser.
 constexpr int kBodyCellsPerHeight = 40;

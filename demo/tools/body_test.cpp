@@ -206,6 +206,56 @@ void test_blob(const char* path) {
   // The soles: the lowest point of the body over the walk is at the floor
   // (y = 0), neither floating nor sunk by more than 2.5 cm.
   check(std::fabs(lowest) < 0.025f, name + "feet meet the floor");
+
+  // --- a posed bind: rigs without an upright rest pose are built around a
+  // character's first pose; here that path is forced on this rig. The
+  // rest pose is chosen for it (upright), not for the same rig lying on
+  // its side ---
+  std::vector<float> first(nj * 16);
+  smg_character* c2 = nullptr;
+  bool first_ok = smg_character_create(g, nullptr, &c2) == SMG_OK &&
+                  smg_character_get_model_matrices(c2, SMG_SPACE_CHARACTER, first.data(), uint32_t(nj)) == SMG_OK;
+  if (c2) smg_character_destroy(c2);
+  BodySkeleton lying = sk;
+  for (glm::vec3& o : lying.rest_offset) o = glm::vec3(o.y, -o.x, o.z);  // 90 degrees about z
+  check(first_ok && sk.pose.empty() && body_rest_is_upright(sk, first.data()) &&
+            !body_rest_is_upright(lying, first.data()),
+        name + "the upright rest pose is the bind pose; a rig lying on its side would take the first pose");
+  BodySkeleton posed = sk;
+  for (size_t j = 0; j < nj; ++j) {
+    glm::mat4 m;
+    std::memcpy(&m[0][0], &first[j * 16], 16 * sizeof(float));
+    posed.pose.push_back(m);
+  }
+  BodyMesh pm;
+  bool posed_ok = build_body(posed, kBodyCellsPerHeight, &pm, &err);
+  check(posed_ok, name + "body built around the first pose " + err);
+  if (posed_ok) {
+    well_formed(name + "first-pose bind: ", pm, nj, 1000);
+    std::vector<glm::mat4> pskin(nj);
+    body_skin_matrices(pm, first.data(), pskin.data());
+    float e0 = 0.0f;
+    for (const BodyVertex& v : pm.vertices) e0 = std::max(e0, glm::length(body_skin_point(v, pskin.data()) - v.position));
+    // A later frame of the walking character: runtime matrices x inverse
+    // bind against LBS from the local pose and the bind pose's rotations.
+    body_skin_matrices(pm, model.data(), pskin.data());
+    std::vector<glm::quat> R;
+    std::vector<glm::vec3> X;
+    local_fk(sk, root.data(), rot.data(), &R, &X);
+    float e1 = 0.0f;
+    for (const BodyVertex& v : pm.vertices) {
+      glm::vec3 mine(0.0f);
+      for (int k = 0; k < 4; ++k) {
+        const glm::mat4& b = posed.pose[v.joints[k]];
+        glm::vec3 local = glm::transpose(glm::mat3(b)) * (v.position - glm::vec3(b[3]));
+        mine += v.weights[k] * (R[v.joints[k]] * local + X[v.joints[k]]);
+      }
+      e1 = std::max(e1, glm::length(body_skin_point(v, pskin.data()) - mine));
+    }
+    std::printf("  first-pose bind: bind pose error %.2g m, walking frame vs own LBS %.2g m\n", double(e0), double(e1));
+    check(e0 < 1e-5f * pm.height && e1 < 1e-4f * pm.height,
+          name + "first-pose bind: skins to itself, and a walking frame matches FK-based LBS");
+  }
   if (ch) smg_character_destroy(ch);
   smg_graph_destroy(g);
 }
