@@ -1,7 +1,8 @@
 // body_gltf.cpp - smg-body-gltf: writes the generated body (demo/body.h) of
 // a blob's skeleton as a glTF 2.0 file (one self-contained .gltf, buffer
 // embedded as base64): a node per joint with the joint's name and rest
-// offset, one skinned mesh (positions, normals, 4 joints and weights per
+// offset (and, for a body built around a posed bind, that pose's
+// rotations), one skinned mesh (positions, normals, 4 joints and weights per
 // vertex, vertex colours: lower body, upper body, skin) and its inverse
 // bind matrices. Engines load it as a rigged character whose bones carry
 // the graph's joint names, e.g. the Godot demo (bindings/godot/demo).
@@ -9,6 +10,8 @@
 // usage: smg-body-gltf BLOB OUT.gltf
 #include "../body.h"
 #include "../body_graph.h"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -146,8 +149,18 @@ int main(int argc, char** argv) {
     for (size_t c = j + 1; c < nj; ++c)
       if (sk.parent[c] == int(j)) children += (children.empty() ? "" : ",") + std::to_string(2 + c);
     glm::vec3 t = sk.rest_offset[j];
+    // A body built around a posed bind gets that pose's local rotations, so
+    // the file shows the body as built; a rest-pose body has none.
+    std::string rotation;
+    if (!sk.pose.empty()) {
+      glm::mat3 world(sk.pose[j]);
+      glm::mat3 parent = sk.parent[j] >= 0 ? glm::mat3(sk.pose[size_t(sk.parent[j])]) : glm::mat3(1.0f);
+      glm::quat q = glm::normalize(glm::quat_cast(glm::transpose(parent) * world));
+      rotation = ",\"rotation\":[" + num(q.x) + "," + num(q.y) + "," + num(q.z) + "," + num(q.w) + "]";
+      if (sk.parent[j] < 0) t = glm::vec3(sk.pose[j][3]);
+    }
     nodes += ",{\"name\":" + json_string(ji.name) + ",\"translation\":[" + num(t.x) + "," + num(t.y) + "," +
-             num(t.z) + "]" + (children.empty() ? "" : ",\"children\":[" + children + "]") + "}";
+             num(t.z) + "]" + rotation + (children.empty() ? "" : ",\"children\":[" + children + "]") + "}";
     if (sk.parent[j] < 0) roots += "," + std::to_string(2 + j);
     joints += (j ? "," : "") + std::to_string(2 + j);
   }
