@@ -120,6 +120,8 @@ void controls(App& app) {
   ImGui::Checkbox("pause", &app.paused);
   ImGui::Checkbox("footprints", &app.view.show_footprints);
   ImGui::SameLine();
+  ImGui::Checkbox("skeleton (K)", &app.view.show_skeleton);
+  ImGui::SameLine();
   if (ImGui::Checkbox("trail", &w.trail_enabled) && !w.trail_enabled) w.clear_trail();
   ImGui::SameLine();
   ImGui::SetNextItemWidth(110);

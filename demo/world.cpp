@@ -1,6 +1,7 @@
 // world.cpp - the demo's simulation state on top of the libsmg runtime.
 #include "world.h"
 
+#include "body_graph.h"
 #include "palette.h"
 
 #include <algorithm>
@@ -109,6 +110,14 @@ bool World::load(const std::string& path, std::string* error) {
   style_count_ = info.style_count;
   action_count_ = info.action_count;
   build_layout();
+  // A bad body only costs the skinned view; the skeleton view still works.
+  BodySkeleton skeleton;
+  if (!body_skeleton_from_graph(graph_, &skeleton, &body_error_) ||
+      !build_body(skeleton, kBodyCellsPerHeight, &body_, &body_error_) ||
+      !build_body(skeleton, kBodyCoarseCellsPerHeight, &coarse_body_, &body_error_)) {
+    body_ = BodyMesh();
+    coarse_body_ = BodyMesh();
+  }
   return true;
 }
 
@@ -457,6 +466,7 @@ void World::step(float dt) {
     p.style = c.state.style;
     p.action = c.state.action;
     for (uint32_t j = 0; j < joint_count_; ++j) p.joints.push_back(joint_position(c.matrices, int(j)));
+    p.matrices = c.matrices;
     if (trail_.size() >= kTrailMax) trail_.erase(trail_.begin());
     trail_.push_back(std::move(p));
     next_trail_time_ = sim_time_ + trail_interval;

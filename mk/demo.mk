@@ -18,6 +18,9 @@ DEMO_SRC := $(sort $(wildcard demo/*.cpp))
 DEMO_OBJ := $(DEMO_SRC:%.cpp=$(BUILD)/obj/%.o)
 DEMO_BIN := $(BUILD)/smg-demo
 DEMO_PNGCHECK := $(BUILD)/smg-demo-pngcheck
+DEMO_BODYTEST := $(BUILD)/smg-demo-bodytest
+DEMO_BODYGLTF := $(BUILD)/smg-body-gltf
+DEMO_BODY_OBJ := $(BUILD)/obj/demo/body.o $(BUILD)/obj/demo/body_graph.o
 DEMO_DEFAULT_BLOB := $(BUILD)/default.smg
 DEMO_CMU_BLOB := $(BUILD)/cmu.smg
 DEMO_CMU_MANIFEST := data/cmu.manifest
@@ -31,7 +34,7 @@ DEMO_REAL_BLOB ?= $(BUILD)/$(basename $(notdir $(DEMO_REAL_MANIFEST))).smg
 DEMO_LIBSMG ?= $(LIBSMG_A)
 DEMO_ARGS ?=
 
-ALL_TARGETS += $(DEMO_BIN) $(DEMO_PNGCHECK)
+ALL_TARGETS += $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF)
 
 # Third-party headers are -isystem so -Werror applies to our code only.
 DEMO_IMGUI_INC := $(shell pkg-config --variable=includedir imgui 2>/dev/null || echo /usr/include/imgui)
@@ -58,8 +61,18 @@ $(DEMO_PNGCHECK): demo/tools/png_check.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++17 -Wall -Wextra -Werror $(OPT) -isystem /usr/include/stb $< -o $@ -lstb -lm
 
+# The generated body's unit test: the demo's body code and libsmg, no GL.
+$(DEMO_BODYTEST): demo/tools/body_test.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/body.h demo/body_graph.h
+	@mkdir -p $(dir $@)
+	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
+
+# The generated body as a glTF file for engines (the Godot demo loads it).
+$(DEMO_BODYGLTF): demo/tools/body_gltf.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/body.h demo/body_graph.h
+	@mkdir -p $(dir $@)
+	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
+
 .PHONY: demo demo-cmu test-demo demo-pictures demo-build
-demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK)
+demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF)
 
 # Real clips when they are there (baked when missing or older than the
 # manifest or the baker); the synthetic default otherwise, or when that
@@ -99,8 +112,9 @@ demo-cmu: $(DEMO_BIN) $(BUILD)/smg-bake
 # clicks, drags and deletes through the real input handler; robustness.sh
 # feeds bad graphs, sizes, scripts and a GL 3.0-only context.
 DEMO_TEST_DIR := $(BUILD)/tests/demo
-test-demo: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_DEFAULT_BLOB)
-	@sh demo/tools/test_demo.sh $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_DEFAULT_BLOB) $(DEMO_TEST_DIR)
+test-demo: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF) $(DEMO_DEFAULT_BLOB)
+	@sh demo/tools/test_demo.sh $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_DEFAULT_BLOB) $(DEMO_TEST_DIR) $(DEMO_BODYTEST) \
+	  $(DEMO_BODYGLTF)
 
 TEST_TARGETS += test-demo
 
@@ -111,5 +125,7 @@ demo-pictures: $(DEMO_BIN) $(BUILD)/smg-bake
 	  --frames 515 --width 1280 --height 720 --screenshot docs/img/demo-walk-run-punch.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/s-curve.txt \
 	  --frames 960 --width 1280 --height 720 --screenshot docs/img/demo-s-curve.png
+	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/closeup.txt \
+	  --frames 515 --width 1280 --height 540 --screenshot docs/img/demo-skinned.png
 	$(DEMO_HEADLESS_ENV) $(DEMO_XVFB) $(DEMO_BIN) --graph $(DEMO_CMU_BLOB) --script demo/scripts/crowd.txt \
 	  --characters 100 --frames 600 --width 1280 --height 720 --screenshot docs/img/demo-crowd.png

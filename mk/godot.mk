@@ -92,11 +92,23 @@ $(GODOT_RIG_REF): $(GODOT_RIG_SMG) $(BUILD)/smg-synth $(GODOT_DIR)/test/rig_path
 		--csv $(GODOT_BUILD)/rig_ref.csv -o $(GODOT_BUILD)/rig_ref.bvh
 	python3 $(GODOT_DIR)/test/bvh_positions.py $(GODOT_BUILD)/rig_ref.bvh $(GODOT_BUILD)/rig_ref.csv $@
 
+# The skinned-character check needs the generated body of the graph and
+# smg-synth's poses along the same path (see test/test_skinned.gd).
+GODOT_BODY_GLTF := $(GODOT_BUILD)/body.gltf
+GODOT_SKINNED_BVH := $(GODOT_BUILD)/skinned.bvh
+$(GODOT_BODY_GLTF): $(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG)
+	@mkdir -p $(dir $@)
+	$(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG) $@
+$(GODOT_SKINNED_BVH): $(BUILD)/smg-synth $(GODOT_DEFAULT_SMG) $(GODOT_DIR)/test/skinned_path.txt
+	@mkdir -p $(dir $@)
+	$(BUILD)/smg-synth -g $(GODOT_DEFAULT_SMG) -p $(GODOT_DIR)/test/skinned_path.txt --seconds 8 --fps 30 -o $@
+
 # The scripted headless test, then the test scene opened in the headless
 # editor; bindings/godot/test/run_test.sh prepares a throw-away project
 # copy and decides from the output (see check_log.sh).
-test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_RIG_REF)
-	@$(GODOT_RIG_ENV) GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) sh $(GODOT_DIR)/test/run_test.sh \
+test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_RIG_REF) $(GODOT_BODY_GLTF) $(GODOT_SKINNED_BVH)
+	@$(GODOT_RIG_ENV) GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) GODOT_BODY=$(GODOT_BODY_GLTF) \
+		GODOT_BVH=$(GODOT_SKINNED_BVH) sh $(GODOT_DIR)/test/run_test.sh \
 		$(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_TEST_PROJ) $(GODOT_TEST_LOG) $(GODOT_TEST_EDITOR_LOG)
 
 # The same scripted test with the extension and libsmg built with
@@ -131,10 +143,12 @@ test-godot-asan: $(GODOT_ASAN_EXT) $(GODOT_ASAN_SHIM) $(GODOT_DEFAULT_SMG) $(GOD
 
 # The demo project runs from bindings/godot/demo in the editor once the
 # extension and a graph are copied in (both git-ignored).
-godot-demo: $(GODOT_EXT) $(GODOT_DEFAULT_SMG)
+# body.gltf is the generated skinned body of the graph's skeleton.
+godot-demo: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(DEMO_BODYGLTF)
 	@mkdir -p $(GODOT_DEMO)/bin $(GODOT_DEMO)/.godot
 	cp $(GODOT_EXT) $(GODOT_DEMO)/bin/
 	cp $(GODOT_DEFAULT_SMG) $(GODOT_DEMO)/default.smg
+	$(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG) $(GODOT_DEMO)/body.gltf
 	@echo 'res://smg.gdextension' > $(GODOT_DEMO)/.godot/extension_list.cfg
 
 godot-screenshot: godot-demo
