@@ -202,7 +202,7 @@ typedef struct crowd {
   uint32_t J;
 } crowd;
 
-static int crowd_make(smg_graph* g, int n, crowd* c) {
+static int crowd_make(smg_graph* g, int n, uint32_t flags, crowd* c) {
   smg_graph_info info;
   memset(&info, 0, sizeof info);
   info.struct_size = sizeof info;
@@ -217,6 +217,7 @@ static int crowd_make(smg_graph* g, int n, crowd* c) {
     memset(&d, 0, sizeof d);
     d.struct_size = sizeof d;
     d.seed = (uint32_t)i + 1;
+    d.flags = flags;
     d.position[0] = 2.0f * (float)(i % 100);
     if (smg_character_create(g, &d, &c->ch[i]) != SMG_OK) return 0;
     make_path(xz, 256, 2000.0f, d.position[0], 1.0f + (float)(i % 5));
@@ -243,11 +244,11 @@ static void crowd_frame(crowd* c) {
 
 /* Median of per-character step+pose, timed one call at a time in batches
  * of the whole crowd (so cache effects of many characters show). */
-static double bench_crowd(smg_graph* g, int n, int frames, double* p99,
-                          double* mean, double* start_mean,
+static double bench_crowd(smg_graph* g, int n, uint32_t flags, int frames,
+                          double* p99, double* mean, double* start_mean,
                           double* start_worst) {
   crowd c;
-  if (!crowd_make(g, n, &c)) {
+  if (!crowd_make(g, n, flags, &c)) {
     crowd_free(&c);
     return -1;
   }
@@ -284,7 +285,7 @@ static double bench_crowd(smg_graph* g, int n, int frames, double* p99,
 static double bench_single(smg_graph* g, int frames, double* p99) {
   *p99 = -1;
   crowd c;
-  if (!crowd_make(g, 1, &c)) {
+  if (!crowd_make(g, 1, 0u, &c)) {
     crowd_free(&c);
     return -1;
   }
@@ -414,7 +415,7 @@ static void run_graph(const char* name, const void* blob, size_t size) {
   for (int i = 0; i < 4; ++i) {
     int frames = counts[i] >= 1000 ? 60 : 600;
     double p99, mean, start, start_worst;
-    double per = bench_crowd(g, counts[i], frames, &p99, &mean, &start,
+    double per = bench_crowd(g, counts[i], 0u, frames, &p99, &mean, &start,
                              &start_worst);
     if (per < 0) {
       printf("crowd of %d: create failed\n", counts[i]);
@@ -429,6 +430,16 @@ static void run_graph(const char* name, const void* blob, size_t size) {
            "Hz frame on one core\n",
            counts[i], per, mean, p99, start, start_worst, bc, per / bc,
            (1e6 / 60.0) / per);
+  }
+  {
+    /* the same 1000 characters with the root steering off (the motion
+     * graph alone): what steering costs, measured in this run */
+    double p99, mean, start, start_worst;
+    double per = bench_crowd(g, 1000, SMG_CHARACTER_NO_STEERING, 60, &p99,
+                             &mean, &start, &start_worst);
+    printf("step+pose, 1000 characters, steering off: median %.3f us/"
+           "character (mean %.3f, p99 frame %.3f)\n",
+           per, mean, p99);
   }
   double med = 0, p99 = 0, cpu99 = 0;
   bench_edit(g, 1000, 400, &med, &p99, &cpu99);

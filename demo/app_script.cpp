@@ -92,6 +92,8 @@ std::string apply(App& app, const ScriptCommand& c, bool* shot, std::string* sho
     w.set_ik(a[0] == "on");
   } else if (c.verb == "hud") {
     app.hud = a[0] == "on";
+  } else if (c.verb == "skeleton") {
+    app.view.show_skeleton = a[0] == "on" || !app.renderer.has_body();
   } else if (c.verb == "footprints") {
     app.view.show_footprints = a[0] == "on";
   } else if (c.verb == "trail") {

@@ -62,6 +62,12 @@
   X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)                  \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)          \
   X(PFNGLVERTEXATTRIBDIVISORPROC, glVertexAttribDivisor)                  \
+  X(PFNGLVERTEXATTRIBIPOINTERPROC, glVertexAttribIPointer)                \
+  X(PFNGLGENTEXTURESPROC, glGenTextures)                                  \
+  X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                            \
+  X(PFNGLBINDTEXTUREPROC, glBindTexture)                                  \
+  X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                              \
+  X(PFNGLTEXBUFFERPROC, glTexBuffer)                                      \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                    \
   X(PFNGLDRAWELEMENTSINSTANCEDPROC, glDrawElementsInstanced)              \
   X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                          \

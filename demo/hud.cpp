@@ -40,6 +40,9 @@ void stats(App& app) {
   ImGui::Text("distance from path %.3f m", double(s.path_error));
   ImGui::Text("along path %.2f / %.2f m   feet %s%s", double(s.path_distance), double(w.path().length()),
               (s.flags & SMG_STATE_LEFT_CONTACT) ? "L" : "-", (s.flags & SMG_STATE_RIGHT_CONTACT) ? "R" : "-");
+  // What the root steering adds to the motion (smg_character_state).
+  ImGui::Text("steering %.1f deg/s  %.1f cm/s   playback %.2fx", double(s.steer_turn_rate) * 57.29578,
+              double(s.steer_slide_speed) * 100.0, double(s.playback_rate));
   if (s.flags & SMG_STATE_PATH_END_REACHED) ImGui::TextDisabled("(end of path reached)");
 }
 
@@ -109,10 +112,15 @@ void controls(App& app) {
   bool ik = w.ik();
   if (ImGui::Checkbox("foot IK", &ik)) w.set_ik(ik);
   ImGui::SameLine();
+  bool steering = w.steering();
+  if (ImGui::Checkbox("steering", &steering)) w.set_steering(steering);
+  ImGui::SameLine();
   ImGui::Checkbox("follow camera (F)", &app.camera.follow);
   ImGui::SameLine();
   ImGui::Checkbox("pause", &app.paused);
   ImGui::Checkbox("footprints", &app.view.show_footprints);
+  ImGui::SameLine();
+  ImGui::Checkbox("skeleton (K)", &app.view.show_skeleton);
   ImGui::SameLine();
   if (ImGui::Checkbox("trail", &w.trail_enabled) && !w.trail_enabled) w.clear_trail();
   ImGui::SameLine();

@@ -165,6 +165,7 @@ void handle_event(App& app, const SDL_Event& e) {
         case SDLK_3: app.tool = Tool::Splice; break;
         case SDLK_f: app.camera.follow = !app.camera.follow; break;
         case SDLK_h: app.hud = !app.hud; break;
+        case SDLK_k: app.view.show_skeleton = !app.view.show_skeleton || !app.renderer.has_body(); break;
         case SDLK_SPACE: app.paused = !app.paused; break;
         case SDLK_ESCAPE: app.quit = true; break;
         case SDLK_F12: app.want_screenshot = true; break;

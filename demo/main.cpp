@@ -268,6 +268,24 @@ int run_headless(App& app) {
                 double(app.options.dt), int(app.world.characters().size()),
                 app.step_frames ? app.step_us_sum / double(app.step_frames) : 0.0, app.step_us_worst);
   }
+  // Where character 0's skeleton projects in the picture (pixels, origin
+  // top-left): the smoke test checks that its body is drawn there.
+  if (!app.world.characters().empty()) {
+    float w = float(app.options.width), h = float(app.options.height);
+    glm::mat4 vp = app.camera.projection(w / h) * app.camera.view();
+    const std::vector<float>& m = app.world.characters()[0].matrices;
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (size_t j = 0; j < app.world.joint_count(); ++j) {
+      glm::vec4 c = vp * glm::vec4(m[j * 16 + 12], m[j * 16 + 13], m[j * 16 + 14], 1.0f);
+      if (c.w <= 0.0f) continue;
+      glm::vec2 px((c.x / c.w * 0.5f + 0.5f) * w, (0.5f - c.y / c.w * 0.5f) * h);
+      lo = glm::min(lo, px);
+      hi = glm::max(hi, px);
+    }
+    if (lo.x <= hi.x)
+      std::printf("smg-demo: character 0 skeleton box %.0f %.0f %.0f %.0f\n", double(lo.x), double(lo.y), double(hi.x),
+                  double(hi.y));
+  }
   // What the drawing ended as: lets tests check scripted mouse edits.
   std::printf("smg-demo: path %zu points, %.2f m; markers:", app.world.path().size(),
               double(app.world.path().length()));
@@ -386,6 +404,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "smg-demo: %s\n", error.c_str());
     close_window(app);
     return 1;
+  }
+  // Without a body the demo shows the capsule skeletons only.
+  if (app.world.body().indices.empty()) {
+    std::fprintf(stderr, "smg-demo: no skinned body, showing skeletons (%s)\n", app.world.body_error().c_str());
+    app.view.show_skeleton = true;
+  } else if (!app.renderer.set_body(app.world.body(), app.world.coarse_body(), &error)) {
+    std::fprintf(stderr, "smg-demo: %s; showing skeletons\n", error.c_str());
+    app.view.show_skeleton = true;
   }
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();

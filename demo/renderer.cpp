@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -57,6 +58,47 @@ void main() {
   vec3 c = v_colour.rgb * (0.30 + 0.22 * hemi + 0.62 * diffuse) + 0.10 * rim;
   float fog = clamp((length(u_eye - v_world) - 60.0) / 140.0, 0.0, 1.0);
   frag = vec4(mix(c, u_sky, fog), v_colour.a);
+}
+)";
+
+// Linear-blend skinning with up to 4 joints per vertex. Each skinning
+// matrix is stored as its 3 affine rows (3 texels); instance i's joints
+// start at texel 3 * i * u_joint_count of u_joints. Blending the rows
+// first skins the position with 3 dot products.
+// Colours: lower body, upper body (per instance) and skin, blended by the
+// vertex's material (0..2), lightened by the instance's ghost factor (strobe trail).
+const char* kBodyVS = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in uvec4 a_joints;
+layout(location = 3) in vec4 a_weights;
+layout(location = 4) in float a_material;
+layout(location = 5) in vec4 i_lower;
+layout(location = 6) in vec4 i_upper;
+uniform samplerBuffer u_joints;
+uniform int u_joint_count;
+uniform mat4 u_view_proj;
+uniform mat4 u_flatten;
+uniform vec3 u_skin;
+out vec3 v_normal;
+out vec3 v_world;
+out vec4 v_colour;
+void main() {
+  int base = 3 * gl_InstanceID * u_joint_count;
+  vec4 r0 = vec4(0.0), r1 = vec4(0.0), r2 = vec4(0.0);
+  for (int k = 0; k < 4; ++k) {
+    int t = base + 3 * int(a_joints[k]);
+    r0 += a_weights[k] * texelFetch(u_joints, t);
+    r1 += a_weights[k] * texelFetch(u_joints, t + 1);
+    r2 += a_weights[k] * texelFetch(u_joints, t + 2);
+  }
+  vec4 p = vec4(a_position, 1.0);
+  vec4 w = u_flatten * vec4(dot(r0, p), dot(r1, p), dot(r2, p), 1.0);
+  v_world = w.xyz / w.w;
+  v_normal = vec3(dot(r0.xyz, a_normal), dot(r1.xyz, a_normal), dot(r2.xyz, a_normal));
+  vec3 c = mix(mix(i_lower.rgb, i_upper.rgb, clamp(a_material, 0.0, 1.0)), u_skin, clamp(a_material - 1.0, 0.0, 1.0));
+  v_colour = vec4(c + (vec3(1.0) - c) * i_upper.a, 1.0);
+  gl_Position = u_view_proj * w;
 }
 )";
 
@@ -242,6 +284,8 @@ bool Renderer::init(std::string* error) {
   if (!ground_program_) return false;
   flat_program_ = link(kFlatVS, kFlatFS, error);
   if (!flat_program_) return false;
+  body_program_ = link(kBodyVS, kLitFS, error);
+  if (!body_program_) return false;
 
   std::vector<float> v;
   std::vector<unsigned> i;
@@ -294,18 +338,138 @@ void Renderer::shutdown() {
   glDeleteProgram(lit_program_);
   glDeleteProgram(ground_program_);
   glDeleteProgram(flat_program_);
+  glDeleteProgram(body_program_);
+  for (BodyLod& lod : lods_) {
+    glDeleteVertexArrays(1, &lod.vao);
+    for (unsigned b : {lod.vbo, lod.ibo, lod.instance_vbo}) glDeleteBuffers(1, &b);
+  }
+  glDeleteBuffers(1, &joint_tbo_);
+  glDeleteTextures(1, &joint_texture_);
+}
+
+bool Renderer::set_body(const BodyMesh& detailed, const BodyMesh& coarse, std::string* error) {
+  const BodyMesh* meshes[2] = {&detailed, &coarse};
+  for (int l = 0; l < 2; ++l) {
+    const BodyMesh& mesh = *meshes[l];
+    BodyLod& lod = lods_[l];
+    if (!lod.vao) {
+      glGenVertexArrays(1, &lod.vao);
+      glGenBuffers(1, &lod.vbo);
+      glGenBuffers(1, &lod.ibo);
+      glGenBuffers(1, &lod.instance_vbo);
+    }
+    glBindVertexArray(lod.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, lod.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(BodyVertex)), mesh.vertices.data(),
+                 GL_STATIC_DRAW);
+    const GLsizei stride = sizeof(BodyVertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribIPointer(2, 4, GL_UNSIGNED_SHORT, stride, reinterpret_cast<void*>(offsetof(BodyVertex, joints)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, weights)));
+    glEnableVertexAttribArray(4);
+    glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(BodyVertex, material)));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, lod.ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, lod.instance_vbo);
+    for (int c = 0; c < 2; ++c) {
+      glEnableVertexAttribArray(GLuint(5 + c));
+      glVertexAttribPointer(GLuint(5 + c), 4, GL_FLOAT, GL_FALSE, sizeof(BodyColours),
+                            reinterpret_cast<void*>(sizeof(glm::vec4) * size_t(c)));
+      glVertexAttribDivisor(GLuint(5 + c), 1);
+    }
+    glBindVertexArray(0);
+    lod.index_count = int(mesh.indices.size());
+  }
+  if (!joint_tbo_) {
+    glGenBuffers(1, &joint_tbo_);
+    glGenTextures(1, &joint_texture_);
+  }
+  body_joints_ = int(detailed.inverse_bind.size());
+  body_height_ = detailed.height;
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  max_body_instances_ = body_joints_ > 0 ? int(max_texels / (3 * body_joints_)) : 0;
+  if (max_body_instances_ < 1 || coarse.inverse_bind.size() != detailed.inverse_bind.size() ||
+      glGetError() != GL_NO_ERROR) {
+    *error = "cannot upload the body meshes (" + std::to_string(body_joints_) + " joints, texture buffers of " +
+             std::to_string(max_texels) + " texels)";
+    for (BodyLod& lod : lods_) lod.index_count = 0;
+    return false;
+  }
+  return true;
 }
 
 void Renderer::begin(int width, int height, const OrbitCamera& camera) {
   width_ = width;
   height_ = height;
-  view_proj_ = camera.projection(float(width) / float(height > 0 ? height : 1)) * camera.view();
+  glm::mat4 projection = camera.projection(float(width) / float(height > 0 ? height : 1));
+  proj_y_ = projection[1][1];
+  view_proj_ = projection * camera.view();
   eye_ = camera.eye();
   target_ = camera.target;
   spheres_.clear();
   shadow_spheres_.clear();
   cylinders_.clear();
   decals_.clear();
+  for (BodyLod& lod : lods_) {
+    lod.rows.clear();
+    lod.colours.clear();
+  }
+}
+
+void Renderer::body(const glm::mat4* skin, glm::vec3 centre, glm::vec3 lower, glm::vec3 upper, float ghost) {
+  if (!has_body()) return;
+  // Bodies under kCoarseBelow pixels tall take the coarse mesh, whose
+  // cells are then a few pixels: the same picture for half the work.
+  const float kCoarseBelow = 150.0f;
+  glm::vec4 clip = view_proj_ * glm::vec4(centre, 1.0f);
+  float pixels = clip.w > 1e-4f ? body_height_ * proj_y_ / clip.w * 0.5f * float(height_) : 1e9f;
+  BodyLod& lod = lods_[pixels < kCoarseBelow ? 1 : 0];
+  for (int j = 0; j < body_joints_; ++j) {
+    glm::mat4 t = glm::transpose(skin[j]);  // rows; the 4th is (0 0 0 1)
+    lod.rows.insert(lod.rows.end(), {t[0], t[1], t[2]});
+  }
+  lod.colours.push_back({glm::vec4(lower, 0.0f), glm::vec4(upper, ghost)});
+}
+
+// Draws every queued body, per level of detail as many per instanced draw
+// as the texture buffer holds.
+void Renderer::draw_bodies(bool shadow) {
+  if (lods_[0].colours.empty() && lods_[1].colours.empty()) return;
+  glUseProgram(body_program_);
+  glUniformMatrix4fv(loc(body_program_, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj_));
+  glUniform3fv(loc(body_program_, "u_light_dir"), 1, glm::value_ptr(kLightDir));
+  glUniform3fv(loc(body_program_, "u_eye"), 1, glm::value_ptr(eye_));
+  glUniform3fv(loc(body_program_, "u_sky"), 1, glm::value_ptr(kSkyColour));
+  glUniform3fv(loc(body_program_, "u_skin"), 1, glm::value_ptr(kSkinColour));
+  glm::mat4 flatten = shadow ? flatten_matrix(kLightDir, 0.003f) : glm::mat4(1.0f);
+  glUniformMatrix4fv(loc(body_program_, "u_flatten"), 1, GL_FALSE, glm::value_ptr(flatten));
+  glUniform1i(loc(body_program_, "u_shadow"), shadow ? 1 : 0);
+  glUniform1i(loc(body_program_, "u_joint_count"), body_joints_);
+  glUniform1i(loc(body_program_, "u_joints"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, joint_texture_);
+  for (const BodyLod& lod : lods_) {
+    glBindVertexArray(lod.vao);
+    const size_t total = lod.colours.size();
+    for (size_t first = 0; first < total; first += size_t(max_body_instances_)) {
+      size_t count = std::min(total - first, size_t(max_body_instances_));
+      glBindBuffer(GL_TEXTURE_BUFFER, joint_tbo_);
+      glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(count * size_t(body_joints_) * 3 * sizeof(glm::vec4)),
+                   &lod.rows[first * size_t(body_joints_) * 3], GL_STREAM_DRAW);
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, joint_tbo_);
+      glBindBuffer(GL_ARRAY_BUFFER, lod.instance_vbo);
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(BodyColours)), &lod.colours[first], GL_STREAM_DRAW);
+      glDrawElementsInstanced(GL_TRIANGLES, lod.index_count, GL_UNSIGNED_INT, nullptr, GLsizei(count));
+    }
+  }
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
 }
 
 void Renderer::sphere(glm::vec3 c, float r, glm::vec4 colour, bool casts_shadow) {
@@ -393,6 +557,13 @@ void Renderer::end() {
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   draw_instances(sphere_, shadow_spheres_);
   draw_instances(cylinder_, cylinders_);
+  // A flattened body seen from above keeps the winding of its light-facing
+  // side: culling the rest rasterises each shadow once instead of twice.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  draw_bodies(true);
+  glDisable(GL_CULL_FACE);
+  glUseProgram(lit_program_);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
@@ -404,6 +575,11 @@ void Renderer::end() {
   glUniform1i(loc(lit_program_, "u_shadow"), 0);
   draw_instances(sphere_, spheres_);
   draw_instances(cylinder_, cylinders_);
+  // Bodies are closed and wound outward: culling halves the fragment work.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  draw_bodies(false);
+  glDisable(GL_CULL_FACE);
 
   glBindVertexArray(0);
   glUseProgram(0);

@@ -114,6 +114,18 @@ void skeleton(Renderer& r, const World& world, const std::vector<glm::vec3>& pos
   }
 }
 
+// The generated body posed by world-space model matrices, coloured like the
+// capsules: lower body by style, upper body by action (style for none).
+void body(Renderer& r, const World& world, const std::vector<float>& matrices, uint32_t style, uint32_t action,
+          float ghost, std::vector<glm::mat4>* skin) {
+  glm::vec3 lower = world.style_colour_of(style);
+  glm::vec3 upper = action == 0 ? lower : world.action_colour_of(action);
+  skin->resize(world.body().inverse_bind.size());
+  body_skin_matrices(world.body(), matrices.data(), skin->data());
+  glm::vec3 root(matrices[12], matrices[13], matrices[14]);
+  r.body(skin->data(), root, lower, upper, ghost);
+}
+
 }  // namespace
 
 glm::vec3 marker_base(const World& world, const Marker& m) {
@@ -176,8 +188,16 @@ void draw_scene(Renderer& r, const World& world, const SceneView& view) {
   }
 
   // Strobe trail of character 0 (Fig. 4 of the paper).
-  for (const TrailPose& t : world.trail()) skeleton(r, world, t.joints, t.style, t.action, 0, 0.45f);
-
+  const bool bodies = !view.show_skeleton && r.has_body();
+  std::vector<glm::mat4> skin;
+  for (const TrailPose& t : world.trail()) {
+    if (bodies) body(r, world, t.matrices, t.style, t.action, 0.45f, &skin);
+    else skeleton(r, world, t.joints, t.style, t.action, 0, 0.45f);
+  }
+  if (bodies) {
+    for (const Character& c : chars) body(r, world, c.matrices, c.state.style, c.state.action, 0.0f, &skin);
+    return;
+  }
   std::vector<glm::vec3> pos(world.joint_count());
   for (const Character& c : chars) {
     for (size_t j = 0; j < pos.size(); ++j) pos[j] = joint(c, j);

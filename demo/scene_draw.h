@@ -1,6 +1,6 @@
 // scene_draw.h - turns the World (path, markers, characters) into renderer
-// geometry: coloured path ribbons, marker poles, capsule skeletons,
-// footprints and the strobe trail.
+// geometry: coloured path ribbons, marker poles, skinned bodies or capsule
+// skeletons, footprints and the strobe trail.
 #pragma once
 
 #include "renderer.h"
@@ -11,6 +11,7 @@ struct SceneView {
   int hovered_marker = 0;
   bool show_footprints = true;
   bool show_path_copies = true;
+  bool show_skeleton = false;  // capsule skeletons instead of skinned bodies
 };
 
 void draw_scene(Renderer& r, const World& world, const SceneView& view);

@@ -62,7 +62,7 @@ std::string check(const ScriptCommand& c) {
   } else if (v == "camera") {
     if ((a.size() != 3 && a.size() != 5) || !all_floats(a, 0))
       return "camera needs <yaw deg> <pitch deg> <distance> [<x> <z>]";
-  } else if (v == "follow" || v == "ik" || v == "hud" || v == "footprints") {
+  } else if (v == "follow" || v == "ik" || v == "hud" || v == "footprints" || v == "skeleton") {
     if (a.size() != 1 || !is_on_off(a[0])) return v + " needs on or off";
   } else if (v == "trail") {
     if (a.empty() || a.size() > 2 || !is_on_off(a[0]) || (a.size() == 2 && (!parse_float(a[1], &f) || f <= 0)))

@@ -1,6 +1,7 @@
 // world.cpp - the demo's simulation state on top of the libsmg runtime.
 #include "world.h"
 
+#include "body_graph.h"
 #include "palette.h"
 
 #include <algorithm>
@@ -109,6 +110,14 @@ bool World::load(const std::string& path, std::string* error) {
   style_count_ = info.style_count;
   action_count_ = info.action_count;
   build_layout();
+  // A bad body only costs the skinned view; the skeleton view still works.
+  BodySkeleton skeleton;
+  if (!body_skeleton_from_graph(graph_, &skeleton, &body_error_) ||
+      !build_body(skeleton, kBodyCellsPerHeight, &body_, &body_error_) ||
+      !build_body(skeleton, kBodyCoarseCellsPerHeight, &coarse_body_, &body_error_)) {
+    body_ = BodyMesh();
+    coarse_body_ = BodyMesh();
+  }
   return true;
 }
 
@@ -179,7 +188,7 @@ bool World::spawn(int n, std::string* error) {
     smg_character_desc d;
     std::memset(&d, 0, sizeof d);
     d.struct_size = sizeof d;
-    d.flags = ik_ ? 0u : SMG_CHARACTER_NO_IK;
+    d.flags = (ik_ ? 0u : SMG_CHARACTER_NO_IK) | (steering_ ? 0u : SMG_CHARACTER_NO_STEERING);
     d.path_capacity = kPathCapacity;
     d.constraint_capacity = kConstraintCapacity;
     d.seed = uint32_t(i + 1);
@@ -384,6 +393,12 @@ void World::set_ik(bool on) {
   for (Character& c : characters_) check(smg_character_set_ik(c.handle, on ? 1u : 0u), "smg_character_set_ik");
 }
 
+void World::set_steering(bool on) {
+  steering_ = on;
+  for (Character& c : characters_)
+    check(smg_character_set_steering(c.handle, on ? 1u : 0u), "smg_character_set_steering");
+}
+
 void World::set_style_now(uint32_t style) {
   for (Character& c : characters_) check(smg_character_set_style(c.handle, style), "smg_character_set_style");
 }
@@ -451,6 +466,7 @@ void World::step(float dt) {
     p.style = c.state.style;
     p.action = c.state.action;
     for (uint32_t j = 0; j < joint_count_; ++j) p.joints.push_back(joint_position(c.matrices, int(j)));
+    p.matrices = c.matrices;
     if (trail_.size() >= kTrailMax) trail_.erase(trail_.begin());
     trail_.push_back(std::move(p));
     next_trail_time_ = sim_time_ + trail_interval;

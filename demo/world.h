@@ -7,6 +7,7 @@
 // Every edit is forwarded to the runtime at once; nothing is restarted.
 #pragma once
 
+#include "body.h"
 #include "path.h"
 #include "smg.h"
 
@@ -35,6 +36,7 @@ struct Footprint {
 // A frozen pose for the strobe trail (the paper's Fig. 4 look).
 struct TrailPose {
   std::vector<glm::vec3> joints;
+  std::vector<float> matrices;  // 16 per joint, world space (for the body)
   uint32_t style = 0, action = 0;
 };
 
@@ -95,6 +97,8 @@ class World {
   float error_threshold() const { return threshold_; }
   void set_ik(bool on);
   bool ik() const { return ik_; }
+  void set_steering(bool on);
+  bool steering() const { return steering_; }
   void set_style_now(uint32_t style);
   void set_action_now(uint32_t action);
 
@@ -117,6 +121,11 @@ class World {
   glm::vec3 style_colour_of(uint32_t s) const;
   glm::vec3 action_colour_of(uint32_t a) const;
   const JointLayout& joints() const { return layout_; }
+  // The body generated from the graph's skeleton, detailed and coarse;
+  // empty (no triangles) when it could not be made, body_error() says why.
+  const BodyMesh& body() const { return body_; }
+  const BodyMesh& coarse_body() const { return coarse_body_; }
+  const std::string& body_error() const { return body_error_; }
   const std::vector<Character>& characters() const { return characters_; }
   const smg_graph_info& info() const { return info_; }
   double sim_time() const { return sim_time_; }
@@ -144,12 +153,15 @@ class World {
   smg_graph_info info_{};
   uint32_t joint_count_ = 0, style_count_ = 0, action_count_ = 0;
   JointLayout layout_;
+  BodyMesh body_, coarse_body_;
+  std::string body_error_;
   std::vector<Character> characters_;
   Polyline path_;
   std::vector<Marker> markers_;
   int next_uid_ = 1;
   float threshold_ = 0.25f;
   bool ik_ = true;
+  bool steering_ = true;
   double sim_time_ = 0.0;
   double step_us_avg_ = 0.0, step_us_max_ = 0.0, step_us_total_ = 0.0;
   std::vector<TrailPose> trail_;

@@ -234,6 +234,8 @@ typedef struct smg_character smg_character;
 
 /* Character flags. */
 #define SMG_CHARACTER_NO_IK 1u /* start with foot-contact IK off */
+#define SMG_CHARACTER_NO_STEERING 2u /* start with root steering off: the
+                                        motion graph alone (see below) */
 
 typedef struct smg_character_desc {
   uint32_t struct_size;      /* = sizeof(smg_character_desc) */
@@ -252,6 +254,21 @@ typedef struct smg_character_desc {
   float error_threshold;     /* search distance-error threshold, metres;
                                 0 = 0.25 */
   smg_allocator allocator;   /* 0 = malloc/free */
+  /* Root steering (on unless SMG_CHARACTER_NO_STEERING): every step a
+   * small, bounded correction of the character's ground position and
+   * heading keeps the motion on the path (the data need not turn as
+   * tightly as the path), slows it where the path is too tight, and brings
+   * it to rest at the path's end (docs/runtime.md, "Root steering"). The
+   * correction is reported in smg_character_state. Zero = default. */
+  float steer_turn_rate;     /* most heading correction added to the
+                                motion's own turning, radians per second;
+                                0 = 2.0 (about 115 deg/s) */
+  float steer_slide_ratio;   /* most translation correction, as a fraction
+                                of the motion's own ground speed (none
+                                while it stands); 0 = 0.25 */
+  float stop_seconds;        /* braking time when coming to rest at the
+                                path's end; 0 = 1.0 */
+  float reserved1;
 } smg_character_desc;
 
 /* Create a character on `graph`. desc may be NULL (all defaults). Allocates
@@ -319,6 +336,17 @@ SMG_API smg_result smg_character_set_error_threshold(smg_character* character,
                                                      float metres);
 SMG_API smg_result smg_character_set_ik(smg_character* character,
                                         uint32_t enabled);
+/* Root steering on (1) or off (0); off gives the motion graph alone, as
+ * SMG_CHARACTER_NO_STEERING at create. Takes effect at the next step. */
+SMG_API smg_result smg_character_set_steering(smg_character* character,
+                                              uint32_t enabled);
+/* The steering limits of smg_character_desc (turn rate rad/s, slide ratio,
+ * stop seconds; 0 = default). A negative or non-finite value returns
+ * SMG_ERROR_INVALID_ARGUMENT and changes nothing. */
+SMG_API smg_result smg_character_set_steering_limits(smg_character* character,
+                                                     float turn_rate,
+                                                     float slide_ratio,
+                                                     float stop_seconds);
 
 /* --- Per frame --- */
 
@@ -328,7 +356,8 @@ SMG_API smg_result smg_character_step(smg_character* character, float dt);
 
 /* State flags. */
 #define SMG_STATE_HAS_PATH 1u        /* a path with >= 1 point is set */
-#define SMG_STATE_PATH_END_REACHED 2u /* arrived at the path's end */
+#define SMG_STATE_PATH_END_REACHED 2u /* arrived at the path's end (with
+                                         steering: standing there) */
 #define SMG_STATE_LEFT_CONTACT 4u     /* left foot planted this frame */
 #define SMG_STATE_RIGHT_CONTACT 8u    /* right foot planted this frame */
 
@@ -346,6 +375,13 @@ typedef struct smg_character_state {
   uint32_t upper_node;   /* diagnostics: last upper-graph node passed */
   float sync_rate;       /* upper-body playback rate vs lower (1 = none) */
   float reserved0;
+  /* the root steering's correction in the last step (0 with it off) */
+  float steer_turn_rate;   /* heading added, radians/s (+ = to the left) */
+  float steer_slide_speed; /* translation added, m/s */
+  float playback_rate;     /* how fast the motion plays: 1, lower while
+                              slowing for a tight turn or braking, 0 at
+                              rest */
+  float reserved1;
 } smg_character_state;
 
 SMG_API smg_result smg_character_get_state(const smg_character* character,

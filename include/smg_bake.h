@@ -80,6 +80,11 @@ typedef struct smg_bake_clip_desc {
   uint32_t animation_index; /* assimp files: which animation */
   int32_t source_line;     /* manifest line, for error messages (0 = none) */
   uint32_t reserved0;
+  const char* bones;       /* bone map: which joint plays which body role,
+                              one "role=joint" per line, e.g.
+                              "left_foot=Foot_L\nright_foot=Foot_R"
+                              (docs/manifest.md `bones`); NULL = recognise
+                              the roles from the joint names */
 } smg_bake_clip_desc;
 
 typedef struct smg_bake_options {
@@ -125,6 +130,17 @@ typedef struct smg_bake_desc {
                                 or leave the whole struct zero) */
   smg_bake_progress_fn progress; /* optional */
   void* progress_user;
+  /* Added with retargeting (a desc whose struct_size ends before these
+   * fields bakes onto the first clip's skeleton): */
+  const char* target_path;   /* rig whose skeleton, rest pose and
+                                proportions the blob uses (.bvh, or
+                                .gltf/.glb/.fbx through assimp: the first
+                                frame of target_animation is its rest);
+                                every clip is retargeted onto it. Relative
+                                paths are joined to data_dir. NULL = the
+                                first clip's skeleton */
+  float target_unit_scale;   /* rig file units -> metres; 0 = guess */
+  uint32_t target_animation; /* assimp rigs: which animation */
 } smg_bake_desc;
 
 #define SMG_BAKE_MAX_STAGES 16

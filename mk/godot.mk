@@ -73,11 +73,42 @@ $(GODOT_EXT): $(GODOT_OBJ) $(LIBSMG_A)
 
 godot-ext: $(GODOT_EXT)
 
+# The retargeted-rig test's inputs: the synthetic clips baked onto the
+# generated test rig, and smg-synth's joint positions on that graph along
+# the test's path (bindings/godot/test/rig_path.txt).
+GODOT_RIG_SMG := $(GODOT_BUILD)/rig.smg
+GODOT_RIG_REF := $(GODOT_BUILD)/rig_ref_positions.csv
+GODOT_RIG_ENV = SMG_RIG_GRAPH=$(abspath $(GODOT_RIG_SMG)) SMG_RIG_REF=$(abspath $(GODOT_RIG_REF))
+
+# (the baker, smg-synth and the synthetic clips are defined in fragments
+# read after this one: named by path here)
+$(GODOT_RIG_SMG): $(BUILD)/smg-bake $(BUILD)/synthetic/README.txt data/synthetic.manifest
+	@mkdir -p $(dir $@)
+	$(BUILD)/smg-bake -q -m data/synthetic.manifest --data-dir $(BUILD)/synthetic \
+		--target $(BUILD)/synthetic/rig_mixamo_apose.bvh --target-unit 1 -o $@
+
+$(GODOT_RIG_REF): $(GODOT_RIG_SMG) $(BUILD)/smg-synth $(GODOT_DIR)/test/rig_path.txt $(GODOT_DIR)/test/bvh_positions.py
+	$(BUILD)/smg-synth -g $(GODOT_RIG_SMG) -p $(GODOT_DIR)/test/rig_path.txt --seconds 6 \
+		--csv $(GODOT_BUILD)/rig_ref.csv -o $(GODOT_BUILD)/rig_ref.bvh
+	python3 $(GODOT_DIR)/test/bvh_positions.py $(GODOT_BUILD)/rig_ref.bvh $(GODOT_BUILD)/rig_ref.csv $@
+
+# The skinned-character check needs the generated body of the graph and
+# smg-synth's poses along the same path (see test/test_skinned.gd).
+GODOT_BODY_GLTF := $(GODOT_BUILD)/body.gltf
+GODOT_SKINNED_BVH := $(GODOT_BUILD)/skinned.bvh
+$(GODOT_BODY_GLTF): $(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG)
+	@mkdir -p $(dir $@)
+	$(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG) $@
+$(GODOT_SKINNED_BVH): $(BUILD)/smg-synth $(GODOT_DEFAULT_SMG) $(GODOT_DIR)/test/skinned_path.txt
+	@mkdir -p $(dir $@)
+	$(BUILD)/smg-synth -g $(GODOT_DEFAULT_SMG) -p $(GODOT_DIR)/test/skinned_path.txt --seconds 8 --fps 30 -o $@
+
 # The scripted headless test, then the test scene opened in the headless
 # editor; bindings/godot/test/run_test.sh prepares a throw-away project
 # copy and decides from the output (see check_log.sh).
-test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG)
-	@GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) sh $(GODOT_DIR)/test/run_test.sh \
+test-godot: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_RIG_REF) $(GODOT_BODY_GLTF) $(GODOT_SKINNED_BVH)
+	@$(GODOT_RIG_ENV) GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) GODOT_BODY=$(GODOT_BODY_GLTF) \
+		GODOT_BVH=$(GODOT_SKINNED_BVH) sh $(GODOT_DIR)/test/run_test.sh \
 		$(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_TEST_PROJ) $(GODOT_TEST_LOG) $(GODOT_TEST_EDITOR_LOG)
 
 # The same scripted test with the extension and libsmg built with
@@ -102,8 +133,8 @@ $(GODOT_ASAN_SHIM): $(GODOT_DIR)/test/nodeepbind.c
 	$(CC) -shared -fPIC -O1 -o $@ $< -ldl
 	cp "$$($(CC) -print-file-name=libasan.so)" $(GODOT_ASAN)/libasan.so
 
-test-godot-asan: $(GODOT_ASAN_EXT) $(GODOT_ASAN_SHIM) $(GODOT_DEFAULT_SMG)
-	@GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) \
+test-godot-asan: $(GODOT_ASAN_EXT) $(GODOT_ASAN_SHIM) $(GODOT_DEFAULT_SMG) $(GODOT_RIG_REF)
+	@$(GODOT_RIG_ENV) GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) \
 		GODOT_PRELOAD=$(abspath $(GODOT_ASAN_SHIM)):$(abspath $(GODOT_ASAN))/libasan.so \
 		ASAN_OPTIONS=detect_leaks=0:verify_asan_link_order=0:halt_on_error=1:abort_on_error=1 \
 		sh $(GODOT_DIR)/test/run_test.sh $(GODOT_ASAN_EXT) $(GODOT_DEFAULT_SMG) $(GODOT_ASAN)/test-project \
@@ -112,10 +143,12 @@ test-godot-asan: $(GODOT_ASAN_EXT) $(GODOT_ASAN_SHIM) $(GODOT_DEFAULT_SMG)
 
 # The demo project runs from bindings/godot/demo in the editor once the
 # extension and a graph are copied in (both git-ignored).
-godot-demo: $(GODOT_EXT) $(GODOT_DEFAULT_SMG)
+# body.gltf is the generated skinned body of the graph's skeleton.
+godot-demo: $(GODOT_EXT) $(GODOT_DEFAULT_SMG) $(DEMO_BODYGLTF)
 	@mkdir -p $(GODOT_DEMO)/bin $(GODOT_DEMO)/.godot
 	cp $(GODOT_EXT) $(GODOT_DEMO)/bin/
 	cp $(GODOT_DEFAULT_SMG) $(GODOT_DEMO)/default.smg
+	$(DEMO_BODYGLTF) $(GODOT_DEFAULT_SMG) $(GODOT_DEMO)/body.gltf
 	@echo 'res://smg.gdextension' > $(GODOT_DEMO)/.godot/extension_list.cfg
 
 godot-screenshot: godot-demo

@@ -41,6 +41,10 @@ static void usage(FILE* fp) {
       "  --unit M               file units in metres for --lower/--upper\n"
       "                         clips (CMU: 0.056444; default: guess)\n"
       "  --skip-tpose           drop frame 0 of --lower/--upper clips\n"
+      "  --target RIG           retarget every clip onto this rig (.bvh,\n"
+      "                         .gltf/.glb/.fbx); default: the first clip's\n"
+      "                         skeleton\n"
+      "  --target-unit M        rig file units in metres (default: guess)\n"
       "options:\n"
       "  -o, --output FILE      blob to write\n"
       "  --frame-rate HZ        working frame rate (default 30 or the\n"
@@ -190,10 +194,13 @@ static int info(const char* path) {
   for (i = 0; i < g.joint_count; ++i) {
     static const char* parts[] = {"root", "lower", "upper"};
     const smgi_joint* j = &g.joints[i];
-    printf("  %2u %-16s parent %3d  %-5s mirror %-16s mass %.3f\n", i,
-           g.strings + j->name, (int)j->parent,
+    printf("  %2u %-16s parent %3d  %-5s mirror %-16s mass %.3f  bone "
+           "%.3f m\n", i, g.strings + j->name, (int)j->parent,
            j->body_part < 3 ? parts[j->body_part] : "?",
-           g.strings + g.joints[j->mirror].name, j->mass_ratio);
+           g.strings + g.joints[j->mirror].name, j->mass_ratio,
+           sqrt((double)j->offset[0] * j->offset[0] +
+                (double)j->offset[1] * j->offset[1] +
+                (double)j->offset[2] * j->offset[2]));
   }
   printf("styles:");
   for (i = 0; i < g.style_count; ++i)
@@ -298,7 +305,8 @@ int main(int argc, char** argv) {
     const char* file;
   } extra[256];
   uint32_t nextra = 0;
-  const char *analyze = NULL, *reference = NULL;
+  const char *analyze = NULL, *reference = NULL, *target = NULL;
+  float target_unit = 0.0f;
   int verbose = 0;
 
   memset(&desc, 0, sizeof desc);
@@ -345,6 +353,10 @@ int main(int argc, char** argv) {
       i += 2;
     } else if (!strcmp(a, "--unit")) {
       NEED(1); if (!parse_float(a, v, &unit)) return 2; ++i;
+    } else if (!strcmp(a, "--target")) {
+      NEED(1); target = v; ++i;
+    } else if (!strcmp(a, "--target-unit")) {
+      NEED(1); if (!parse_float(a, v, &target_unit)) return 2; ++i;
     } else if (!strcmp(a, "--skip-tpose")) {
       skip = 1;
     } else if (!strcmp(a, "--frame-rate")) {
@@ -441,6 +453,10 @@ int main(int argc, char** argv) {
   desc.clips = descs;
   desc.clip_count = m.clip_count;
   desc.options.frame_rate = frame_rate > 0.0f ? frame_rate : m.frame_rate;
+  /* --target overrides the manifest's `target` */
+  desc.target_path = target ? target : m.target[0] ? m.target : NULL;
+  desc.target_unit_scale = target ? target_unit : m.target_unit;
+  desc.target_animation = target ? 0 : m.target_animation;
   ps.tty = isatty(2);
   ps.last_pct = -1;
   desc.progress = on_progress;

@@ -5,7 +5,9 @@
  *   smg-gen-clips OUTPUT_DIR
  *
  * Writes synthetic_{walk,run}_{straight,left,right}.bvh, synthetic_wave.bvh,
- * synthetic_punch.bvh and README.txt into OUTPUT_DIR (created if missing).
+ * synthetic_punch.bvh and README.txt into OUTPUT_DIR (created if missing),
+ * plus rig_mixamo_apose.bvh, the generated retargeting test rig
+ * (bake_synth_rig.c).
  * data/synthetic.manifest describes them for smg-bake.
  */
 #include <errno.h>
@@ -44,7 +46,14 @@ int main(int argc, char** argv) {
     return 1;
   }
   clock_gettime(CLOCK_MONOTONIC, &a);
-  r = smgb_synth_write_all(argv[1], &err);
+  {
+    /* the generated retargeting test rig (not a clip), first: the clip
+     * set's README.txt, written last, is the build's stamp */
+    char rig[4096];
+    snprintf(rig, sizeof rig, "%s/rig_mixamo_apose.bvh", argv[1]);
+    r = smgb_synth_write_rig(rig, &err);
+  }
+  if (r == SMG_OK) r = smgb_synth_write_all(argv[1], &err);
   clock_gettime(CLOCK_MONOTONIC, &b);
   if (r != SMG_OK) {
     fprintf(stderr, "smg-gen-clips: %s (%s)\n", err.message,

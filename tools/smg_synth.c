@@ -7,7 +7,8 @@
  *
  *   smg-synth -g BLOB -p PATH.txt [--transition S:style]... [--splice
  *             S:action]... [--seconds N] [--fps F] [--seed N] [--no-ik]
- *             [--csv FILE] -o OUT.bvh
+ *             [--no-steering] [--steer-turn-rate R] [--steer-slide-ratio F]
+ *             [--stop-seconds S] [--csv FILE] -o OUT.bvh
  *
  * PATH.txt holds one "x z" pair (metres) per line; '#' starts a comment.
  * style/action are names from the blob (smg-bake --info lists them) or
@@ -35,10 +36,13 @@ static void usage(FILE* f) {
           "[--splice S:action]...\n"
           "                 [--seconds N] [--fps F] [--seed N] [--no-ik] "
           "[--csv FILE] -o OUT.bvh\n"
+          "                 [--no-steering] [--steer-turn-rate RAD_PER_S] "
+          "[--steer-slide-ratio F] [--stop-seconds S]\n"
           "  PATH.txt: one \"x z\" point per line (metres, '#' comments)\n"
           "  S: arc length along the path (metres); style/action: name or "
           "index\n"
-          "  defaults: --seconds 10 --fps 30\n");
+          "  defaults: --seconds 10 --fps 30; steering on with the "
+          "library's limits (0 = default)\n");
 }
 
 static int fail(const char* what, smg_result r) {
@@ -188,7 +192,8 @@ int main(int argc, char** argv) {
   const char *blob = NULL, *path_file = NULL, *out_file = NULL,
              *csv_file = NULL;
   float seconds = 10.0f, fps = 30.0f;
-  uint32_t seed = 0, no_ik = 0;
+  uint32_t seed = 0, no_ik = 0, no_steering = 0;
+  float steer_turn = 0.0f, steer_slide = 0.0f, stop_seconds = 0.0f;
   constraint_arg cons[MAX_CONSTRAINTS];
   int ncons = 0;
   for (int i = 1; i < argc; ++i) {
@@ -199,6 +204,9 @@ int main(int argc, char** argv) {
       return 0;
     } else if (!strcmp(a, "--no-ik")) {
       no_ik = 1;
+      continue;
+    } else if (!strcmp(a, "--no-steering")) {
+      no_steering = 1;
       continue;
     }
     if (!v) {
@@ -221,6 +229,12 @@ int main(int argc, char** argv) {
       fps = strtof(v, NULL);
     } else if (!strcmp(a, "--seed")) {
       seed = (uint32_t)strtoul(v, NULL, 10);
+    } else if (!strcmp(a, "--steer-turn-rate")) {
+      steer_turn = strtof(v, NULL);
+    } else if (!strcmp(a, "--steer-slide-ratio")) {
+      steer_slide = strtof(v, NULL);
+    } else if (!strcmp(a, "--stop-seconds")) {
+      stop_seconds = strtof(v, NULL);
     } else if (!strcmp(a, "--transition") || !strcmp(a, "--splice")) {
       if (ncons == MAX_CONSTRAINTS ||
           !parse_constraint(v, a[2] == 's', &cons[ncons])) {
@@ -258,7 +272,12 @@ int main(int argc, char** argv) {
   d.path_capacity = n > 0 ? (uint32_t)n : 1u;
   d.constraint_capacity = ncons > 0 ? (uint32_t)ncons : 1u;
   d.seed = seed;
-  d.flags = no_ik ? SMG_CHARACTER_NO_IK : 0u;
+  d.flags = (no_ik ? SMG_CHARACTER_NO_IK : 0u) |
+            (no_steering ? SMG_CHARACTER_NO_STEERING : 0u);
+  /* the library checks them (negative or non-finite: invalid argument) */
+  d.steer_turn_rate = steer_turn;
+  d.steer_slide_ratio = steer_slide;
+  d.stop_seconds = stop_seconds;
   if (n > 0) {
     d.position[0] = xz[0];
     d.position[2] = xz[1];
@@ -317,7 +336,8 @@ int main(int argc, char** argv) {
     }
     fprintf(csv, "frame,time,root_x,root_y,root_z,ground_x,ground_z,heading,"
                  "style,action,left_contact,right_contact,path_distance,"
-                 "path_error,sync_rate,end_reached\n");
+                 "path_error,sync_rate,end_reached,steer_turn_rate,"
+                 "steer_slide_speed,playback_rate\n");
   }
   for (long i = 0; i < nframes; ++i) {
     if (i > 0 && (r = smg_character_step(ch, 1.0f / fps)) != SMG_OK) {
@@ -332,13 +352,14 @@ int main(int argc, char** argv) {
       s.struct_size = sizeof s;
       smg_character_get_state(ch, &s);
       fprintf(csv, "%ld,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%u,%u,%d,%d,%.6f,"
-                   "%.6f,%.4f,%d\n",
+                   "%.6f,%.4f,%d,%.5f,%.5f,%.4f\n",
               i, s.time, fr[0], fr[1], fr[2], s.position[0], s.position[2],
               s.heading, s.style, s.action,
               (s.flags & SMG_STATE_LEFT_CONTACT) != 0,
               (s.flags & SMG_STATE_RIGHT_CONTACT) != 0, s.path_distance,
               s.path_error, s.sync_rate,
-              (s.flags & SMG_STATE_PATH_END_REACHED) != 0);
+              (s.flags & SMG_STATE_PATH_END_REACHED) != 0,
+              s.steer_turn_rate, s.steer_slide_speed, s.playback_rate);
     }
   }
 

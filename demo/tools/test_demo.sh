@@ -2,12 +2,14 @@
 # test_demo.sh - the demo's smoke test (make test-demo): scripted drawings
 # rendered headless on one private Xvfb server with Mesa's software GL,
 # checked by smg-demo-pngcheck; then robustness.sh. See docs/demo.md.
-# usage: test_demo.sh SMG_DEMO PNGCHECK GOOD_BLOB SCRATCH_DIR
+# usage: test_demo.sh SMG_DEMO PNGCHECK GOOD_BLOB SCRATCH_DIR BODYTEST BODYGLTF
 set -eu
 demo=$1
 check=$2
 blob=$3
 dir=$4
+bodytest=$5
+bodygltf=$6
 mkdir -p "$dir"
 rm -f "$dir"/*.png "$dir"/*.log
 
@@ -33,9 +35,33 @@ echo "== demo smoke test (headless, Xvfb $DISPLAY + Mesa llvmpipe)"
 run() { echo "+ $*"; "$@"; }
 small="--no-hud --width 640 --height 360"
 
-# 1. A drawn path and the walking character are visible.
-run "$demo" --graph "$blob" --script demo/scripts/smoke.txt --frames 150 $small --screenshot "$dir/smoke.png"
-run "$check" "$dir/smoke.png" --size 640 360 --path 300 --character 150
+# 0. The generated body: mesh, bind pose, skinning matrices vs own FK + LBS;
+# the glTF writer writes it, and refuses a bad blob or an unwritable file.
+run "$bodytest" "$blob"
+run "$bodygltf" "$blob" "$dir/body.gltf"
+head -c 2048 /dev/urandom >"$dir/garbage.smg"
+for bad in "$dir/garbage.smg $dir/garbage.gltf" "$blob $dir/no-such-dir/body.gltf"; do
+  set +e
+  "$bodygltf" $bad 2>"$dir/gltf.err"
+  rc=$?
+  set -e
+  [ $rc -eq 1 ] && grep -q "smg-body-gltf: " "$dir/gltf.err" ||
+    { echo "test-demo: FAIL: smg-body-gltf $bad: exit $rc"; cat "$dir/gltf.err"; exit 1; }
+  echo "test-demo: ok   smg-body-gltf $bad: exit 1, \"$(head -1 "$dir/gltf.err")\""
+done
+rm -f "$dir/garbage.smg" "$dir/gltf.err"
+# 1. A drawn path and the walking skinned character are visible, its head
+# and hands where its skeleton projects.
+run "$demo" --graph "$blob" --script demo/scripts/smoke.txt --frames 150 $small --screenshot "$dir/smoke.png" \
+  >"$dir/smoke.log"
+cat "$dir/smoke.log"
+box=$(sed -n 's/^smg-demo: character 0 skeleton box //p' "$dir/smoke.log")
+[ -n "$box" ] || { echo "test-demo: FAIL: the demo did not print the skeleton's box"; exit 1; }
+run "$check" "$dir/smoke.png" --size 640 360 --path 300 --character 150 --inside $box 100
+# The capsule skeleton view (the toggle) draws the character too.
+printf 'frame 0 skeleton on\n' | cat demo/scripts/smoke.txt - >"$dir/skeleton.txt"
+run "$demo" --graph "$blob" --script "$dir/skeleton.txt" --frames 150 $small --screenshot "$dir/skeleton.png" >/dev/null
+run "$check" "$dir/skeleton.png" --size 640 360 --path 300 --character 150
 # 2. Fixed dt: the same run gives the same picture, byte for byte.
 run "$demo" --graph "$blob" --script demo/scripts/smoke.txt --frames 150 $small --screenshot "$dir/smoke2.png"
 run cmp "$dir/smoke.png" "$dir/smoke2.png"

@@ -136,7 +136,7 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
   if (r == SMG_OK) {
     b->J = b->skel.joint_count;
     b->stride = SMGB_STRIDE(b->J);
-    r = smgb_body_init(b);
+    r = smgb_body_init(b, NULL, clip->name);
   }
   if (r == SMG_OK)
     r = clip->frame_rate != frame_rate
@@ -363,6 +363,19 @@ smg_result smgb_analyze_file(const char* path, const char* reference,
               "%g x working frame)\n", path, clip.frame_count,
           (double)clip.frame_rate, a.frame_count, (double)frame_rate,
           a.file_offset, (double)(clip.frame_rate / frame_rate));
+  {
+    /* Units go wrong silently (a centimetre file read as metres walks at
+     * 100 m/s): show the leg length they give. */
+    smgb_roles roles;
+    smgb_roles_guess(&clip.skeleton, &roles);
+    fprintf(fp, "skeleton: %u joints, pelvis '%s', leg length %.3f m (unit "
+                "%s)\n", clip.skeleton.joint_count,
+            roles.joint[SMGB_ROLE_PELVIS] >= 0
+                ? clip.skeleton.names[roles.joint[SMGB_ROLE_PELVIS]]
+                : "?",
+            (double)smgb_roles_leg_length(&clip.skeleton, &roles),
+            unit_scale > 0.0f ? "given" : "guessed from the leg length");
+  }
   fprintf(fp, "foot contacts (the baker's labels):\n");
   print_strikes(fp, &a, "left", ls, nl);
   print_strikes(fp, &a, "right", rs, nr);

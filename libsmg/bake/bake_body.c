@@ -5,10 +5,10 @@
  * joint (by name), the leg chains, and which joints are measured by the
  * lower graph's point cloud and by Horn's torso fit.
  *
- * Names follow the CMU/BVH convention (Hips, LowerBack, LeftUpLeg, ...).
- * A skeleton without them is rejected with a message naming the joint.
+ * Which joint is which comes from the body roles (bake_roles.h: names of
+ * the common conventions, or a bone map); a skeleton without them is
+ * rejected with a message naming the file and the missing role.
  */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,40 +30,17 @@ static int in_subtree(const smgb_skeleton* s, uint32_t j, uint32_t root) {
   return 0;
 }
 
-/* Left<->Right, then a leading L<->R followed by an upper-case letter
- * (LHipJoint, RThumb). Writes the counterpart name or "" when none. */
-static void counterpart_name(const char* n, char* out, size_t size) {
-  const char* hit;
-  out[0] = '\0';
-  if ((hit = strstr(n, "Left")) != NULL) {
-    snprintf(out, size, "%.*sRight%s", (int)(hit - n), n, hit + 4);
-  } else if ((hit = strstr(n, "Right")) != NULL) {
-    snprintf(out, size, "%.*sLeft%s", (int)(hit - n), n, hit + 5);
-  } else if ((n[0] == 'L' || n[0] == 'R') && n[1] >= 'A' && n[1] <= 'Z') {
-    snprintf(out, size, "%c%s", n[0] == 'L' ? 'R' : 'L', n + 1);
-  }
-}
-
-static smg_result need_joint(smgb_bake* b, const char* name, uint32_t* out) {
-  int32_t j = smgb_skeleton_find(&b->skel, name);
-  if (j < 0) {
-    smgb_fail(b, "skeleton: unknown joint names for the body split: no "
-                 "joint named '%s' (expected the CMU/BVH names Hips, "
-                 "LowerBack, LeftUpLeg, LeftLeg, LeftFoot, LeftToeBase, "
-                 "Right...)", name);
-    return SMG_ERROR_INVALID_ARGUMENT;
-  }
-  *out = (uint32_t)j;
-  return SMG_OK;
-}
-
-smg_result smgb_body_init(smgb_bake* b) {
+smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
+                          const char* source) {
   const smgb_skeleton* s = &b->skel;
   smgb_body* body = &b->body;
   uint32_t J = s->joint_count, j;
-  static const char* const leg_names[2][4] = {
-      {"LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToeBase"},
-      {"RightUpLeg", "RightLeg", "RightFoot", "RightToeBase"}};
+  static const smgb_role leg_roles[2][4] = {
+      {SMGB_ROLE_LEFT_UPPER_LEG, SMGB_ROLE_LEFT_LOWER_LEG, SMGB_ROLE_LEFT_FOOT,
+       SMGB_ROLE_LEFT_TOES},
+      {SMGB_ROLE_RIGHT_UPPER_LEG, SMGB_ROLE_RIGHT_LOWER_LEG,
+       SMGB_ROLE_RIGHT_FOOT, SMGB_ROLE_RIGHT_TOES}};
+  smgb_error err;
   smg_result r;
   int i;
 
@@ -78,24 +55,23 @@ smg_result smgb_body_init(smgb_bake* b) {
     smgb_fail(b, "skeleton: %u joint(s); need a root, legs and a spine", J);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  if ((r = need_joint(b, "LowerBack", &body->spine_base)) != SMG_OK) {
-    /* Hierarchies without the CMU helper joint: the root's child that
-     * leads to "Spine". */
-    int32_t sp = smgb_skeleton_find(s, "Spine");
-    if (sp < 0) return r;
-    while (s->parents[sp] > 0) sp = s->parents[sp];
-    body->spine_base = (uint32_t)sp;
-    b->error[0] = '\0';
+  r = smgb_roles_find(s, bone_map, source, &body->roles, &err);
+  if (r != SMG_OK) {
+    smgb_fail(b, "%s", err.message);
+    return r;
   }
-  if (body->spine_base == 0) {
-    smgb_fail(b, "skeleton: the spine base cannot be the root joint");
+  if (body->roles.joint[SMGB_ROLE_PELVIS] != 0) {
+    smgb_fail(b, "%s: the pelvis '%s' must be the skeleton's root joint "
+                 "(joint 0 is '%s'); a static joint above a translating "
+                 "pelvis is folded away only by the BVH importer",
+              source ? source : "skeleton",
+              s->names[body->roles.joint[SMGB_ROLE_PELVIS]], s->names[0]);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
+  body->spine_base = (uint32_t)body->roles.joint[SMGB_ROLE_SPINE_BASE];
   for (i = 0; i < 4; ++i) {
-    if ((r = need_joint(b, leg_names[0][i], &body->left_leg[i])) != SMG_OK)
-      return r;
-    if ((r = need_joint(b, leg_names[1][i], &body->right_leg[i])) != SMG_OK)
-      return r;
+    body->left_leg[i] = (uint32_t)body->roles.joint[leg_roles[0][i]];
+    body->right_leg[i] = (uint32_t)body->roles.joint[leg_roles[1][i]];
   }
   for (i = 0; i < 4; ++i) {
     if (in_subtree(s, body->left_leg[i], body->spine_base) ||
@@ -116,21 +92,28 @@ smg_result smgb_body_init(smgb_bake* b) {
     smgb_fail(b, "out of memory (body tables)");
     return SMG_ERROR_OUT_OF_MEMORY;
   }
+  {
+    int32_t* partner = (int32_t*)malloc(sizeof *partner * J);
+    if (!partner) {
+      smgb_fail(b, "out of memory (body tables)");
+      return SMG_ERROR_OUT_OF_MEMORY;
+    }
+    /* The rule smgb_clip_mirror_partners is given, so the blob's mirror
+     * table matches the mirrored clips. */
+    smgb_roles_partners(s, &body->roles, partner);
+    for (j = 0; j < J; ++j) body->mirror[j] = (uint32_t)partner[j];
+    free(partner);
+  }
   for (j = 0; j < J; ++j) {
-    char other[SMGB_NAME_MAX + 8];
-    int32_t m;
     body->body_part[j] = j == 0 ? SMG_BODY_ROOT
                          : in_subtree(s, j, body->spine_base) ? SMG_BODY_UPPER
                                                                : SMG_BODY_LOWER;
-    counterpart_name(s->names[j], other, sizeof other);
-    m = other[0] ? smgb_skeleton_find(s, other) : -1;
-    body->mirror[j] = m >= 0 ? (uint32_t)m : j;
     if (body->body_part[j] != SMG_BODY_UPPER && (j == 0 || has_length(s, j)))
       body->lower_points[body->lower_point_count++] = j;
   }
-  /* Torso points for Horn: the spine base's subtree cut at the arms
-   * (the shoulder joint "…Arm" is kept, what hangs below it moves with the
-   * action and must not steer the fit). */
+  /* Torso points for Horn: the spine base's subtree cut at the arms (the
+   * upper-arm joint is kept, what hangs below it moves with the action and
+   * must not steer the fit). */
   for (j = 0; j < J; ++j) {
     int32_t p = s->parents[j];
     int below_arm = 0;
@@ -138,7 +121,9 @@ smg_result smgb_body_init(smgb_bake* b) {
         !has_length(s, j))
       continue;
     while (p >= 0 && (uint32_t)p != body->spine_base) {
-      if (strstr(s->names[p], "Arm")) below_arm = 1;
+      if (p == body->roles.joint[SMGB_ROLE_LEFT_UPPER_ARM] ||
+          p == body->roles.joint[SMGB_ROLE_RIGHT_UPPER_ARM])
+        below_arm = 1;
       p = s->parents[p];
     }
     if (!below_arm) body->torso_points[body->torso_point_count++] = j;
@@ -149,7 +134,7 @@ smg_result smgb_body_init(smgb_bake* b) {
               s->names[body->spine_base]);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  body->leg_length = smgb_skeleton_leg_length(s);
+  body->leg_length = smgb_roles_leg_length(s, &body->roles);
   return smgb_segments_init(b);
 }
 

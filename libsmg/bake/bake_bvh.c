@@ -9,11 +9,15 @@
  * acting on column vectors, local to the parent).
  *
  * Position channels *replace* the matching OFFSET component: on the root they
- * give the per-frame root translation; on other joints they are accepted only
- * when constant over the clip (several exporters write 6 channels on every
- * joint with the rest offset repeated), in which case they become that
- * joint's offset. Animated non-root translation cannot be represented in the
- * pose layout and is rejected with SMG_ERROR_UNSUPPORTED.
+ * give the per-frame root translation. A static root (all channels constant)
+ * with one child whose position channels move - Bandai Namco's joint_Root
+ * above Hips, MotionBuilder and game-rig exports - is folded into that
+ * child, which becomes joint 0 and carries the translation. On other joints
+ * position channels become the joint's fixed offset: their value when
+ * constant (exporters that write 6 channels everywhere), their mean when
+ * they wobble by at most 5 % of the bone (solver noise); real animated
+ * translation below the root cannot be represented in the pose layout and
+ * is rejected with SMG_ERROR_UNSUPPORTED naming the joint.
  *
  * The input is untrusted: every error names file:line and the problem, all
  * memory is bounded (joint, frame and byte caps, allocation never exceeds
@@ -245,6 +249,11 @@ typedef struct bvh_hier {
   bvh_joint* joints;
   uint32_t count;
   uint32_t channels; /* values per frame line */
+  /* Static joints above the translating pelvis (Bandai's joint_Root):
+   * joints 0..root-1 are folded into `root`, the clip's joint 0, with
+   * their constant transform (fold_t, fold_q) applied to its motion. */
+  uint32_t root;
+  double fold_t[3], fold_q[4];
 } bvh_hier;
 
 static int hier_add_joint(bvh_lexer* lx, bvh_hier* h, int32_t parent) {
@@ -476,33 +485,61 @@ static long read_row(bvh_lexer* lx, double* row, uint32_t want) {
   return n;
 }
 
-/* Convert one parsed frame (row of channel values, file units) to a pose. */
+/* Local rotation of joint ji from its channels in `row`. */
+static void joint_rotation(const bvh_joint* j, const double* row, double q[4]) {
+  uint32_t c;
+  q[0] = q[1] = q[2] = 0.0;
+  q[3] = 1.0;
+  for (c = 0; c < j->channel_count; ++c) {
+    int ch = j->channels[c];
+    if (ch > CH_ZPOS) {
+      double r[4];
+      smgb_qaxis(ch - CH_XROT, row[j->first_channel + c] * (SMGB_PI / 180.0),
+                 r);
+      smgb_qmul(q, r, q);
+    }
+  }
+  smgb_qnormalize(q);
+}
+
+/* Local translation of joint ji: its OFFSET with position channels
+ * replacing the matching components. */
+static void joint_translation(const bvh_joint* j, const double* row,
+                              double t[3]) {
+  uint32_t c;
+  t[0] = j->offset[0];
+  t[1] = j->offset[1];
+  t[2] = j->offset[2];
+  for (c = 0; c < j->channel_count; ++c)
+    if (j->channels[c] <= CH_ZPOS) t[j->channels[c]] = row[j->first_channel + c];
+}
+
+/* Convert one parsed frame (row of channel values, file units) to a pose of
+ * the joints h->root.. (the folded static joints above contribute their
+ * constant transform to the root). */
 static void row_to_pose(const bvh_hier* h, const double* row, double scale,
                         float* pose) {
-  uint32_t ji, c;
+  uint32_t ji;
   double root[3];
-  root[0] = h->joints[0].offset[0];
-  root[1] = h->joints[0].offset[1];
-  root[2] = h->joints[0].offset[2];
-  for (ji = 0; ji < h->count; ++ji) {
-    const bvh_joint* j = &h->joints[ji];
-    double q[4] = {0.0, 0.0, 0.0, 1.0};
-    for (c = 0; c < j->channel_count; ++c) {
-      double v = row[j->first_channel + c];
-      int ch = j->channels[c];
-      if (ch <= CH_ZPOS) {
-        if (ji == 0) root[ch] = v;
-      } else {
-        double r[4];
-        smgb_qaxis(ch - CH_XROT, v * (SMGB_PI / 180.0), r);
-        smgb_qmul(q, r, q);
-      }
+  for (ji = h->root; ji < h->count; ++ji) {
+    double q[4];
+    float* o = pose + 3 + 4 * (ji - h->root);
+    joint_rotation(&h->joints[ji], row, q);
+    if (ji == h->root && h->root > 0) {
+      smgb_qmul(h->fold_q, q, q);
+      smgb_qnormalize(q);
     }
-    smgb_qnormalize(q);
-    pose[3 + 4 * ji + 0] = (float)q[0];
-    pose[3 + 4 * ji + 1] = (float)q[1];
-    pose[3 + 4 * ji + 2] = (float)q[2];
-    pose[3 + 4 * ji + 3] = (float)q[3];
+    o[0] = (float)q[0];
+    o[1] = (float)q[1];
+    o[2] = (float)q[2];
+    o[3] = (float)q[3];
+  }
+  joint_translation(&h->joints[h->root], row, root);
+  if (h->root > 0) {
+    smgb_qrot(h->fold_q, root, root);
+    root[0] += h->fold_t[0];
+    root[1] += h->fold_t[1];
+    root[2] += h->fold_t[2];
   }
   pose[0] = (float)(root[0] * scale);
   pose[1] = (float)(root[1] * scale);
@@ -551,7 +588,7 @@ static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
   free(parents);
   if (!(size > 0.0)) {
     /* Hips height: the root's Y position channel in the first frame. */
-    const bvh_joint* r = &h->joints[0];
+    const bvh_joint* r = &h->joints[h->root];
     for (k = 0; k < r->channel_count; ++k)
       if (r->channels[k] == CH_YPOS && first_row)
         size = fabs(first_row[r->first_channel + k]) * 0.9;
@@ -567,31 +604,115 @@ static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
   return best;
 }
 
-/* Non-root position channels: fold constant ones into the offset, reject
- * animated ones. `rows` holds frame_count rows of h->channels values. */
+/* Is column `col` constant over the clip (to float rounding)? */
+static int column_constant(const bvh_hier* h, const double* rows,
+                           uint32_t frame_count, uint32_t col) {
+  double v0 = rows[col];
+  uint32_t f;
+  for (f = 1; f < frame_count; ++f)
+    if (fabs(rows[(size_t)f * h->channels + col] - v0) >
+        1e-5 * (1.0 + fabs(v0)))
+      return 0;
+  return 1;
+}
+
+/* A static root above a translating pelvis (Bandai Namco's joint_Root over
+ * Hips; MotionBuilder and game-rig exports): while joint `root` never moves
+ * (all its channels constant), has exactly one child and that child's
+ * position channels move, fold it into the child. Folding is lossless (the
+ * child's world transform is the static one times its own) and makes the
+ * translating pelvis joint 0, which the runtime requires. */
+static void fold_static_root(bvh_hier* h, const double* rows,
+                             uint32_t frame_count) {
+  h->fold_t[0] = h->fold_t[1] = h->fold_t[2] = 0.0;
+  h->fold_q[0] = h->fold_q[1] = h->fold_q[2] = 0.0;
+  h->fold_q[3] = 1.0;
+  h->root = 0;
+  for (;;) {
+    const bvh_joint* j = &h->joints[h->root];
+    const bvh_joint* child;
+    uint32_t c, k, children = 0;
+    int child_moves = 0;
+    double t[3], q[4];
+    for (c = 0; c < j->channel_count; ++c)
+      if (!column_constant(h, rows, frame_count, j->first_channel + c)) return;
+    for (k = h->root + 1; k < h->count; ++k)
+      if (h->joints[k].parent == (int32_t)h->root) ++children;
+    /* The first child in file order is the next joint. */
+    if (children != 1 || h->root + 1 >= h->count) return;
+    child = &h->joints[h->root + 1];
+    for (c = 0; c < child->channel_count; ++c)
+      if (child->channels[c] <= CH_ZPOS &&
+          !column_constant(h, rows, frame_count, child->first_channel + c))
+        child_moves = 1;
+    if (!child_moves) return;
+    joint_translation(j, rows, t);
+    joint_rotation(j, rows, q);
+    smgb_qrot(h->fold_q, t, t);
+    h->fold_t[0] += t[0];
+    h->fold_t[1] += t[1];
+    h->fold_t[2] += t[2];
+    smgb_qmul(h->fold_q, q, h->fold_q);
+    smgb_qnormalize(h->fold_q);
+    h->root++;
+  }
+}
+
+/* Position channels of joints below the (folded) root. The pose layout
+ * holds rotations only below the root, so each becomes a fixed offset:
+ * constant channels give their value (a position channel replaces the
+ * OFFSET); channels that wobble by at most SMGB_BVH_POSITION_WOBBLE of
+ * the bone's length (solver noise, stretch markers) give their mean; a
+ * joint that really translates is rejected, naming it. `rows` holds
+ * frame_count rows of h->channels values. */
+#define SMGB_BVH_POSITION_WOBBLE 0.05
 static int fold_joint_positions(bvh_lexer* lx, bvh_hier* h,
                                 const double* rows, uint32_t frame_count) {
   uint32_t ji, c, f;
-  for (ji = 1; ji < h->count; ++ji) {
+  for (ji = h->root + 1; ji < h->count; ++ji) {
     bvh_joint* j = &h->joints[ji];
+    double mean[3], lo[3], hi[3], len = 0.0, spread = 0.0;
+    int has_pos = 0, axis;
+    uint32_t worst_frame = 0;
+    for (axis = 0; axis < 3; ++axis) {
+      mean[axis] = lo[axis] = hi[axis] = j->offset[axis];
+    }
     for (c = 0; c < j->channel_count; ++c) {
       uint32_t col = j->first_channel + c;
-      double v0;
-      if (j->channels[c] > CH_ZPOS) continue;
-      v0 = rows[col];
-      for (f = 1; f < frame_count; ++f) {
+      double sum = 0.0;
+      axis = j->channels[c];
+      if (axis > CH_ZPOS) continue;
+      has_pos = 1;
+      lo[axis] = hi[axis] = rows[col];
+      for (f = 0; f < frame_count; ++f) {
         double v = rows[(size_t)f * h->channels + col];
-        if (fabs(v - v0) > 1e-5 * (1.0 + fabs(v0))) {
-          smgb_imp_errorf(lx->err,
-                          "%s:%u: joint '%s' has animated position channels "
-                          "(frame %u differs from frame 0); only the root may "
-                          "translate",
-                          lx->name, j->channels_line, j->name, f);
-          return 0;
+        sum += v;
+        if (v < lo[axis]) lo[axis] = v;
+        if (v > hi[axis]) {
+          hi[axis] = v;
+          worst_frame = f;
         }
       }
-      j->offset[j->channels[c]] = v0;
+      mean[axis] = sum / frame_count;
     }
+    if (!has_pos) continue;
+    for (axis = 0; axis < 3; ++axis) {
+      len += mean[axis] * mean[axis];
+      if (hi[axis] - lo[axis] > spread) spread = hi[axis] - lo[axis];
+    }
+    len = sqrt(len);
+    if (spread > 1e-5 * (1.0 + len) &&
+        spread > SMGB_BVH_POSITION_WOBBLE * len) {
+      smgb_imp_errorf(lx->err,
+                      "%s:%u: joint '%s' has animated position channels "
+                      "(they move %.4g units, e.g. at frame %u, on a bone "
+                      "%.4g long); only the root, or the one joint below a "
+                      "static root, may translate",
+                      lx->name, j->channels_line, j->name, spread,
+                      worst_frame, len);
+      return 0;
+    }
+    for (axis = 0; axis < 3; ++axis) j->offset[axis] = mean[axis];
   }
   return 1;
 }
@@ -604,7 +725,7 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
   smg_result res = SMG_ERROR_PARSE;
   double frames_d, ft, scale;
   uint32_t frames, capacity, nread = 0, first, kept, ji, f;
-  uint32_t frames_line, stride;
+  uint32_t frames_line, stride, count;
   double* rows = NULL;
   size_t remaining, max_by_bytes;
   smgb_clip clip;
@@ -758,6 +879,7 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
                     name, lx.line, nread, frames, frames_line, frames);
     goto done;
   }
+  fold_static_root(&h, rows, frames);
   if (!fold_joint_positions(&lx, &h, rows, frames)) {
     res = SMG_ERROR_UNSUPPORTED;
     goto done;
@@ -775,26 +897,28 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
   scale = unit_scale > 0.0f ? (double)unit_scale
                             : guess_unit_scale(&h, rows + (size_t)first * h.channels);
 
-  /* Build the clip. */
+  /* Build the clip: joints h.root.. (static joints above were folded). */
   res = SMG_ERROR_OUT_OF_MEMORY;
-  clip.skeleton.joint_count = h.count;
+  count = h.count - h.root;
+  clip.skeleton.joint_count = count;
   clip.skeleton.names =
-      (char(*)[SMGB_NAME_MAX])calloc(h.count, sizeof *clip.skeleton.names);
-  clip.skeleton.parents = (int32_t*)calloc(h.count, sizeof(int32_t));
-  clip.skeleton.offsets = (float(*)[3])calloc(h.count, sizeof *clip.skeleton.offsets);
-  stride = SMGB_STRIDE(h.count);
+      (char(*)[SMGB_NAME_MAX])calloc(count, sizeof *clip.skeleton.names);
+  clip.skeleton.parents = (int32_t*)calloc(count, sizeof(int32_t));
+  clip.skeleton.offsets = (float(*)[3])calloc(count, sizeof *clip.skeleton.offsets);
+  stride = SMGB_STRIDE(count);
   clip.poses = (float*)malloc(sizeof(float) * (size_t)kept * stride);
   if (!clip.skeleton.names || !clip.skeleton.parents ||
       !clip.skeleton.offsets || !clip.poses) {
     smgb_imp_errorf(err, "%s: out of memory", name);
     goto done;
   }
-  for (ji = 0; ji < h.count; ++ji) {
-    memcpy(clip.skeleton.names[ji], h.joints[ji].name, SMGB_NAME_MAX);
-    clip.skeleton.parents[ji] = h.joints[ji].parent;
-    clip.skeleton.offsets[ji][0] = (float)(h.joints[ji].offset[0] * scale);
-    clip.skeleton.offsets[ji][1] = (float)(h.joints[ji].offset[1] * scale);
-    clip.skeleton.offsets[ji][2] = (float)(h.joints[ji].offset[2] * scale);
+  for (ji = 0; ji < count; ++ji) {
+    const bvh_joint* j = &h.joints[h.root + ji];
+    memcpy(clip.skeleton.names[ji], j->name, SMGB_NAME_MAX);
+    clip.skeleton.parents[ji] = ji == 0 ? -1 : j->parent - (int32_t)h.root;
+    clip.skeleton.offsets[ji][0] = (float)(j->offset[0] * scale);
+    clip.skeleton.offsets[ji][1] = (float)(j->offset[1] * scale);
+    clip.skeleton.offsets[ji][2] = (float)(j->offset[2] * scale);
   }
   for (f = 0; f < kept; ++f) {
     float* pose = clip.poses + (size_t)f * stride;
@@ -803,7 +927,7 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
       /* Hemisphere continuity: q and -q are the same rotation; keep
        * consecutive frames on the same side so interpolation is short. */
       const float* prev = pose - stride;
-      for (ji = 0; ji < h.count; ++ji) {
+      for (ji = 0; ji < count; ++ji) {
         float* q = pose + 3 + 4 * ji;
         const float* p = prev + 3 + 4 * ji;
         if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] + q[3] * p[3] < 0.0f) {

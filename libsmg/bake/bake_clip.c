@@ -8,13 +8,14 @@
  * rotation per joint. FK: W_0 = q_0, P_0 = t; W_j = W_parent q_j,
  * P_j = P_parent + W_parent offset_j.
  */
-#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bake_clip.h"
+#include "bake_graph.h" /* smgb_horn */
 #include "bake_import_util.h"
+#include "bake_roles.h"
 
 /* ---- skeleton ------------------------------------------------------------ */
 
@@ -66,38 +67,11 @@ int32_t smgb_skeleton_find(const smgb_skeleton* s, const char* name) {
   return -1;
 }
 
-static int32_t find_any(const smgb_skeleton* s, const char* const* names) {
-  for (; *names; ++names) {
-    int32_t j = smgb_skeleton_find(s, *names);
-    if (j >= 0) return j;
-  }
-  return -1;
-}
-
 float smgb_skeleton_leg_length(const smgb_skeleton* s) {
-  static const char* const hips[] = {"LeftUpLeg", "LeftHip", "LeftThigh",
-                                     "LeftUpperLeg", "LHip", "l_hip",
-                                     "thigh_l", "Left_Hip", NULL};
-  static const char* const ankles[] = {"LeftFoot", "LeftAnkle", "LFoot",
-                                       "LAnkle", "l_ankle", "foot_l",
-                                       "Left_Ankle", "Left_Foot", NULL};
-  int32_t hip, j;
-  double len = 0.0;
+  smgb_roles r;
   if (!s || !s->names || !s->parents || !s->offsets) return 0.0f;
-  hip = find_any(s, hips);
-  j = find_any(s, ankles);
-  if (hip < 0 || j < 0) return 0.0f;
-  /* Sum of bone lengths from the ankle up to the hip: independent of how
-   * bent the rest pose is. */
-  while (j != hip) {
-    const float* o;
-    if (j <= 0) return 0.0f; /* the ankle is not below the hip */
-    o = s->offsets[j];
-    len += sqrt((double)o[0] * o[0] + (double)o[1] * o[1] + (double)o[2] * o[2]);
-    j = s->parents[j];
-    if (j < 0 || (uint32_t)j >= s->joint_count) return 0.0f;
-  }
-  return (float)len;
+  smgb_roles_guess(s, &r);
+  return smgb_roles_leg_length(s, &r);
 }
 
 /* ---- clip ---------------------------------------------------------------- */
@@ -211,83 +185,236 @@ smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
 
 /* ---- mirroring ----------------------------------------------------------- */
 
-/* Writes the left/right counterpart name of `name` into `out`, or returns 0
- * when the name has no side. Recognised (after an optional "ns:" prefix):
- * Left.../Right..., L.../R... followed by an upper-case letter or '_' (CMU's
- * LHipJoint, LThumb), left_/right_ and l_/r_ prefixes, and _L/_R, .L/.R,
- * _l/_r suffixes. */
-static int counterpart_name(const char* name, char out[SMGB_NAME_MAX]) {
-  const char* base = strip_namespace(name);
-  size_t pre = (size_t)(base - name), n = strlen(base);
-  char tmp[SMGB_NAME_MAX * 2];
-  const char* rest = NULL;
-  const char* repl = NULL;
-  if (strncmp(base, "Left", 4) == 0) { repl = "Right"; rest = base + 4; }
-  else if (strncmp(base, "Right", 5) == 0) { repl = "Left"; rest = base + 5; }
-  else if (strncmp(base, "left", 4) == 0) { repl = "right"; rest = base + 4; }
-  else if (strncmp(base, "right", 5) == 0) { repl = "left"; rest = base + 5; }
-  else if ((base[0] == 'L' || base[0] == 'R' || base[0] == 'l' ||
-            base[0] == 'r') &&
-           (isupper((unsigned char)base[1]) || base[1] == '_')) {
-    static const char* const swap[4] = {"R", "L", "r", "l"};
-    repl = swap[base[0] == 'L' ? 0 : base[0] == 'R' ? 1 : base[0] == 'l' ? 2 : 3];
-    rest = base + 1;
-  }
-  if (repl) {
-    snprintf(tmp, sizeof tmp, "%.*s%s%s", (int)pre, name, repl, rest);
-  } else if (n >= 2 && (base[n - 2] == '_' || base[n - 2] == '.') &&
-             (base[n - 1] == 'L' || base[n - 1] == 'R' || base[n - 1] == 'l' ||
-              base[n - 1] == 'r')) {
-    char c = base[n - 1];
-    snprintf(tmp, sizeof tmp, "%s", name);
-    tmp[pre + n - 1] = c == 'L' ? 'R' : c == 'R' ? 'L' : c == 'l' ? 'r' : 'l';
+/* Child directions that disagree with their reflected partners by less
+ * than this are a symmetric rig's measurement noise (CMU: a few degrees),
+ * reflected as they are; beyond it the rig's joint frames are not mirror
+ * images of each other (Bandai Namco, Maya/MotionBuilder joint orients:
+ * 90-180 deg) and the joint gets a constant correction. */
+#define SMGB_MIRROR_SYMMETRIC_DEG 20.0
+
+static double angle_between(const double a[3], const double b[3]) {
+  double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  double c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+  return acos(c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c) * (180.0 / SMGB_PI);
+}
+
+/* Shortest rotation taking direction a to direction b. */
+static void shortest_arc(const double a[3], const double b[3], double q[4]) {
+  double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  double d = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+  if (d < -0.999999) {
+    /* Opposite: half a turn about any axis perpendicular to a. */
+    double ax[3] = {0.0, -a[2], a[1]};
+    if (ax[1] * ax[1] + ax[2] * ax[2] < 1e-12 * la * la) {
+      ax[0] = -a[1];
+      ax[1] = a[0];
+      ax[2] = 0.0;
+    }
+    q[0] = ax[0]; q[1] = ax[1]; q[2] = ax[2]; q[3] = 0.0;
   } else {
-    return 0;
+    q[0] = (a[1] * b[2] - a[2] * b[1]) / (la * lb);
+    q[1] = (a[2] * b[0] - a[0] * b[2]) / (la * lb);
+    q[2] = (a[0] * b[1] - a[1] * b[0]) / (la * lb);
+    q[3] = 1.0 + d;
   }
-  if (strlen(tmp) >= SMGB_NAME_MAX) return 0;
-  memcpy(out, tmp, strlen(tmp) + 1);
-  return 1;
+  smgb_qnormalize(q);
+}
+
+static int is_identity(const double q[4]) {
+  return q[0] == 0.0 && q[1] == 0.0 && q[2] == 0.0;
+}
+
+/* Mean local rotation of every joint over the clip (sign-aligned to the
+ * first frame, normalised sum). */
+static void mean_rotations(const smgb_clip* c, double (*mean)[4]) {
+  uint32_t J = c->skeleton.joint_count, S = SMGB_STRIDE(J), f, j;
+  for (j = 0; j < J; ++j) {
+    const float* q0 = c->poses + 3 + 4 * j;
+    double* m = mean[j];
+    m[0] = m[1] = m[2] = m[3] = 0.0;
+    for (f = 0; f < c->frame_count; ++f) {
+      const float* q = c->poses + (size_t)f * S + 3 + 4 * j;
+      double sg = q[0] * q0[0] + q[1] * q0[1] + q[2] * q0[2] + q[3] * q0[3];
+      sg = sg < 0.0 ? -1.0 : 1.0;
+      m[0] += sg * q[0]; m[1] += sg * q[1]; m[2] += sg * q[2]; m[3] += sg * q[3];
+    }
+    smgb_qnormalize(m);
+  }
+}
+
+/* Q_j for every joint: the constant rotation with Q_j o_k = S o_partner(k)
+ * for j's children k (S = reflection x -> -x), so that the reflected pose
+ * W'_j = S W_partner(j) S Q_j puts every child where the mirror image of
+ * the partner's child is, on the unchanged skeleton; the local rotations
+ * become q'_j = Q_parent^-1 (S q_partner S) Q_j.
+ *
+ * Several children fix Q_j (Horn's least-squares fit). One child leaves a
+ * twist about it free, no child leaves Q_j free: these are chosen so that
+ * the clip's mean local rotation of the partner, mirrored, equals the
+ * joint's own mean (a gait's left and right sides are mirror images on
+ * average). Any other twist would be a valid mirror too, but the split of
+ * a twist between a chain's joints (Spine -> Chest, a whole arm) would
+ * then differ between a clip and its mirror, and a transition blending
+ * the two local rotations would spin that limb through the twist.
+ * Children already agreeing within SMGB_MIRROR_SYMMETRIC_DEG under an
+ * uncorrected parent give the identity (symmetric rigs such as CMU are
+ * reflected exactly as before). Parents precede children, so one forward
+ * pass sees Q_parent first. fix[j]: Q_j is not the identity. */
+static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
+                               double (*Q)[4], uint8_t* fix) {
+  const smgb_skeleton* s = &c->skeleton;
+  uint32_t J = s->joint_count, j, k;
+  double* a = (double*)malloc(sizeof(double) * 6 * J);
+  double(*mean)[4] = (double(*)[4])malloc(sizeof *mean * J);
+  /* unpaired[j]: j has no counterpart but hangs below a joint that has
+   * one (a prop or extra chain on one hand). Its "partner" is itself, so
+   * its offset says nothing about the rig's frames: it keeps its parent's
+   * correction and does not take part in its parent's fit. */
+  uint8_t* unpaired = (uint8_t*)calloc(J, 1);
+  uint8_t* sided = (uint8_t*)calloc(J, 1);
+  if (mean) mean_rotations(c, mean);
+  for (j = 0; j < J && sided && unpaired; ++j) {
+    int32_t p = s->parents[j];
+    sided[j] = partner[j] != (int32_t)j || (p >= 0 && sided[p]);
+    unpaired[j] = sided[j] && partner[j] == (int32_t)j;
+  }
+  for (j = 0; j < J; ++j) {
+    static const double ident[4] = {0.0, 0.0, 0.0, 1.0};
+    const double* qp = j > 0 ? Q[s->parents[j]] : ident;
+    uint32_t n = 0;
+    int asym = 0;
+    Q[j][0] = Q[j][1] = Q[j][2] = 0.0;
+    Q[j][3] = 1.0;
+    if (unpaired && unpaired[j]) {
+      memcpy(Q[j], qp, sizeof Q[j]);
+      continue;
+    }
+    for (k = j + 1; k < J && a; ++k) {
+      const float* o = s->offsets[k];
+      const float* m = s->offsets[partner[k]];
+      double* ak = a + 6 * n;
+      if (s->parents[k] != (int32_t)j || (unpaired && unpaired[k])) continue;
+      ak[0] = o[0]; ak[1] = o[1]; ak[2] = o[2];
+      ak[3] = -m[0]; ak[4] = m[1]; ak[5] = m[2];
+      if (ak[0] * ak[0] + ak[1] * ak[1] + ak[2] * ak[2] < 1e-12 ||
+          ak[3] * ak[3] + ak[4] * ak[4] + ak[5] * ak[5] < 1e-12)
+        continue; /* zero-length helper joint: no direction */
+      if (angle_between(ak, ak + 3) > SMGB_MIRROR_SYMMETRIC_DEG) asym = 1;
+      ++n;
+    }
+    if (!asym && (n >= 2 || is_identity(qp))) continue;
+    if (n >= 2) {
+      double* from = (double*)malloc(sizeof(double) * 6 * n);
+      uint32_t i;
+      if (!from) continue;
+      for (i = 0; i < n; ++i) {
+        memcpy(from + 3 * i, a + 6 * i, sizeof(double) * 3);
+        memcpy(from + 3 * (n + i), a + 6 * i + 3, sizeof(double) * 3);
+      }
+      smgb_horn(from, from + 3 * n, NULL, n, Q[j]);
+      smgb_qnormalize(Q[j]);
+      free(from);
+    } else if (mean && a) {
+      /* M = Q_parent^-1 (S mean_partner S): the mirrored mean before Q_j.
+       * No child: Q_j = M^-1 mean_j. One child: Q_j = base R(axis, t) with
+       * base taking the child's direction onto its target and t the twist
+       * of (M base)^-1 mean_j about the child's direction. */
+      const double* mp = mean[partner[j]];
+      double mir[4] = {mp[0], -mp[1], -mp[2], mp[3]}, inv[4], M[4], D[4];
+      smgb_qconj(qp, inv);
+      smgb_qmul(inv, mir, M);
+      if (n == 0) {
+        smgb_qconj(M, inv);
+        smgb_qmul(inv, mean[j], Q[j]);
+      } else {
+        double base[4], axis[3], len, t, tw[4];
+        shortest_arc(a, a + 3, base);
+        smgb_qmul(M, base, D);
+        smgb_qconj(D, inv);
+        smgb_qmul(inv, mean[j], D);
+        len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        axis[0] = a[0] / len; axis[1] = a[1] / len; axis[2] = a[2] / len;
+        t = 2.0 * atan2(D[0] * axis[0] + D[1] * axis[1] + D[2] * axis[2],
+                        D[3]);
+        smgb_qaxis_angle(axis, t, tw);
+        smgb_qmul(base, tw, Q[j]);
+      }
+      smgb_qnormalize(Q[j]);
+    }
+  }
+  for (j = 0; j < J; ++j) fix[j] = !is_identity(Q[j]);
+  free(a);
+  free(mean);
+  free(unpaired);
+  free(sided);
 }
 
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
+  int32_t* partner;
+  smg_result r;
+  if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
+  partner = (int32_t*)malloc(sizeof *partner * src->skeleton.joint_count);
+  if (!partner) return SMG_ERROR_OUT_OF_MEMORY;
+  smgb_roles_partners(&src->skeleton, NULL, partner);
+  /* Non-negative indices; signed and unsigned variants may alias. */
+  r = smgb_clip_mirror_partners(src, (const uint32_t*)partner, out);
+  free(partner);
+  return r;
+}
+
+smg_result smgb_clip_mirror_partners(const smgb_clip* src,
+                                     const uint32_t* partner_in,
+                                     smgb_clip* out) {
   smgb_clip c;
   smg_result r;
   uint32_t J, j, f, stride;
   int32_t* partner;
-  if (!clip_valid(src) || !out) return SMG_ERROR_INVALID_ARGUMENT;
+  double(*Q)[4];
+  uint8_t* fix;
+  if (!clip_valid(src) || !out || !partner_in)
+    return SMG_ERROR_INVALID_ARGUMENT;
   J = src->skeleton.joint_count;
   stride = SMGB_STRIDE(J);
   partner = (int32_t*)malloc(sizeof *partner * J);
-  if (!partner) return SMG_ERROR_OUT_OF_MEMORY;
-  for (j = 0; j < J; ++j) {
-    char other[SMGB_NAME_MAX];
-    int32_t k = -1;
-    if (counterpart_name(src->skeleton.names[j], other)) {
-      uint32_t i;
-      for (i = 0; i < J; ++i)
-        if (strcmp(src->skeleton.names[i], other) == 0) k = (int32_t)i;
-    }
-    partner[j] = k >= 0 ? k : (int32_t)j;
+  Q = (double(*)[4])malloc(sizeof *Q * J);
+  fix = (uint8_t*)malloc(J);
+  if (!partner || !Q || !fix) {
+    free(partner);
+    free(Q);
+    free(fix);
+    return SMG_ERROR_OUT_OF_MEMORY;
   }
+  for (j = 0; j < J; ++j)
+    partner[j] = partner_in[j] < J ? (int32_t)partner_in[j] : (int32_t)j;
   /* Only swap true pairs (A->B and B->A); anything else stays in place. */
   for (j = 0; j < J; ++j)
     if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
+  mirror_corrections(src, partner, Q, fix);
 
   r = clip_alloc_like(src, src->frame_count, &c);
   if (r != SMG_OK) {
     free(partner);
+    free(Q);
+    free(fix);
     return r;
   }
-  /* Skeleton: names and parents stay; each joint takes its partner's offset
-   * reflected in x (parents of partners are partners in sane rigs). */
+  /* Skeleton: names and parents stay. Below a symmetric joint each joint
+   * takes its partner's offset reflected in x (parents of partners are
+   * partners in sane rigs); below a corrected one it keeps its own, which
+   * the correction turns onto the reflected partner's direction. */
   for (j = 0; j < J; ++j) {
     const float* o = src->skeleton.offsets[partner[j]];
+    int32_t p = src->skeleton.parents[j];
+    if (p >= 0 && fix[p]) continue;
     c.skeleton.offsets[j][0] = -o[0];
     c.skeleton.offsets[j][1] = o[1];
     c.skeleton.offsets[j][2] = o[2];
   }
   /* Reflection S = diag(-1, 1, 1): a rotation R becomes S R S, which for a
-   * quaternion is (x, -y, -z, w); positions get x -> -x. */
+   * quaternion is (x, -y, -z, w); positions get x -> -x. With corrections:
+   * local q'_j = Q_parent^-1 (S q_partner S) Q_j. */
   for (f = 0; f < src->frame_count; ++f) {
     const float* a = src->poses + (size_t)f * stride;
     float* o = c.poses + (size_t)f * stride;
@@ -297,13 +424,31 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
     for (j = 0; j < J; ++j) {
       const float* q = a + 3 + 4 * partner[j];
       float* d = o + 3 + 4 * j;
-      d[0] = q[0];
-      d[1] = -q[1];
-      d[2] = -q[2];
-      d[3] = q[3];
+      int32_t p = src->skeleton.parents[j];
+      if (fix[j] || (p >= 0 && fix[p])) {
+        double m[4] = {q[0], -q[1], -q[2], q[3]};
+        if (p >= 0 && fix[p]) {
+          double inv[4];
+          smgb_qconj(Q[p], inv);
+          smgb_qmul(inv, m, m);
+        }
+        if (fix[j]) smgb_qmul(m, Q[j], m);
+        smgb_qnormalize(m);
+        d[0] = (float)m[0];
+        d[1] = (float)m[1];
+        d[2] = (float)m[2];
+        d[3] = (float)m[3];
+      } else {
+        d[0] = q[0];
+        d[1] = -q[1];
+        d[2] = -q[2];
+        d[3] = q[3];
+      }
     }
   }
   free(partner);
+  free(Q);
+  free(fix);
   *out = c;
   return SMG_OK;
 }
@@ -312,11 +457,28 @@ smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out) {
 
 smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
                               smgb_error* err) {
+  smgb_roles rc, rr;
+  if (!clip_valid(clip) || !reference || !reference->names ||
+      !reference->parents || !reference->offsets) {
+    if (err) smgb_imp_errorf(err, "smgb_clip_retarget: invalid clip or reference");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  smgb_roles_guess(&clip->skeleton, &rc);
+  smgb_roles_guess(reference, &rr);
+  return smgb_clip_retarget_roles(clip, &rc, reference, &rr, err);
+}
+
+smg_result smgb_clip_retarget_roles(smgb_clip* clip,
+                                    const smgb_roles* clip_roles,
+                                    const smgb_skeleton* reference,
+                                    const smgb_roles* reference_roles,
+                                    smgb_error* err) {
   uint32_t J, j, f, stride;
   float leg_clip, leg_ref, k;
   if (err) err->message[0] = '\0';
   if (!clip_valid(clip) || !reference || !reference->names ||
-      !reference->parents || !reference->offsets) {
+      !reference->parents || !reference->offsets || !clip_roles ||
+      !reference_roles) {
     smgb_imp_errorf(err, "smgb_clip_retarget: invalid clip or reference");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
@@ -340,12 +502,12 @@ smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
       return SMG_ERROR_INVALID_ARGUMENT;
     }
   }
-  leg_clip = smgb_skeleton_leg_length(&clip->skeleton);
-  leg_ref = smgb_skeleton_leg_length(reference);
+  leg_clip = smgb_roles_leg_length(&clip->skeleton, clip_roles);
+  leg_ref = smgb_roles_leg_length(reference, reference_roles);
   if (!(leg_clip > 1e-6f) || !(leg_ref > 1e-6f)) {
     smgb_imp_errorf(err,
-                    "%s: cannot retarget: no left leg (LeftUpLeg..LeftFoot) "
-                    "to measure in %s",
+                    "%s: cannot retarget: no left leg (roles left_upper_leg "
+                    "down to left_foot) to measure in %s",
                     clip->name, leg_clip > 1e-6f ? "the reference" : "the clip");
     return SMG_ERROR_INVALID_ARGUMENT;
   }

@@ -74,20 +74,34 @@ smg_result smgb_clip_copy(const smgb_clip* src, smgb_clip* out);
 smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
                               smgb_clip* out);
 /* Reflect across the sagittal (x = 0) plane and swap left/right joints by
- * name (Left.../Right..., L.../R... prefixes). mirror(mirror(c)) == c. */
+ * name (smgb_roles_counterpart_name: Left/Right, L/R, _L/_R, .L/.R, ...).
+ * mirror(mirror(c)) == c. */
 smg_result smgb_clip_mirror(const smgb_clip* src, smgb_clip* out);
+/* The same with the counterpart of every joint given (partner[j] = j for
+ * central joints; smgb_roles_partners). */
+smg_result smgb_clip_mirror_partners(const smgb_clip* src,
+                                     const uint32_t* partner, smgb_clip* out);
 /* Put `clip` on `reference` (same joint names and order required, else
  * SMG_ERROR_INVALID_ARGUMENT with a message): keep joint rotations, scale
  * root translation by the ratio of leg lengths, replace offsets. */
 smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
                               smgb_error* err);
+/* The same with the body roles of both skeletons given (bake_roles.h;
+ * the plain version recognises them by name). */
+struct smgb_roles;
+smg_result smgb_clip_retarget_roles(smgb_clip* clip,
+                                    const struct smgb_roles* clip_roles,
+                                    const smgb_skeleton* reference,
+                                    const struct smgb_roles* reference_roles,
+                                    smgb_error* err);
 /* Lowest point of the skeleton over the clip is moved to y = 0. */
 void smgb_clip_ground(smgb_clip* clip);
 
 int32_t smgb_skeleton_find(const smgb_skeleton* s, const char* name);
 smg_result smgb_skeleton_copy(const smgb_skeleton* src, smgb_skeleton* out);
 void smgb_skeleton_free(smgb_skeleton* s);
-/* Hip-to-ankle rest length of the left leg, metres (0 if not found). */
+/* Hip-to-ankle rest length of the left leg, metres, with the body roles
+ * recognised by name (0 if not found; bake_roles.h). */
 float smgb_skeleton_leg_length(const smgb_skeleton* s);
 
 /* Forward kinematics of one pose: world positions (3 per joint) and,

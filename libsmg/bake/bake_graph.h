@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "bake_clip.h"
+#include "bake_roles.h"
 #include "smg.h"
 #include "smg_bake.h"
 #include "smg_format.h"
@@ -61,6 +62,7 @@ typedef struct smgb_segment {
 
 typedef struct smgb_body {
   uint32_t joint_count;
+  smgb_roles roles;            /* body roles of the reference skeleton */
   uint32_t spine_base;
   uint32_t left_leg[4], right_leg[4];
   uint32_t* body_part;         /* SMG_BODY_* per joint */
@@ -114,6 +116,8 @@ typedef struct smgb_splice {
 typedef struct smgb_bake {
   smgb_options opt;
   smgb_skeleton skel;          /* reference skeleton (owned) */
+  char target_name[SMGB_NAME_MAX]; /* rig file when baking onto a target,
+                                      "" = the first clip's skeleton */
   smgb_body body;
   uint32_t J, stride;
 
@@ -163,7 +167,10 @@ void smgb_progress(smgb_bake* b, float fraction);
 void smgb_bake_free(smgb_bake* b);
 
 /* ---- bake_body.c: body split, mirror map, leg chains, torso points ------- */
-smg_result smgb_body_init(smgb_bake* b);
+/* Recognise the body roles of b->skel (bone_map may be NULL; `source`
+ * names the skeleton's file in errors) and derive the tables. */
+smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
+                          const char* source);
 void smgb_body_free(smgb_body* body);
 
 /* ---- bake_upper.c: segment table (Ae et al. 1996) and COGs ---------------- */

@@ -3,7 +3,7 @@
  *
  * One statement per line, whitespace-separated tokens, '#' starts a comment,
  * "double quotes" allow spaces in a token. Settings (unit, skip_first_frame,
- * mirror, animation) apply to the clip lines that follow them; a clip line
+ * mirror, animation, bones) apply to the clip lines that follow them; a clip line
  * may override them with key=value options. Every error names file:line.
  */
 #include <errno.h>
@@ -16,6 +16,7 @@
 
 #include "bake_import_util.h"
 #include "bake_manifest.h"
+#include "bake_roles.h"
 
 #define LINE_MAX_CHARS 4096
 #define MAX_TOKENS 16
@@ -200,7 +201,60 @@ static int parse_mirror(const char* s, uint32_t* out) {
 typedef struct defaults {
   float unit;
   uint32_t skip, mirror, animation;
+  char bone[SMGB_ROLE_COUNT][SMGB_NAME_MAX]; /* `bones`: joint per role */
 } defaults;
+
+/* The current `bones` setting as bone map text (bake_roles.h). */
+static void bones_text(const defaults* d, char* out, size_t size) {
+  size_t used = 0;
+  int r;
+  out[0] = '\0';
+  for (r = 0; r < SMGB_ROLE_COUNT; ++r) {
+    int k;
+    if (!d->bone[r][0]) continue;
+    k = snprintf(out + used, size - used, "%s=%s\n",
+                 smgb_role_name((smgb_role)r), d->bone[r]);
+    if (k > 0 && (size_t)k < size - used) used += (size_t)k;
+  }
+}
+
+/* `bones none` or `bones ROLE=JOINT ...` (words after the keyword). */
+static int parse_bones(defaults* d, char** tok, int n, const char* at,
+                       smgb_error* err) {
+  int i;
+  if (n == 2 && strcmp(tok[1], "none") == 0) {
+    memset(d->bone, 0, sizeof d->bone);
+    return 1;
+  }
+  if (n < 2) {
+    smgb_imp_errorf(err, "%sbones needs ROLE=JOINT pairs or 'none'", at);
+    return 0;
+  }
+  for (i = 1; i < n; ++i) {
+    char* eq = strchr(tok[i], '=');
+    int role;
+    if (!eq || eq == tok[i] || !eq[1] || strlen(eq + 1) >= SMGB_NAME_MAX ||
+        strchr(eq + 1, '\n')) {
+      smgb_imp_errorf(err,
+                      "%sbones: expected ROLE=JOINT, found '%.100s' (quote "
+                      "the pair when the joint name has spaces)",
+                      at, tok[i]);
+      return 0;
+    }
+    *eq = '\0';
+    role = smgb_role_from_name(tok[i]);
+    if (role < 0) {
+      smgb_imp_errorf(err,
+                      "%sbones: unknown role '%.60s' (pelvis, spine_base, "
+                      "neck, head, left_/right_ + upper_leg, lower_leg, foot, "
+                      "toes, upper_arm, lower_arm, hand, shoulder, fingers)",
+                      at, tok[i]);
+      return 0;
+    }
+    snprintf(d->bone[role], SMGB_NAME_MAX, "%s", eq + 1);
+  }
+  return 1;
+}
 
 /* Frame range "A-B" or "A-end" in file frame numbers (0 = the file's first
  * frame, T-pose included) -> desc first_frame/frame_count. */
@@ -264,6 +318,7 @@ static smg_result parse_clip_line(smgb_manifest* m, char** tok, int n,
   c.mirror = d->mirror;
   c.animation_index = d->animation;
   c.line = line;
+  bones_text(d, c.bones, sizeof c.bones);
   for (i = 3; i < n; ++i) {
     char* eq = strchr(tok[i], '=');
     const char* v;
@@ -309,6 +364,54 @@ static void dir_of(const char* path, char* out, size_t n) {
   else snprintf(out, n, "%.*s", (int)(slash - path), path);
 }
 
+/* `target RIG [unit=U] [animation=N]`: the rig every clip is retargeted
+ * onto (docs/manifest.md); RIG is relative to the manifest's folder. */
+static int parse_target(smgb_manifest* m, const char* path, char** tok,
+                        int n, const char* at, smgb_error* err) {
+  char base[SMGB_PATH_MAX];
+  int k, i;
+  if (n < 2) {
+    smgb_imp_errorf(err, "%starget needs a rig file", at);
+    return 0;
+  }
+  if (m->target[0]) {
+    smgb_imp_errorf(err, "%s'target' may appear only once", at);
+    return 0;
+  }
+  dir_of(path, base, sizeof base);
+  k = tok[1][0] == '/'
+          ? snprintf(m->target, sizeof m->target, "%s", tok[1])
+          : snprintf(m->target, sizeof m->target, "%s/%s", base, tok[1]);
+  if (k < 0 || (size_t)k >= sizeof m->target) {
+    smgb_imp_errorf(err, "%starget path too long", at);
+    return 0;
+  }
+  if (access(m->target, R_OK) != 0) {
+    smgb_imp_errorf(err, "%starget rig '%s' not found or unreadable (%s)",
+                    at, tok[1], m->target);
+    return 0;
+  }
+  for (i = 2; i < n; ++i) {
+    if (strncmp(tok[i], "unit=", 5) == 0) {
+      if (!parse_float(tok[i] + 5, 0.0f, 1e3f, &m->target_unit)) {
+        smgb_imp_errorf(err, "%starget unit '%.60s' must be in [0, 1000]", at,
+                        tok[i] + 5);
+        return 0;
+      }
+    } else if (strncmp(tok[i], "animation=", 10) == 0) {
+      if (!parse_u32(tok[i] + 10, 1000000u, &m->target_animation)) {
+        smgb_imp_errorf(err, "%starget animation must be an index >= 0", at);
+        return 0;
+      }
+    } else {
+      smgb_imp_errorf(err, "%sunknown target option '%.60s' (unit, animation)",
+                      at, tok[i]);
+      return 0;
+    }
+  }
+  return 1;
+}
+
 smg_result smgb_manifest_load(const char* path, const char* data_dir_override,
                               smgb_manifest* out, smgb_error* err) {
   smgb_manifest m;
@@ -339,6 +442,7 @@ smg_result smgb_manifest_load(const char* path, const char* data_dir_override,
   d.skip = 0;
   d.mirror = SMG_BAKE_MIRROR_DEFAULT;
   d.animation = 0;
+  memset(d.bone, 0, sizeof d.bone);
 
   fp = fopen(path, "r");
   if (!fp) {
@@ -364,11 +468,20 @@ smg_result smgb_manifest_load(const char* path, const char* data_dir_override,
       r = SMG_ERROR_PARSE;
       continue;
     }
+    if (strcmp(tok[0], "bones") == 0) {
+      if (!parse_bones(&d, tok, n, at, err)) goto fail;
+      continue;
+    }
+    if (strcmp(tok[0], "target") == 0) {
+      if (!parse_target(&m, path, tok, n, at, err)) goto fail;
+      continue;
+    }
     if (n != 2) {
       smgb_imp_errorf(err,
-                      "%sexpected 'lower ...', 'upper ...' or one of "
-                      "frame_rate/root/unit/skip_first_frame/mirror/animation "
-                      "followed by one value, found '%.60s' with %d words",
+                      "%sexpected 'lower ...', 'upper ...', 'bones ...' or "
+                      "one of frame_rate/root/unit/skip_first_frame/mirror/"
+                      "animation followed by one value, found '%.60s' with "
+                      "%d words",
                       at, tok[0], n);
       goto fail;
     }
@@ -467,6 +580,7 @@ smg_result smgb_manifest_descs(const smgb_manifest* m,
     d->unit_scale = c->unit_scale;
     d->animation_index = c->animation_index;
     d->source_line = c->line;
+    d->bones = c->bones[0] ? c->bones : NULL;
   }
   return SMG_OK;
 }

@@ -17,6 +17,7 @@
 
 #define SMGB_PATH_MAX 1024
 #define SMGB_MANIFEST_MAX_CLIPS 4096
+#define SMGB_BONES_MAX 2048 /* bone map text: every role once fits */
 
 typedef struct smgb_manifest_clip {
   uint32_t role;              /* SMG_BAKE_ROLE_LOWER / _UPPER */
@@ -30,6 +31,8 @@ typedef struct smgb_manifest_clip {
   float unit_scale;           /* 0 = guess */
   uint32_t animation_index;   /* assimp files */
   int32_t line;               /* manifest line (0: not from a file) */
+  char bones[SMGB_BONES_MAX]; /* bone map, "role=joint" lines ("" = by
+                                 name; bake_roles.h) */
 } smgb_manifest_clip;
 
 typedef struct smgb_manifest {
@@ -39,6 +42,9 @@ typedef struct smgb_manifest {
   uint32_t clip_count;
   uint32_t clip_capacity;
   smgb_manifest_clip* clips;
+  char target[SMGB_PATH_MAX]; /* `target` rig ("" = first clip's skeleton) */
+  float target_unit;          /* its unit, 0 = guess */
+  uint32_t target_animation;  /* its animation (assimp rigs) */
 } smgb_manifest;
 
 /* Empty manifest whose relative clip paths resolve against `root` (NULL or

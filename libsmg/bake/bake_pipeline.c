@@ -13,6 +13,7 @@
  *   internodal     transition frames, displacements, arc lengths, blob
  */
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,7 @@
 
 #include "bake_graph.h"
 #include "bake_math.h"
+#include "bake_retarget.h"
 #include "blob.h"
 
 void smgb_fail(smgb_bake* b, const char* fmt, ...) {
@@ -263,9 +265,43 @@ static uint32_t label_index(char (*labels)[SMGB_LABEL_MAX], uint32_t* count,
   return (*count)++;
 }
 
+/* The rig named by desc->target_path becomes the blob's skeleton. */
+static smg_result load_target(smgb_bake* b, const smg_bake_desc* desc) {
+  char path[2048];
+  smgb_error err;
+  smg_result r;
+  if (desc->struct_size < sizeof *desc || !desc->target_path) return SMG_OK;
+  if (!desc->target_path[0] || !isfinite(desc->target_unit_scale) ||
+      desc->target_unit_scale < 0.0f) {
+    smgb_fail(b, "target rig: empty path or invalid unit scale");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  if (desc->data_dir && desc->data_dir[0] && desc->target_path[0] != '/')
+    snprintf(path, sizeof path, "%s/%s", desc->data_dir, desc->target_path);
+  else
+    snprintf(path, sizeof path, "%s", desc->target_path);
+  err.message[0] = '\0';
+  r = smgb_rig_load(path, desc->target_unit_scale, desc->target_animation,
+                    &b->skel, &err);
+  if (r != SMG_OK) {
+    smgb_fail(b, "target rig %s: %s", path,
+              err.message[0] ? err.message : smg_result_string(r));
+    return r;
+  }
+  snprintf(b->target_name, sizeof b->target_name, "%.63s", base_name(path));
+  return SMG_OK;
+}
+
+/* The clip's bone map; NULL for descriptors from before the field. */
+static const char* clip_bones(const smg_bake_clip_desc* d) {
+  return d->struct_size >= offsetof(smg_bake_clip_desc, bones) + sizeof d->bones
+             ? d->bones
+             : NULL;
+}
+
 static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
   uint32_t i;
-  smg_result r = SMG_OK;
+  smg_result r = load_target(b, desc);
   int have_lower = 0;
   for (i = 0; i < desc->clip_count && r == SMG_OK; ++i) {
     const smg_bake_clip_desc* d = &desc->clips[i];
@@ -299,6 +335,11 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       smgb_fail(b, "%s: neither a path nor an in-memory clip", at);
       return SMG_ERROR_INVALID_ARGUMENT;
     }
+    /* A malformed bone map fails before any file is read. */
+    if ((r = smgb_bone_map_check(clip_bones(d), at, &err)) != SMG_OK) {
+      smgb_fail(b, "%s", err.message);
+      return r;
+    }
     if (d->path) {
       if (desc->data_dir && desc->data_dir[0] && d->path[0] != '/')
         snprintf(path, sizeof path, "%s/%s", desc->data_dir, d->path);
@@ -324,17 +365,54 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       r = smgb_skeleton_copy(&raw.skeleton, &b->skel);
       if (r != SMG_OK) smgb_fail(b, "out of memory (skeleton)");
     }
-    if (r == SMG_OK && (r = smgb_clip_retarget(&raw, &b->skel, &err)) != SMG_OK)
-      smgb_fail(b, "%s (%s): %s", at, name, err.message);
     if (r == SMG_OK && b->J == 0) {
       b->J = b->skel.joint_count;
       b->stride = SMGB_STRIDE(b->J);
-      if ((r = smgb_body_init(b)) != SMG_OK) {
+      r = b->target_name[0] ? smgb_body_init(b, NULL, b->target_name)
+                            : smgb_body_init(b, clip_bones(d),
+                                             d->path ? path : name);
+      if (r != SMG_OK) {
         char tmp[512];
         snprintf(tmp, sizeof tmp, "%s", b->error);
         b->error[0] = '\0';
-        smgb_fail(b, "%s (%s): %s", at, name, tmp);
+        if (b->target_name[0])
+          smgb_fail(b, "target rig %s: %s", b->target_name, tmp);
+        else
+          smgb_fail(b, "%s (%s): %s", at, name, tmp);
       }
+    }
+    if (r == SMG_OK) {
+      smgb_roles roles;
+      r = smgb_roles_find(&raw.skeleton, clip_bones(d), d->path ? path : name,
+                          &roles, &err);
+      /* Same hierarchy and no rig: rotations kept as they are (the plain
+       * path); otherwise full retargeting onto the blob's skeleton. */
+      if (r == SMG_OK && !b->target_name[0] &&
+          smgb_same_hierarchy(&raw.skeleton, &b->skel))
+        r = smgb_clip_retarget_roles(&raw, &roles, &b->skel, &b->body.roles,
+                                     &err);
+      else if (r == SMG_OK) {
+        /* Retarget at the working rate: resampling first changes nothing
+         * that matters and saves the work on high-rate capture (CMU's
+         * 120 Hz: a quarter of the frames). */
+        if (raw.frame_rate != b->opt.frame_rate) {
+          smgb_clip low;
+          r = smgb_clip_resample(&raw, b->opt.frame_rate, &low);
+          if (r == SMG_OK) {
+            smgb_clip_free(&raw);
+            raw = low;
+          } else {
+            snprintf(err.message, sizeof err.message, "resampling failed");
+          }
+        }
+        if (r == SMG_OK)
+          r = smgb_retarget_clip(&raw, &roles, &b->skel, &b->body.roles,
+                                 b->target_name[0] ? b->target_name
+                                                   : "the first clip's "
+                                                     "skeleton",
+                                 &err);
+      }
+      if (r != SMG_OK) smgb_fail(b, "%s (%s): %s", at, name, err.message);
     }
     if (r == SMG_OK) {
       if (raw.frame_rate != b->opt.frame_rate) {
@@ -374,7 +452,7 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       if (r == SMG_OK && mirror) {
         char mname[SMGB_NAME_MAX];
         snprintf(mname, sizeof mname, "%.50s (mirror)", name);
-        r = smgb_clip_mirror(&rs, &mir);
+        r = smgb_clip_mirror_partners(&rs, b->body.mirror, &mir);
         if (r != SMG_OK)
           smgb_fail(b, "%s: mirroring failed", at);
         else
@@ -421,7 +499,10 @@ smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
   if (!out || out->struct_size != sizeof *out) return SMG_ERROR_INVALID_ARGUMENT;
   memset(out, 0, sizeof *out);
   out->struct_size = sizeof *out;
-  if (!desc || desc->struct_size != sizeof *desc || !desc->clips ||
+  if (!desc ||
+      (desc->struct_size != sizeof *desc &&
+       desc->struct_size != offsetof(smg_bake_desc, target_path)) ||
+      !desc->clips ||
       desc->clip_count == 0) {
     snprintf(out->error, sizeof out->error,
              "smg_bake_run: desc with struct_size = sizeof(smg_bake_desc) "

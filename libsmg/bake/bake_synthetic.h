@@ -91,4 +91,9 @@ smg_result smgb_synth_standard(uint32_t index, smgb_synth_params* params,
  * README.txt into `dir` (which must exist). */
 smg_result smgb_synth_write_all(const char* dir, smgb_error* err);
 
+/* Write the generated retargeting test rig (bake_synth_rig.c: Mixamo-style
+ * names, 22 joints, A-pose rest, legs 8 % longer than the synthetic and
+ * CMU skeletons') as a one-frame BVH in metres. */
+smg_result smgb_synth_write_rig(const char* path, smgb_error* err);
+
 #endif /* BAKE_SYNTHETIC_H */

@@ -50,6 +50,13 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   l->total = o;
 }
 
+/* Steering limits: finite and >= 0 (0 = default, resolved in steer.c so
+ * the setter shares the rule). */
+static int limits_ok(float turn, float slide, float stop) {
+  return isfinite(turn) && isfinite(slide) && isfinite(stop) &&
+         turn >= 0.0f && slide >= 0.0f && stop >= 0.0f;
+}
+
 /* Resolve desc (NULL, partial struct_size) into a full one with defaults. */
 static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
                                smg_character_desc* d) {
@@ -67,7 +74,8 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
       !isfinite(d->position[2]) || !isfinite(d->heading) ||
       !isfinite(d->horizon) || !isfinite(d->error_threshold) ||
       d->horizon < 0.0f || d->horizon > SMGI_MAX_HORIZON ||
-      d->error_threshold < 0.0f)
+      d->error_threshold < 0.0f ||
+      !limits_ok(d->steer_turn_rate, d->steer_slide_ratio, d->stop_seconds))
     return SMG_ERROR_INVALID_ARGUMENT;
   if (d->path_capacity == 0) d->path_capacity = SMGI_DEFAULT_PATH_CAPACITY;
   if (d->constraint_capacity == 0)
@@ -137,6 +145,9 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->joint_count = J;
   ch->flags = d.flags;
   ch->ik.enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
+  smgi_steer_init(&ch->steer,
+                  (d.flags & SMG_CHARACTER_NO_STEERING) ? 0u : 1u,
+                  d.steer_turn_rate, d.steer_slide_ratio, d.stop_seconds);
   ch->rng = d.seed ? d.seed : 0x9e3779b9u;
   ch->plan.phase = plan_phase(&d);
   ch->plan.horizon = d.horizon;
@@ -211,6 +222,7 @@ SMG_API smg_result smg_character_set_path(smg_character* ch, const float* xz,
   ch->cons.base_style_arc = ch->cons.base_style_arc < 0.0f ? -1.0f : 0.0f;
   ch->cons.base_action_arc = ch->cons.base_action_arc < 0.0f ? -1.0f : 0.0f;
   ch->end_reached = 0;
+  smgi_steer_path_changed(&ch->steer);
   smgi_replan(ch);
   return SMG_OK;
 }
@@ -232,6 +244,7 @@ SMG_API smg_result smg_character_append_path(smg_character* ch,
     ch->path_error = dist;
   }
   ch->end_reached = 0;
+  smgi_steer_path_changed(&ch->steer);
   smgi_replan(ch);
   return SMG_OK;
 }
@@ -243,6 +256,7 @@ SMG_API smg_result smg_character_clear_path(smg_character* ch) {
   ch->seg = 0;
   ch->path_error = 0.0f;
   ch->end_reached = 0;
+  smgi_steer_path_changed(&ch->steer);
   /* stay around the end of the motion already committed */
   const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
   const smgi_edge* e = &ch->graph->data.lower_edges[h->edge];
@@ -300,6 +314,26 @@ SMG_API smg_result smg_character_set_ik(smg_character* ch, uint32_t enabled) {
   return SMG_OK;
 }
 
+SMG_API smg_result smg_character_set_steering(smg_character* ch,
+                                              uint32_t enabled) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  ch->steer.enabled = enabled ? 1u : 0u;
+  /* a character resting at the end walks on with the graph alone; the
+   * correction itself fades out at its bounded rate (steer.c) */
+  if (!ch->steer.enabled) smgi_steer_path_changed(&ch->steer);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_steering_limits(smg_character* ch,
+                                                     float turn_rate,
+                                                     float slide_ratio,
+                                                     float stop_seconds) {
+  if (!ch || !limits_ok(turn_rate, slide_ratio, stop_seconds))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  smgi_steer_set_limits(&ch->steer, turn_rate, slide_ratio, stop_seconds);
+  return SMG_OK;
+}
+
 /* ---- per frame ---- */
 
 SMG_API smg_result smg_character_step(smg_character* ch, float dt) {
@@ -332,6 +366,10 @@ SMG_API smg_result smg_character_get_state(const smg_character* ch,
   s.lower_node = ch->lower.node;
   s.upper_node = ch->upper.node;
   s.sync_rate = ch->sync.rate;
+  s.steer_turn_rate = ch->steer.turn;
+  s.steer_slide_speed = sqrtf(ch->steer.slide[0] * ch->steer.slide[0] +
+                              ch->steer.slide[1] * ch->steer.slide[1]);
+  s.playback_rate = ch->steer.rate;
   memcpy(out, &s, out->struct_size);
   return SMG_OK;
 }

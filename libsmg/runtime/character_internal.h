@@ -20,6 +20,7 @@
 #include "pose.h"
 #include "rmath.h"
 #include "smg.h"
+#include "steer.h"
 #include "sync.h"
 #include "tuning.h"
 #include "upper.h"
@@ -50,10 +51,12 @@ struct smg_character {
   smgi_upper upper;
   smgi_sync sync;
   smgi_pose pose;
+  smgi_steer steer;
   smgi_ik ik;
 };
 
-/* One frame: plan, advance, upper body, pose, IK, progress (playback.c). */
+/* One frame: plan, advance, upper body, pose, steering, IK, progress
+ * (playback.c). */
 smg_result smgi_step(smg_character* ch, float dt);
 
 #endif /* SMG_CHARACTER_INTERNAL_H */

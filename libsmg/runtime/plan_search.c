@@ -148,26 +148,33 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
   float dx = x - rx, dz = z - rz;
   float d = sqrtf(dx * dx + dz * dz);
   *dist = d;
-  /* lost (far off the path): options differ little in distance (all move
-   * away for the next second or two) but much in where they face; the
-   * way back is towards the path near where the character left it */
-  float sc = c->lost ? SMGI_LOST_DISTANCE_WEIGHT * d : d;
+  float ha = 0.0f; /* heading error towards the pursuit point */
   if (sr < p->length) {
     float qx, qz;
     uint32_t sg = *seg;
     path_at(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
     float ax = qx - x, az = qz - z;
     if (ax * ax + az * az > 1e-4f)
-      sc += (c->lost ? SMGI_HEADING_WEIGHT_LOST : SMGI_HEADING_WEIGHT) *
-            fabsf(smgi_wrap_angle(h - fast_atan2(ax, az)));
+      ha = fabsf(smgi_wrap_angle(h - fast_atan2(ax, az)));
   }
+  /* as it will look after the root steering's correction (steer.c) */
+  if (!c->lost)
+    smgi_steer_plan_view(&c->ch->steer, u, c->ch->fps * sqrtf(m2) /
+                         (w > 1.0f ? w : 1.0f), &d, &ha);
+  /* lost (far off the path): options differ little in distance (all move
+   * away for the next second or two) but much in where they face; the
+   * way back is towards the path near where the character left it */
+  float sc = c->lost ? SMGI_LOST_DISTANCE_WEIGHT * d : d;
+  sc += (c->lost ? SMGI_HEADING_WEIGHT_LOST : SMGI_HEADING_WEIGHT) * ha;
   if (m2 > 1e-4f) sc += SMGI_TRAVEL_WEIGHT * fabsf(smgi_wrap_angle(fast_atan2(mx, mz) - h));
   return sc;
 }
 
 /* Style penalty of an edge at arc lengths [a, b] of the path. */
 static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b) {
-  if (!c->following) return 10.0f * style_penalty(c->ch, e, c->style0);
+  if (!c->following)
+    return c->yield ? 10.0f * lost_style_penalty(c->ch, e)
+                    : 10.0f * style_penalty(c->ch, e, c->style0);
   if (c->lost || c->yield) return lost_style_penalty(c->ch, e);
   /* s0 <= a <= b: before the next constraint the wanted style is the one
    * at s0 (what edge_style_penalty would find with two scans) */

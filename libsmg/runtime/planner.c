@@ -51,6 +51,16 @@ static smgi_xform2 disp_of(const smgi_edge* e) {
   return x;
 }
 
+/* The paper's distance error of an edge whose end lies d from the path,
+ * less what the root steering takes out over the edge (steer.c): the
+ * threshold judges the motion as it will be shown. */
+static float edge_error(const smg_character* ch, const smgi_edge* e,
+                        float d) {
+  float speed = ch->fps * e->arc_length / (float)e->frame_count;
+  float reach = smgi_steer_plan_reach(&ch->steer, e->arc_length, speed);
+  return d > reach ? d - reach : 0.0f;
+}
+
 /* A committed edge's bookkeeping without a search: where it ends, the
  * progress there and its distance error. */
 static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
@@ -68,7 +78,7 @@ static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
     float sp = smgi_path_project_local(&ch->path, x->end.x, x->end.z, &sg, &d);
     x->s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
     x->seg_end = sg;
-    if (s < ch->path.length - SMGI_END_EPS) x->err = d;
+    if (s < ch->path.length - SMGI_END_EPS) x->err = edge_error(ch, e, d);
   }
 }
 
@@ -85,7 +95,9 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
   smgi_seq_ctx sc;
   smgi_seq_init(&sc, ch, W, s, seg);
   sc.best_len = 0;
-  sc.yield = yield;
+  /* coming to rest at the end: the graph's most agile style (walking) is
+   * wanted for the last metres (steer.c) */
+  sc.yield = yield || smgi_steer_settling(ch, s);
   *following = sc.following && !sc.lost;
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];
@@ -114,7 +126,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
       s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
       /* the paper's distance error (what the threshold is compared
        * with): how far the edge leaves the character from the path */
-      if (sc.following) x->err = d;
+      if (sc.following) x->err = edge_error(ch, e, d);
     }
     x->s_end = s_end;
     x->seg_end = sg;

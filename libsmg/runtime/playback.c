@@ -1,8 +1,8 @@
 /*
  * playback.c - per-frame stepping: keep the plan ahead of the playhead,
  * advance the fractional playhead through the queue of committed edges,
- * drive the upper body (splices, synchronization), compose the pose and
- * track progress along the path. Bounded work, no allocation.
+ * drive the upper body (splices, synchronization), compose the pose, steer
+ * it (steer.c) and track progress along the path. Bounded work, no allocation.
  */
 #include <math.h>
 
@@ -44,6 +44,11 @@ static void update_progress(smg_character* ch) {
      * cut across to the last segment has not arrived). Latched until the
      * path changes: there are no idle clips, so an arrived character
      * keeps moving around the end point and would flicker. */
+    if (ch->steer.enabled) {
+      /* steered: arrived means standing at the end */
+      ch->end_reached = ch->steer.mode == SMGI_STEER_REST;
+      return;
+    }
     ch->end_reached = ch->end_reached ||
                       (ch->progress >= p->length - SMGI_END_EPS &&
                        ex * ex + ez * ez < SMGI_END_NEAR * SMGI_END_NEAR);
@@ -52,13 +57,15 @@ static void update_progress(smg_character* ch) {
 
 smg_result smgi_step(smg_character* ch, float dt) {
   const smgi_edge* edges = ch->graph->data.lower_edges;
-  float frames = dt * ch->fps;
   smgi_pose_prefetch(ch);
+  /* the playback rate: slower for a tight turn, braking at the end */
+  const float frames = smgi_steer_frames(ch, dt);
   /* keep the horizon planned; this step's frames are guaranteed whatever
    * the budget */
   smgi_plan(ch, SMGI_PLAN_BUDGET, frames);
 
   ch->lower.t += frames;
+  uint32_t pops = 0;
   for (;;) {
     const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
     float fc = (float)edges[h->edge].frame_count;
@@ -73,7 +80,9 @@ smg_result smgi_step(smg_character* ch, float dt) {
     ch->lower.head = (ch->lower.head + 1u) & (SMGI_QUEUE_CAP - 1u);
     ch->lower.count--;
     ch->lower.frames -= edges[h->edge].frame_count;
+    ++pops;
   }
+  smgi_steer_refresh(ch, pops);
   ch->lower.style = edges[smgi_q_at(&ch->lower, 0)->edge].label;
   ch->time += (double)dt;
 
@@ -90,6 +99,7 @@ smg_result smgi_step(smg_character* ch, float dt) {
   if (new_frame) smgi_sync_update(ch);
 
   smgi_pose_compose(ch);
+  smgi_steer_apply(ch, dt);
   /* world transforms are cached: IK needs them, and the getters then
    * only convert (model matrices) or copy (local pose) */
   smgi_fk(ch->graph, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);

@@ -112,4 +112,47 @@
 #define SMGI_IK_TOLERANCE 2e-3f /* metres beyond the closest the leg can
                                    reach */
 
+/* ---- root steering (steer.c) ---- */
+/* Defaults of the public limits (smg_character_desc). */
+#define SMGI_STEER_TURN_LIMIT 2.0f    /* rad/s of additive heading correction */
+#define SMGI_STEER_SLIDE_RATIO 0.25f  /* translation per metre of motion */
+#define SMGI_STEER_STOP_SECONDS 1.0f  /* braking time at the end */
+/* The method's constants: they are shapes of the control (time constants,
+ * fractions), not fitted to any clip. */
+#define SMGI_STEER_CLIP_SCALE 0.5f    /* may add or remove this much of the
+                                    clip's own turning (0.5x .. 1.5x) */
+#define SMGI_STEER_TURN_RADIUS 0.5f   /* additive turning <= speed / radius: none
+                                    while standing, tight while walking */
+#define SMGI_STEER_HEADING_TIME 0.25f /* heading error removed over this time */
+#define SMGI_STEER_SLIDE_TIME 0.3f    /* lateral error removed over this time */
+#define SMGI_STEER_TURN_ACCEL 8.0f    /* rad/s^2: the correction rate's change */
+#define SMGI_STEER_SLIDE_ACCEL 2.0f   /* m/s^2 */
+#define SMGI_STEER_SWAY 0.03f         /* m: lateral offsets within the hips'
+                                    own sway are left alone */
+#define SMGI_STEER_SMOOTH 0.25f       /* s: low-pass of the clip's own motion */
+#define SMGI_STEER_FUTURE 0.4f        /* s: the clip's direction is where its
+                                    root is this far ahead */
+#define SMGI_STEER_LOOK_TIME 0.6f     /* s: the pursuit point's lead ... */
+#define SMGI_STEER_LOOK_MIN 0.5f      /* ... in metres, at least */
+#define SMGI_STEER_LOOK_MAX 2.0f      /* ... and at most */
+#define SMGI_STEER_CURVE_AHEAD 1.5f   /* m: path curvature measured over this */
+#define SMGI_STEER_RATE_MIN 0.5f      /* slowest playback for a tight turn */
+#define SMGI_STEER_RATE_ACCEL 1.0f    /* playback rate change per second */
+#define SMGI_STEER_STOP_NEAR 1.0f     /* a stop frame lands this near the end */
+#define SMGI_STEER_ONE_FOOT 0.5f      /* m: a stop frame with one foot down
+                                    counts as this much further */
+#define SMGI_STEER_NO_FOOT 1.0f       /* ... with no foot down */
+#define SMGI_STEER_REST_RATE 0.03f    /* below this rate the stop is made */
+#define SMGI_STEER_PLAN_WEIGHT 0.5f   /* the planner counts an error the
+                                         steering can remove at this
+                                         fraction of itself */
+#define SMGI_STEER_REPLAN_TURN 0.7f   /* rad of correction (40 deg) ... */
+#define SMGI_STEER_REPLAN_MOVE 0.5f   /* ... or metres of it since the plan
+                                         was chosen: plan again */
+#define SMGI_STEER_SETTLE_SECONDS 1.5f /* s of motion before braking in
+                                          which a stop wants the agile
+                                          style */
+#define SMGI_STEER_STOP_SCAN 1.0f     /* s of frames beyond the braking
+                                         distance searched for a stop */
+
 #endif /* SMG_TUNING_H */

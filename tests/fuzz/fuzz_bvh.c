@@ -11,13 +11,18 @@
 #include <string.h>
 
 #include "bake_clip.h"
+#include "bake_roles.h"
 #include "fuzz.h"
 
-/* Small but varied: left/right names, several channel orders, a channel
- * subset, constant non-root translation, End Sites, 3 frames. */
+/* Small but varied: a static root above a translating pelvis (folded
+ * away by the importer), left/right names, several channel orders, a
+ * channel subset, constant non-root translation, End Sites, 3 frames. */
 static const char k_seed[] =
     "HIERARCHY\n"
-    "ROOT Hips\n{\n\tOFFSET 0 0 0\n"
+    "ROOT joint_Root\n{\n\tOFFSET 0 0 0\n"
+    "\tCHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation "
+    "Yrotation\n"
+    "\tJOINT Hips\n\t{\n\tOFFSET 0 0 0\n"
     "\tCHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation "
     "Xrotation\n"
     "\tJOINT LeftUpLeg\n\t{\n\t\tOFFSET 9 -6 0\n"
@@ -34,11 +39,15 @@ static const char k_seed[] =
     "\t\tCHANNELS 6 Xposition Yposition Zposition Xrotation Yrotation "
     "Zrotation\n"
     "\t\tEnd Site\n\t\t{\n\t\t\tOFFSET 0 50 0\n\t\t}\n\t}\n"
+    "\t}\n"
     "}\n"
     "MOTION\nFrames: 3\nFrame Time: 0.0333333\n"
-    "0 90 0 0 0 0 0 0 0 0 0 0 0 0 0 0 10 0 0 0 0\n"
-    "1.5 91 2 10 -20 30 5 -6 7 8 9 -10 11 12 13 0 10 0 -14 15 -16\n"
-    "3 90.5 4.25 -170 179 -1e2 0.5 6 -7e0 8 9 10 -11 12 -13 0 10 0 14 -15 "
+    "5 0 -2 0 0 90 "
+    "0 90 0 0 0 0 0 0 0 0 0 0 0 0 0 10 0 0 0 0\n"
+    "5 0 -2 0 0 90 "
+    "1.5 91 2 10 -20 30 5 -6 7 8 9 -10 11 12 0 10 0 -14 15 -16\n"
+    "5 0 -2 0 0 90 "
+    "3 90.5 4.25 -170 179 -1e2 0.5 6 -7e0 8 9 10 -11 12 0 10 0 14 -15 "
     "16\n";
 
 int fuzz_seed(uint8_t** data, size_t* size) {
@@ -73,6 +82,23 @@ static void exercise(const smgb_clip* c) {
     smgb_clip_free(&r);
   }
   acc += smgb_skeleton_leg_length(&c->skeleton);
+  {
+    /* Body roles, with and without a bone map, and mirror partners. */
+    smgb_roles roles;
+    smgb_error err;
+    int32_t* partner = (int32_t*)malloc(sizeof(int32_t) * J);
+    if (smgb_roles_find(&c->skeleton, "left_foot=LeftFoot\nhead=Spine",
+                        "fuzz.bvh", &roles, &err) != SMG_OK &&
+        err.message[0] == '\0')
+      abort();
+    smgb_roles_guess(&c->skeleton, &roles);
+    acc += smgb_roles_leg_length(&c->skeleton, &roles);
+    if (partner) {
+      smgb_roles_partners(&c->skeleton, &roles, partner);
+      acc += (float)partner[J - 1];
+      free(partner);
+    }
+  }
   g_sink = acc;
 out:
   free(pos);

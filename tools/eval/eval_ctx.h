@@ -31,6 +31,10 @@ typedef struct eval_ctx {
   const char* default_blob; /* synthetic blob for checks without CMU */
   const char* keep_dir;  /* --keep: also write blobs and CSV traces here */
   const char* manifest;  /* the paper-size set (data/cmu.manifest) */
+  char bandai_dir[1024]; /* <shared>/mocap/bandai-namco */
+  int have_bandai;       /* the Bandai Namco clips are readable */
+  const char* bandai_manifest; /* data/bandai.manifest */
+  const char* only;      /* --only SECTION: run just that one ("follow") */
 } eval_ctx;
 
 /* Markdown output (no-op in check mode). */
@@ -88,7 +92,20 @@ void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
 /* Feet from geometry: planted-toe speed with IK on and off on every path
  * of the CMU graph and of a two-performer graph, and the source clips'. */
 void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size);
+/* Staying on drawn paths (issue 12): data/paths on the CMU blob (may be
+ * NULL) and the sparse set, root steering on and off; in check mode the
+ * tight paths on the default and CMU blobs with steering on. */
+void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
+                         size_t cmu_size);
 /* Splicing accuracy (Fig. 5) and the synchronization check. */
 void eval_section_splice(eval_ctx* ctx);
+/* Section 2's paths and tables on another baked graph (no figures);
+ * `graph` names it in the tables and the summary. Check mode: the straight
+ * path with section 2's bounds. */
+void eval_paths_on_graph(eval_ctx* ctx, const void* blob, size_t size,
+                         const char* graph);
+/* A second studio: the Bandai Namco Research Motion Dataset graph
+ * (data/bandai.manifest), baked and run on the evaluation paths. */
+void eval_section_bandai(eval_ctx* ctx);
 
 #endif /* EVAL_CTX_H */

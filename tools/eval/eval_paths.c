@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_roles.h"
 #include "eval_ctx.h"
 #include "eval_metrics.h"
 #include "eval_run.h"
@@ -39,17 +40,56 @@ static const path_spec k_paths[] = {
 };
 #define PATH_COUNT (sizeof(k_paths) / sizeof(k_paths[0]))
 
-/* Joints the metrics need, looked up by CMU name. */
+/* Joints the metrics need, found by their body roles (bake_roles.h), so
+ * any rig the baker accepts works. */
 typedef struct joints {
   uint32_t hips, lfoot, ltoe, rfoot, rtoe;
 } joints;
 
 static int find_joints(smg_graph* g, joints* j) {
-  return smg_graph_find_joint(g, "Hips", &j->hips) == SMG_OK &&
-         smg_graph_find_joint(g, "LeftFoot", &j->lfoot) == SMG_OK &&
-         smg_graph_find_joint(g, "LeftToeBase", &j->ltoe) == SMG_OK &&
-         smg_graph_find_joint(g, "RightFoot", &j->rfoot) == SMG_OK &&
-         smg_graph_find_joint(g, "RightToeBase", &j->rtoe) == SMG_OK;
+  smg_graph_info info;
+  smgb_skeleton s;
+  smgb_roles r;
+  uint32_t k;
+  int ok = 0;
+  memset(&info, 0, sizeof(info));
+  info.struct_size = sizeof(info);
+  if (smg_graph_get_info(g, &info) != SMG_OK || info.joint_count == 0)
+    return 0;
+  memset(&s, 0, sizeof(s));
+  s.joint_count = info.joint_count;
+  s.names = calloc(info.joint_count, sizeof(*s.names));
+  s.parents = calloc(info.joint_count, sizeof(*s.parents));
+  s.offsets = calloc(info.joint_count, sizeof(*s.offsets));
+  if (s.names && s.parents && s.offsets) {
+    for (k = 0; k < info.joint_count; ++k) {
+      smg_joint_info ji;
+      memset(&ji, 0, sizeof(ji));
+      ji.struct_size = sizeof(ji);
+      if (smg_graph_get_joint(g, k, &ji) != SMG_OK) break;
+      snprintf(s.names[k], SMGB_NAME_MAX, "%s", ji.name);
+      s.parents[k] = ji.parent;
+      memcpy(s.offsets[k], ji.rest_offset, sizeof(s.offsets[k]));
+    }
+    if (k == info.joint_count) {
+      smgb_roles_guess(&s, &r);
+      ok = r.joint[SMGB_ROLE_PELVIS] >= 0 && r.joint[SMGB_ROLE_LEFT_FOOT] >= 0 &&
+           r.joint[SMGB_ROLE_LEFT_TOES] >= 0 &&
+           r.joint[SMGB_ROLE_RIGHT_FOOT] >= 0 &&
+           r.joint[SMGB_ROLE_RIGHT_TOES] >= 0;
+      if (ok) {
+        j->hips = (uint32_t)r.joint[SMGB_ROLE_PELVIS];
+        j->lfoot = (uint32_t)r.joint[SMGB_ROLE_LEFT_FOOT];
+        j->ltoe = (uint32_t)r.joint[SMGB_ROLE_LEFT_TOES];
+        j->rfoot = (uint32_t)r.joint[SMGB_ROLE_RIGHT_FOOT];
+        j->rtoe = (uint32_t)r.joint[SMGB_ROLE_RIGHT_TOES];
+      }
+    }
+  }
+  free(s.names);
+  free(s.parents);
+  free(s.offsets);
+  return ok;
 }
 
 static size_t build_path(const path_spec* p, double* xz, size_t cap) {
@@ -392,7 +432,8 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
 
   memset(pr, 0, sizeof(*pr));
   if (!find_joints(g, &j)) {
-    snprintf(pr->error, sizeof(pr->error), "skeleton lacks CMU foot joints");
+    snprintf(pr->error, sizeof(pr->error),
+             "skeleton lacks recognisable pelvis, feet or toes");
     return;
   }
   n = build_path(p, path, MAX_PATH_POINTS);
@@ -465,7 +506,8 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
   eval_trace_free(&t);
 }
 
-static void summarize_paths(eval_ctx* ctx, const path_result* res) {
+static void summarize_paths(eval_ctx* ctx, const path_result* res,
+                            const char* graph, uint32_t joints) {
   size_t k, ran = 0, ended = 0, sw_total = 0, sw_near = 0;
   double first_max = 0, med_max = 0, p99_max = 0, dev_lo = INFINITY,
          dev_hi = 0, sk_lo = INFINITY, sk_hi = 0;
@@ -489,28 +531,35 @@ static void summarize_paths(eval_ctx* ctx, const path_result* res) {
     }
   }
   if (!ran) {
-    eval_summary(ctx, "**Path following**: no path could be run.");
+    eval_summary(ctx, "**Path following%s%s**: no path could be run.",
+                 graph ? ", " : "", graph ? graph : "");
     return;
   }
   eval_summary(ctx,
-               "**Path following** (%zu paths, 30 Hz): path given -> first "
+               "**Path following%s%s** (%zu paths, 30 Hz): path given -> first "
                "pose at most %.3f ms (paper: 3-23 s to plan a drawn path); "
-               "per frame (step + 31 matrices) median <= %.1f us, p99 <= "
+               "per frame (step + %u matrices) median <= %.1f us, p99 <= "
                "%.1f us; followed the path to its end (within 1 m) on %zu of %zu "
                "paths; mean "
                "root distance from the path %.2f-%.2f m per path; foot skate "
                "%.2f-%.2f cm per contact frame; %zu of %zu style/action "
                "switches within 1 m of the requested point.",
-               ran, first_max, med_max, p99_max, ended, ran, dev_lo, dev_hi,
+               graph ? ", " : "", graph ? graph : "", ran, first_max, joints,
+               med_max,
+               p99_max, ended, ran, dev_lo, dev_hi,
                sk_lo, sk_hi, sw_near, sw_total);
 }
 
 static void report_paths(eval_ctx* ctx, smg_graph* g,
-                         const path_result* res) {
+                         const path_result* res, const char* graph) {
   size_t k;
   uint32_t c;
   char a[32], b[32], d[32], e[32], f[32], h[32], x[32];
-  summarize_paths(ctx, res);
+  smg_graph_info info;
+  memset(&info, 0, sizeof(info));
+  info.struct_size = sizeof(info);
+  smg_graph_get_info(g, &info);
+  summarize_paths(ctx, res, graph, info.joint_count);
   eval_md(ctx,
           "| Path | length (m) | frames | path given -> first pose (ms) | "
           "per frame median / p99 (us) | root distance from path mean / max "
@@ -746,7 +795,7 @@ void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size) {
     eval_log("path %s...", k_paths[k].key);
     run_path(ctx, g, &k_paths[k], walk, run, action, 0, &res[k]);
   }
-  report_paths(ctx, g, res);
+  report_paths(ctx, g, res, NULL);
   eval_md(ctx,
           "Figures: grey = drawn path; root coloured by style; green band = "
           "upper body doing the spliced action; squares/triangles = left/"
@@ -761,5 +810,36 @@ void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size) {
       eval_md(ctx, "Figure for %s not produced: %s\n\n", k_paths[k].title,
               again.error);
   }
+  smg_graph_destroy(g);
+}
+
+void eval_paths_on_graph(eval_ctx* ctx, const void* blob, size_t size,
+                         const char* graph) {
+  smg_graph* g = NULL;
+  smg_result r = smg_graph_load_memory(blob, size, NULL, &g);
+  uint32_t walk, run, action;
+  static path_result res[PATH_COUNT];
+  size_t k;
+  if (!eval_check(ctx, r == SMG_OK, "%s blob loads: %s", graph,
+                  smg_result_string(r))) {
+    eval_md(ctx, "The %s blob did not load in this run: `%s`.\n\n", graph,
+            smg_result_string(r));
+    return;
+  }
+  pick_labels(g, &walk, &run, &action);
+  if (ctx->check) {
+    path_result pr;
+    char what[96];
+    snprintf(what, sizeof(what), "%s straight", graph);
+    run_path(ctx, g, &k_paths[0], walk, run, action, 0, &pr);
+    check_path(ctx, what, &pr);
+    smg_graph_destroy(g);
+    return;
+  }
+  for (k = 0; k < PATH_COUNT; ++k) {
+    eval_log("%s path %s...", graph, k_paths[k].key);
+    run_path(ctx, g, &k_paths[k], walk, run, action, 0, &res[k]);
+  }
+  report_paths(ctx, g, res, graph);
   smg_graph_destroy(g);
 }

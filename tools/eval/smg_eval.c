@@ -28,9 +28,12 @@ static void usage(void) {
   fprintf(stderr,
           "usage: smg-eval [--shared DIR] [--out results.md] [--img DIR]\n"
           "                [--manifest data/cmu.manifest] [--keep DIR]\n"
+          "                [--bandai-manifest data/bandai.manifest]\n"
           "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
           "--keep DIR also writes the baked blobs and per-path CSV traces "
-          "to DIR\n");
+          "to DIR\n"
+          "--only follow runs just the bake and the path-following section "
+          "(report to --out)\n");
 }
 
 /* First line of a command's output (trailing newline removed). */
@@ -168,6 +171,10 @@ int main(int argc, char** argv) {
       ctx.keep_dir = argv[++i];
     else if (!strcmp(argv[i], "--manifest") && i + 1 < argc)
       ctx.manifest = argv[++i];
+    else if (!strcmp(argv[i], "--bandai-manifest") && i + 1 < argc)
+      ctx.bandai_manifest = argv[++i];
+    else if (!strcmp(argv[i], "--only") && i + 1 < argc)
+      ctx.only = argv[++i];
     else if (!strcmp(argv[i], "--check"))
       ctx.check = 1;
     else if (!strcmp(argv[i], "--quick"))
@@ -177,13 +184,23 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (ctx.only && strcmp(ctx.only, "follow") != 0) {
+    usage();
+    return 2;
+  }
   if (!ctx.manifest) ctx.manifest = "data/cmu.manifest";
+  if (!ctx.bandai_manifest) ctx.bandai_manifest = "data/bandai.manifest";
   if (ctx.keep_dir) mkdir(ctx.keep_dir, 0777);
   if (!shared) shared = getenv("SMG_SHARED");
   if (!shared) shared = "../shared";
   snprintf(ctx.cmu_dir, sizeof(ctx.cmu_dir), "%s/mocap/cmu", shared);
   eval_cmu_clip(&ctx, "09_12", probe, sizeof(probe));
   ctx.have_cmu = file_readable(probe);
+  snprintf(ctx.bandai_dir, sizeof(ctx.bandai_dir), "%s/mocap/bandai-namco",
+           shared);
+  snprintf(probe, sizeof(probe), "%s/dataset-2_walk_normal_001.bvh",
+           ctx.bandai_dir);
+  ctx.have_bandai = file_readable(probe);
   if (ctx.check) ctx.quick = 1;
   t0 = eval_now();
 
@@ -218,9 +235,10 @@ int main(int argc, char** argv) {
              ctx.cmu_dir, ctx.check ? "" : " (the report says so)");
 
   eval_section_bake(&ctx, &blob, &blob_size);
-  eval_section_paths(&ctx, blob, blob_size);
-  eval_section_feet(&ctx, blob, blob_size);
-  eval_section_splice(&ctx);
+  if (!ctx.only) eval_section_paths(&ctx, blob, blob_size);
+  if (!ctx.only) eval_section_feet(&ctx, blob, blob_size);
+  eval_section_follow(&ctx, blob, blob_size);
+  if (!ctx.only) eval_section_splice(&ctx);
   free(blob);
 
   if (ctx.md) {
@@ -252,6 +270,9 @@ int main(int argc, char** argv) {
             "planned at once); libsmg plans incrementally, so section 2 "
             "reports the time from giving the path to the first pose plus "
             "the per-frame cost.\n\n");
+  }
+  if (!ctx.only) eval_section_bandai(&ctx);
+  if (ctx.md) {
     eval_md(&ctx, "Whole evaluation run: %.1f s wall clock.\n",
             eval_now() - t0);
     fclose(ctx.md);

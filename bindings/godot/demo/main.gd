@@ -14,6 +14,7 @@ extends Node3D
 
 const BoneMeshes = preload("res://bone_meshes.gd")
 const MIN_POINT_SPACING := 0.25  # metres between recorded mouse points
+const BODY_GLTF := "res://body.gltf"
 
 @onready var character: SmgCharacter = $Character
 @onready var camera: Camera3D = $Camera3D
@@ -38,8 +39,7 @@ func _ready() -> void:
 	if graph == null or not graph.is_loaded():
 		status.text = "No graph loaded: run `make godot-demo` to copy build/default.smg here."
 		return
-	var skel := character.create_skeleton()
-	BoneMeshes.add_to(skel, graph)
+	var skel := _add_body()
 	# Apply the pose in the skeleton's modifier stage (Godot 4.3+ style);
 	# without it the character writes the bone poses itself.
 	skel.add_child(SmgSkeletonModifier.new())
@@ -101,6 +101,35 @@ func _unhandled_input(event: InputEvent) -> void:
 				_redraw_path()
 			KEY_I:
 				character.ik_enabled = not character.ik_enabled
+
+
+# --- the character's body --------------------------------------------------
+
+# The skinned body `make godot-demo` generates from the graph's skeleton
+# (build/smg-body-gltf: one mesh, bones named like the graph's joints),
+# loaded at run time; without it, capsules on a skeleton built from the graph.
+func _add_body() -> Skeleton3D:
+	if FileAccess.file_exists(BODY_GLTF):
+		var doc := GLTFDocument.new()
+		var state := GLTFState.new()
+		if doc.append_from_file(BODY_GLTF, state) == OK:
+			var scene := doc.generate_scene(state)
+			var found := scene.find_children("*", "Skeleton3D", true, false)
+			if not found.is_empty():
+				var skel: Skeleton3D = found[0]
+				skel.get_parent().remove_child(skel)
+				skel.owner = null
+				for n in skel.find_children("*", "", true, false):
+					n.owner = null
+				scene.free()
+				skel.name = "Skeleton3D"
+				character.add_child(skel)
+				return skel
+			scene.free()
+	push_warning("no generated body at %s (make godot-demo writes it): drawing capsules" % BODY_GLTF)
+	var capsules := character.create_skeleton()
+	BoneMeshes.add_to(capsules, graph)
+	return capsules
 
 
 # --- path drawing --------------------------------------------------------
@@ -236,7 +265,7 @@ func _screenshot(out: String) -> void:
 			_extend_path(pts[i - 1].lerp(pts[i], float(k) / n))
 	_add_marker("S", Vector3(0.5, 0, 4))
 	_add_marker("T", Vector3(5, 0, 6.5))
-	camera.transform = Transform3D(Basis(), Vector3(2.5, 3.2, 10.0)).looking_at(Vector3(2.5, 0.5, 3.5), Vector3.UP)
+	camera.transform = Transform3D(Basis(), Vector3(2.6, 2.3, 9.2)).looking_at(Vector3(2.6, 0.6, 4.2), Vector3.UP)
 	for i in 150:
 		await get_tree().process_frame
 	await RenderingServer.frame_post_draw

@@ -48,11 +48,16 @@ typedef struct smg_gd_character {
 	GDObjectInstanceID skel_id;
 	int64_t skel_version;
 	int32_t *bone_of_joint; /* joint -> bone index, -1 if missing */
+	float *rest_of_joint;   /* 8 per joint: global rest rotation of its
+	                         * bone and of that bone's parent (x,y,z,w) */
+	bool rests_identity;    /* every mapped bone rests world-aligned */
 	bool warned_skeleton, warned_bones, warned_step;
 
 	int64_t style, action;
 	double threshold;
 	bool ik, active, in_editor;
+	bool steering;          /* root steering (smg.h): on by default */
+	double steer_limits[3]; /* turn rate rad/s, slide ratio, stop s; 0 = default */
 
 	float *path_xz;         /* mirror of the path, replayed after reload */
 	uint32_t path_count, path_cap;
@@ -83,6 +88,8 @@ static void teardown(smg_gd_character *self) {
 	self->rot = NULL;
 	free(self->bone_of_joint);
 	self->bone_of_joint = NULL;
+	free(self->rest_of_joint);
+	self->rest_of_joint = NULL;
 	self->skel_id = 0;
 	self->warned_bones = false;
 }
@@ -131,7 +138,10 @@ static bool ensure_character(smg_gd_character *self) {
 	smg_character_desc d;
 	memset(&d, 0, sizeof d);
 	d.struct_size = sizeof d;
-	d.flags = self->ik ? 0 : SMG_CHARACTER_NO_IK;
+	d.flags = (self->ik ? 0 : SMG_CHARACTER_NO_IK) | (self->steering ? 0 : SMG_CHARACTER_NO_STEERING);
+	d.steer_turn_rate = (float)self->steer_limits[0];
+	d.steer_slide_ratio = (float)self->steer_limits[1];
+	d.stop_seconds = (float)self->steer_limits[2];
 	d.initial_style = self->style >= 0 && self->style < info.style_count ? (uint32_t)self->style : 0;
 	d.initial_action = self->action >= 0 && self->action < info.action_count ? (uint32_t)self->action : 0;
 	d.path_capacity = PATH_CAPACITY;
@@ -227,6 +237,55 @@ static GDExtensionObjectPtr find_skeleton(smg_gd_character *self) {
 	return NULL;
 }
 
+/* Rotation of a rest transform's basis (columns normalised: a scaled
+ * rest keeps its orientation), as (x,y,z,w). */
+static void basis_rotation(const gd_transform3d *t, float *q) {
+	float m[3][3];
+	for (int c = 0; c < 3; c++) {
+		float l = sqrtf(t->basis[0][c] * t->basis[0][c] + t->basis[1][c] * t->basis[1][c] +
+		                t->basis[2][c] * t->basis[2][c]);
+		for (int r = 0; r < 3; r++) m[r][c] = l > 0.0f ? t->basis[r][c] / l : (r == c);
+	}
+	float tr = m[0][0] + m[1][1] + m[2][2];
+	if (tr > 0.0f) {
+		float s = sqrtf(tr + 1.0f) * 2.0f;
+		q[3] = 0.25f * s;
+		q[0] = (m[2][1] - m[1][2]) / s;
+		q[1] = (m[0][2] - m[2][0]) / s;
+		q[2] = (m[1][0] - m[0][1]) / s;
+	} else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
+		float s = sqrtf(1.0f + m[0][0] - m[1][1] - m[2][2]) * 2.0f;
+		q[3] = (m[2][1] - m[1][2]) / s;
+		q[0] = 0.25f * s;
+		q[1] = (m[0][1] + m[1][0]) / s;
+		q[2] = (m[0][2] + m[2][0]) / s;
+	} else if (m[1][1] > m[2][2]) {
+		float s = sqrtf(1.0f + m[1][1] - m[0][0] - m[2][2]) * 2.0f;
+		q[3] = (m[0][2] - m[2][0]) / s;
+		q[0] = (m[0][1] + m[1][0]) / s;
+		q[1] = 0.25f * s;
+		q[2] = (m[1][2] + m[2][1]) / s;
+	} else {
+		float s = sqrtf(1.0f + m[2][2] - m[0][0] - m[1][1]) * 2.0f;
+		q[3] = (m[1][0] - m[0][1]) / s;
+		q[0] = (m[0][2] + m[2][0]) / s;
+		q[1] = (m[1][2] + m[2][1]) / s;
+		q[2] = 0.25f * s;
+	}
+}
+
+/* The global rest rotation of `bone` (identity for -1). */
+static void bone_global_rest(GDExtensionObjectPtr skel, int64_t bone, float *q) {
+	q[0] = q[1] = q[2] = 0.0f;
+	q[3] = 1.0f;
+	if (bone < 0) return;
+	gd_transform3d t;
+	memset(&t, 0, sizeof t);
+	const void *a[1] = { &bone };
+	gd_call(GDB_Skeleton3D_get_bone_global_rest, skel, a, &t);
+	basis_rotation(&t, q);
+}
+
 /* Bones by name, refreshed when the skeleton or its bone list changes. */
 static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 	GDObjectInstanceID id = gd.object_get_instance_id(skel);
@@ -237,6 +296,14 @@ static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 	int32_t *map = realloc(self->bone_of_joint, (n ? n : 1) * sizeof *map);
 	if (!map) return;
 	self->bone_of_joint = map;
+	float *rest = realloc(self->rest_of_joint, (n ? n : 1) * 8 * sizeof *rest);
+	if (!rest) {
+		free(map);
+		self->bone_of_joint = NULL;
+		return;
+	}
+	self->rest_of_joint = rest;
+	self->rests_identity = true;
 	self->skel_id = id;
 	self->skel_version = version;
 	uint32_t matched = 0;
@@ -246,8 +313,10 @@ static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 		ji.struct_size = sizeof ji;
 		map[j] = -1;
 		if (smg_graph_get_joint(self->blob->graph, j, &ji) != SMG_OK || !ji.name) continue;
+		char bone_name[256];
+		smg_gd_bone_name(ji.name, bone_name, sizeof bone_name);
 		gd_string name;
-		gd_str_init(&name, ji.name);
+		gd_str_init(&name, bone_name);
 		int64_t bone = -1;
 		const void *a[1] = { &name };
 		gd_call(GDB_Skeleton3D_find_bone, skel, a, &bone);
@@ -255,6 +324,17 @@ static void map_bones(smg_gd_character *self, GDExtensionObjectPtr skel) {
 		if (bone >= 0 && bone <= INT32_MAX) {
 			map[j] = (int32_t)bone;
 			matched++;
+			/* A rig whose bones have their own rest orientation (not the
+			 * graph's world-aligned rest) gets its rotations conjugated in
+			 * write_pose_to. */
+			int64_t parent = -1;
+			const void *pa[1] = { &bone };
+			gd_call(GDB_Skeleton3D_get_bone_parent, skel, pa, &parent);
+			bone_global_rest(skel, bone, &rest[8 * j]);
+			bone_global_rest(skel, parent, &rest[8 * j + 4]);
+			for (int k = 0; k < 8; k++)
+				if (fabsf(rest[8 * j + k] - (k % 4 == 3 ? 1.0f : 0.0f)) > 1e-6f)
+					self->rests_identity = false;
 		}
 	}
 	if (matched < n && !self->warned_bones) {
@@ -298,6 +378,14 @@ static void write_pose_to(smg_gd_character *self, GDExtensionObjectPtr skel) {
 	for (uint32_t j = 0; j < n; j++) {
 		int64_t bone = self->bone_of_joint[j];
 		if (bone < 0) continue;
+		if (!self->rests_identity) {
+			/* graph rotations are relative to a world-aligned rest: bone
+			 * pose = parent bone's global rest^-1 * q * bone's global rest */
+			const float *r = &self->rest_of_joint[8 * j];
+			float pi[4] = { -r[4], -r[5], -r[6], r[7] }, t[4];
+			quat_mul(&self->rot[4 * j], r, t);
+			quat_mul(pi, t, &self->rot[4 * j]);
+		}
 		const void *a[2] = { &bone, &self->rot[4 * j] };
 		gd_call(GDB_Skeleton3D_set_bone_pose_rotation, skel, a, NULL);
 		if (j == 0) {
@@ -536,6 +624,74 @@ static void m_is_ik_enabled(void *vself, const gd_value *a, gd_value *r) {
 	SELF;
 	(void)a;
 	r->b = self->ik;
+}
+
+static void m_set_steering_enabled(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	self->steering = a[0].b != 0;
+	if (self->ch) smg_character_set_steering(self->ch, self->steering ? 1u : 0u);
+}
+
+static void m_is_steering_enabled(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->b = self->steering;
+}
+
+/* One of the three steering limits (0 = the library's default); the
+ * library refuses negative or non-finite values and keeps the old ones. */
+static void set_steer_limit(smg_gd_character *self, int which, double v, const char *name) {
+	double l[3] = { self->steer_limits[0], self->steer_limits[1], self->steer_limits[2] };
+	l[which] = v;
+	if (!(v >= 0.0) || !isfinite(v)) {
+		GD_ERR("SmgCharacter.%s: must be >= 0 (0 = default)", name);
+		return;
+	}
+	if (self->ch) {
+		smg_result res = smg_character_set_steering_limits(self->ch, (float)l[0], (float)l[1], (float)l[2]);
+		if (res != SMG_OK) {
+			GD_ERR("SmgCharacter.%s: rejected: %s", name, smg_result_string(res));
+			return;
+		}
+	}
+	self->steer_limits[which] = v;
+}
+
+static void m_set_steer_turn_rate(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	set_steer_limit(self, 0, a[0].f, "steer_turn_rate");
+}
+
+static void m_get_steer_turn_rate(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->steer_limits[0];
+}
+
+static void m_set_steer_slide_ratio(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	set_steer_limit(self, 1, a[0].f, "steer_slide_ratio");
+}
+
+static void m_get_steer_slide_ratio(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->steer_limits[1];
+}
+
+static void m_set_stop_seconds(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	set_steer_limit(self, 2, a[0].f, "stop_seconds");
+}
+
+static void m_get_stop_seconds(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->steer_limits[2];
 }
 
 static void m_set_active(void *vself, const gd_value *a, gd_value *r) {
@@ -851,6 +1007,14 @@ static const gd_method methods[] = {
 	{ "get_error_threshold", m_get_error_threshold, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
 	{ "set_ik_enabled", m_set_ik_enabled, GT_NIL, NULL, 1, { { "enabled", GT_BOOL, NULL } }, 0 },
 	{ "is_ik_enabled", m_is_ik_enabled, GT_BOOL, NULL, 0, { { 0 } }, 1 },
+	{ "set_steering_enabled", m_set_steering_enabled, GT_NIL, NULL, 1, { { "enabled", GT_BOOL, NULL } }, 0 },
+	{ "is_steering_enabled", m_is_steering_enabled, GT_BOOL, NULL, 0, { { 0 } }, 1 },
+	{ "set_steer_turn_rate", m_set_steer_turn_rate, GT_NIL, NULL, 1, { { "radians_per_second", GT_FLOAT, NULL } }, 0 },
+	{ "get_steer_turn_rate", m_get_steer_turn_rate, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_steer_slide_ratio", m_set_steer_slide_ratio, GT_NIL, NULL, 1, { { "ratio", GT_FLOAT, NULL } }, 0 },
+	{ "get_steer_slide_ratio", m_get_steer_slide_ratio, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_stop_seconds", m_set_stop_seconds, GT_NIL, NULL, 1, { { "seconds", GT_FLOAT, NULL } }, 0 },
+	{ "get_stop_seconds", m_get_stop_seconds, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
 	{ "set_active", m_set_active, GT_NIL, NULL, 1, { { "active", GT_BOOL, NULL } }, 0 },
 	{ "is_active", m_is_active, GT_BOOL, NULL, 0, { { 0 } }, 1 },
 	{ "set_path", m_set_path, GT_INT, NULL, 1, { { "points", GT_PV3, NULL } }, 0 },
@@ -885,6 +1049,7 @@ static GDExtensionObjectPtr create(void *ud, GDExtensionBool notify) {
 	gd_node_path_init(&self->skeleton_path, "");
 	self->threshold = 0.25;
 	self->ik = true;
+	self->steering = true;
 	self->active = true;
 	self->owner = gd_object_create("Node3D", CLASS, self, notify);
 	if (!self->owner) {
@@ -924,6 +1089,17 @@ void smg_gd_character_register(void) {
 		"get_error_threshold");
 	gd_arg p_ik = { "ik_enabled", GT_BOOL, NULL };
 	gd_register_property(CLASS, &p_ik, GD_PROPERTY_HINT_NONE, NULL, "set_ik_enabled", "is_ik_enabled");
+	gd_arg p_steer = { "steering_enabled", GT_BOOL, NULL };
+	gd_register_property(CLASS, &p_steer, GD_PROPERTY_HINT_NONE, NULL, "set_steering_enabled", "is_steering_enabled");
+	gd_arg p_turn = { "steer_turn_rate", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_turn, GD_PROPERTY_HINT_RANGE, "0,6.3,0.01,suffix:rad/s", "set_steer_turn_rate",
+		"get_steer_turn_rate");
+	gd_arg p_slide = { "steer_slide_ratio", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_slide, GD_PROPERTY_HINT_RANGE, "0,1,0.01", "set_steer_slide_ratio",
+		"get_steer_slide_ratio");
+	gd_arg p_stop = { "stop_seconds", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_stop, GD_PROPERTY_HINT_RANGE, "0,5,0.05,suffix:s", "set_stop_seconds",
+		"get_stop_seconds");
 	gd_arg p_active = { "active", GT_BOOL, NULL };
 	gd_register_property(CLASS, &p_active, GD_PROPERTY_HINT_NONE, NULL, "set_active", "is_active");
 

@@ -344,8 +344,10 @@ GDExtensionObjectPtr smg_gd_graph_build_skeleton(smg_gd_graph *self) {
 		memset(&ji, 0, sizeof ji);
 		ji.struct_size = sizeof ji;
 		if (smg_graph_get_joint(self->blob->graph, j, &ji) != SMG_OK) break;
+		char bone_name[256];
+		smg_gd_bone_name(ji.name, bone_name, sizeof bone_name);
 		gd_string name;
-		gd_str_init(&name, ji.name ? ji.name : "");
+		gd_str_init(&name, bone_name);
 		const void *aa[1] = { &name };
 		int64_t bone = -1;
 		gd_call(GDB_Skeleton3D_add_bone, skel, aa, &bone);

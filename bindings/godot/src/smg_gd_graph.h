@@ -38,4 +38,16 @@ int64_t smg_gd_graph_load(smg_gd_graph *g, const char *path);
  * offsets), or NULL with a Godot error. The caller owns the node. */
 GDExtensionObjectPtr smg_gd_graph_build_skeleton(smg_gd_graph *g);
 
+/* The Skeleton3D bone name of a graph joint: Godot rejects ':' and '/' in
+ * bone names and its importers write '_' instead ("mixamorig:Hips" ->
+ * "mixamorig_Hips"), so both build_skeleton and the character's bone lookup
+ * use this spelling. */
+static inline void smg_gd_bone_name(const char *joint, char *out, size_t size) {
+	size_t i = 0;
+	if (!size) return;
+	for (; joint && joint[i] && i + 1 < size; i++)
+		out[i] = (joint[i] == ':' || joint[i] == '/') ? '_' : joint[i];
+	out[i] = '\0';
+}
+
 #endif

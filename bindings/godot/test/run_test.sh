@@ -10,7 +10,10 @@
 #
 # Environment: GODOT_GD (the command running Godot, default ../gd),
 # GODOT_TIMEOUT (seconds per Godot run, default 300), GODOT_PRELOAD
-# (LD_PRELOAD for Godot, used by the AddressSanitizer run).
+# (LD_PRELOAD for Godot, used by the AddressSanitizer run), GODOT_BODY and
+# GODOT_BVH (the generated body glTF of GRAPH and smg-synth's BVH of it
+# along skinned_path.txt at 30 fps: with both, test_skinned.gd checks the
+# skinned character against them).
 set -eu
 EXT=$1
 GRAPH=$2
@@ -42,6 +45,47 @@ set -e
 grep -E '^(PASS|FAIL|godot:)' "$LOG_ABS" || true
 sh "$HERE/check_log.sh" "$LOG_ABS"
 
+# A graph retargeted onto a rig that is not the capture skeleton, driven
+# into a Skeleton3D with its own bone axes and compared with smg-synth
+# (test_rig.gd). SMG_RIG_GRAPH / SMG_RIG_REF: the graph and the reference
+# positions (bvh_positions.py output); skipped when not given.
+if [ -n "${SMG_RIG_GRAPH:-}" ]; then
+	RIG_LOG=$(echo "$LOG_ABS" | sed 's/\.log$//')-rig.log
+	cp "$SMG_RIG_GRAPH" "$PROJ/rig.smg"
+	cp "$SMG_RIG_REF" "$PROJ/rig_ref.csv"
+	echo "== godot retargeted rig test ($RIG_LOG)"
+	set +e
+	(cd "$PROJ" && env ${GODOT_PRELOAD:+LD_PRELOAD=$GODOT_PRELOAD} timeout "$TMO" $GD --headless --fixed-fps 30 \
+		--audio-driver Dummy --path . --script res://test_rig.gd > "$RIG_LOG" 2>&1)
+	set -e
+	grep -E '^(PASS|FAIL|rig:)' "$RIG_LOG" || true
+	planned=$(sed -n 's/^const PLANNED := \([0-9]*\).*/\1/p' "$HERE/test_rig.gd")
+	if ! grep -qx "rig: $planned passed, 0 failed" "$RIG_LOG" || grep -qE 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$RIG_LOG"; then
+		echo "test-godot: retargeted rig test failed, see $RIG_LOG" >&2
+		grep -E -A3 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$RIG_LOG" | head -20 >&2
+		exit 1
+	fi
+fi
+
+if [ -n "${GODOT_BODY:-}" ] && [ -n "${GODOT_BVH:-}" ]; then
+	cp "$GODOT_BODY" "$PROJ/body.gltf"
+	cp "$GODOT_BVH" "$PROJ/skinned.bvh"
+	cp "$HERE/skinned_path.txt" "$PROJ/"
+	SKIN_LOG=$(echo "$LOG_ABS" | sed 's/\.log$//')-skinned.log
+	echo "== godot skinned character test ($SKIN_LOG)"
+	set +e
+	(cd "$PROJ" && env ${GODOT_PRELOAD:+LD_PRELOAD=$GODOT_PRELOAD} timeout "$TMO" $GD --headless --fixed-fps 30 \
+		--audio-driver Dummy --path . --script res://test_skinned.gd > "$SKIN_LOG" 2>&1)
+	set -e
+	grep -E '^(PASS|FAIL|skinned:|bones vs|skinned mesh:)' "$SKIN_LOG" || true
+	planned=$(sed -n 's/^const PLANNED := \([0-9]*\).*/\1/p' "$HERE/test_skinned.gd")
+	if ! grep -qx "skinned: $planned passed, 0 failed" "$SKIN_LOG" || grep -qE 'SCRIPT ERROR|Program crashed' "$SKIN_LOG"; then
+		echo "test-godot: skinned character test failed, see $SKIN_LOG" >&2
+		grep -E -A3 'SCRIPT ERROR|Program crashed' "$SKIN_LOG" | head -20 >&2
+		exit 1
+	fi
+fi
+
 [ -n "$EDITOR_LOG" ] || exit 0
 
 # The demo project driven by synthetic input (drag, keys, right click).
@@ -53,6 +97,8 @@ cp "$HERE/../demo/project.godot" "$HERE/../demo"/*.gd "$HERE/../demo"/*.tscn "$H
 	"$HERE/demo_input.gd" "$DEMO_PROJ/"
 cp "$EXT" "$DEMO_PROJ/bin/libsmg_godot.so"
 cp "$GRAPH" "$DEMO_PROJ/default.smg"
+# The demo draws the generated body when it is there (capsules otherwise).
+[ -z "${GODOT_BODY:-}" ] || cp "$GODOT_BODY" "$DEMO_PROJ/body.gltf"
 echo 'res://smg.gdextension' > "$DEMO_PROJ/.godot/extension_list.cfg"
 echo "== godot demo input test ($DEMO_LOG)"
 set +e

@@ -173,6 +173,18 @@ namespace Smg
             SmgException.Check(SmgNative.smg_character_set_ik(this, enabled ? 1u : 0u), "smg_character_set_ik");
         }
 
+        /// <summary>Root steering on or off (on by default).</summary>
+        public void SetSteering(bool enabled)
+        {
+            SmgException.Check(SmgNative.smg_character_set_steering(this, enabled ? 1u : 0u), "smg_character_set_steering");
+        }
+
+        /// <summary>Steering bounds: heading rad/s, translation as a fraction of the motion's speed, braking seconds (0 = default each).</summary>
+        public void SetSteeringLimits(float turnRate, float slideRatio, float stopSeconds)
+        {
+            SmgException.Check(SmgNative.smg_character_set_steering_limits(this, turnRate, slideRatio, stopSeconds), "smg_character_set_steering_limits");
+        }
+
         // --- Per frame: no allocation ---
 
         /// <summary>Advances by dt seconds (0 &lt;= dt &lt;= 1).</summary>

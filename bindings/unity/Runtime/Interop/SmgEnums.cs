@@ -46,6 +46,7 @@ namespace Smg
     {
         None = 0,
         NoIk = 1,
+        NoSteering = 2,
     }
 
     /// <summary>SMG_STATE_* flags of SmgCharacterState.Flags.</summary>

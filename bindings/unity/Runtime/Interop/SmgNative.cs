@@ -130,6 +130,12 @@ namespace Smg
         public static extern SmgResult smg_character_set_ik(SmgCharacter character, uint enabled);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_set_steering(SmgCharacter character, uint enabled);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_set_steering_limits(SmgCharacter character, float turnRate, float slideRatio, float stopSeconds);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_step(SmgCharacter character, float dt);
 
         [DllImport(Library, CallingConvention = Cdecl)]

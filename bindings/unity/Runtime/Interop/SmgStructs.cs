@@ -124,6 +124,10 @@ namespace Smg
         public float Horizon;
         public float ErrorThreshold;
         public SmgAllocator Allocator;
+        public float SteerTurnRate;
+        public float SteerSlideRatio;
+        public float StopSeconds;
+        public float Reserved1;
 
         public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgCharacterDesc));
 
@@ -151,6 +155,10 @@ namespace Smg
         public uint UpperNode;
         public float SyncRate;
         public float Reserved0;
+        public float SteerTurnRate;
+        public float SteerSlideSpeed;
+        public float PlaybackRate;
+        public float Reserved1;
 
         public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgCharacterState));
 

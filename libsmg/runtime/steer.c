@@ -1,0 +1,446 @@
+/*
+ * steer.c - root steering (docs/runtime.md, "Root steering").
+ *
+ * The planner chooses motion that follows the path as well as the data
+ * can; where the data cannot turn as tightly as the path (a graph of a few
+ * straight walks, a 90-degree polyline corner), the character would drift
+ * off. Every step this stage adds a small correction to the character's
+ * ground transform - a turn about the root's ground point and a
+ * translation - on top of the motion:
+ *
+ *  - heading: the clip's own direction of travel (where its root is a
+ *    moment ahead) is turned towards a pursuit point on the path; the
+ *    correction rate is bounded by a fraction of the clip's own turning
+ *    plus an additive term that grows with the motion's speed up to a
+ *    maximum rate (none while the motion stands);
+ *  - position: the lateral error is removed at most at a fraction of the
+ *    motion's ground speed;
+ *  - both rates change by a bounded amount per second, so the correction
+ *    never pops when it starts, saturates or stops.
+ * The correction is applied to the pose just composed and to every queued
+ * edge's ground transform (and the frame placement of the two the pose
+ * samples), so what is planned ahead moves with the character and the
+ * planner continues from where the character really is. It runs
+ * before forward kinematics and foot IK: a planted foot keeps its world
+ * anchor while the body turns and slides above it.
+ *
+ * Coming to rest: near the end, the stage picks the queued frame with both
+ * feet down whose root lands nearest the last point (a frame with one foot
+ * down, or any, when the data has none) and slows the playback down onto
+ * it with constant deceleration, sliding the remaining offset out on the
+ * way. There it holds the pose (the graph need not contain standing
+ * motion) until the path changes. Where the path turns too tightly for the
+ * available turning at the current speed, the playback slows down (to no
+ * less than SMGI_STEER_RATE_MIN). What the planner should make of the
+ * correction is smgi_steer_plan_view / _plan_reach (bottom of the file).
+ *
+ * Deterministic, no allocation, O(frames planned ahead) near the end and
+ * O(1) otherwise.
+ */
+#include <math.h>
+
+#include "character_internal.h"
+
+/* v moved towards target by at most step. */
+static float approach(float v, float target, float step) {
+  if (target > v + step) return v + step;
+  if (target < v - step) return v - step;
+  return target;
+}
+
+static float limit_or(float v, float def) { return v > 0.0f ? v : def; }
+
+void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
+                     float slide_ratio, float stop_seconds) {
+  s->enabled = enabled;
+  s->mode = SMGI_STEER_FOLLOW;
+  smgi_steer_set_limits(s, turn_limit, slide_ratio, stop_seconds);
+  s->have_prev = 0;
+  s->own_turn = s->own_speed = 0.0f;
+  s->turn = 0.0f;
+  s->slide[0] = s->slide[1] = 0.0f;
+  s->rate = 1.0f;
+  s->drift_turn = s->drift_move = 0.0f;
+}
+
+void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
+                           float slide_ratio, float stop_seconds) {
+  s->turn_limit = limit_or(turn_limit, SMGI_STEER_TURN_LIMIT);
+  s->slide_ratio = limit_or(slide_ratio, SMGI_STEER_SLIDE_RATIO);
+  s->stop_seconds = limit_or(stop_seconds, SMGI_STEER_STOP_SECONDS);
+}
+
+void smgi_steer_path_changed(smgi_steer* s) {
+  s->mode = SMGI_STEER_FOLLOW;
+  s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
+}
+
+/* The path's point `ahead` metres past arc s, continued straight past the
+ * end along the last segment (a character arriving keeps its line). */
+static void point_ahead(const smgi_path* p, float s, uint32_t seg,
+                        float* x, float* z) {
+  float h;
+  float t = s;
+  if (t > p->length) t = p->length;
+  smgi_path_eval(p, t, &seg, x, z, &h);
+  if (s > p->length) {
+    *x += (s - p->length) * sinf(h);
+    *z += (s - p->length) * cosf(h);
+  }
+}
+
+/* A queue entry's frame -> world placement from its ground transform W,
+ * as the planner computed it when it pushed the entry. */
+static smgi_xform2 placement_of(const smg_graph* g, const smgi_qentry* q) {
+  const float* r =
+      g->data.frames[g->data.lower_nodes[g->data.lower_edges[q->edge].from]
+                         .frame].root2d;
+  smgi_xform2 ground = {r[0], r[1], r[2]};
+  return smgi_xf_mul(q->W, smgi_xf_inv(ground));
+}
+
+/* Queue entry i's placement. The correction keeps M up to date only for
+ * the two entries the pose samples (every entry's W, which the planner
+ * reads, is corrected every step); further ones derive it from W. */
+static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
+  const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
+  if (i < 2u || !ch->steer.corrected) return q->M;
+  return placement_of(ch->graph, q);
+}
+
+void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
+  if (!ch->steer.corrected || pops == 0) return;
+  /* the entries that moved to index 0 or 1 from further back */
+  for (uint32_t i = pops < 2u ? 2u - pops : 0u; i < 2u && i < ch->lower.count;
+       ++i) {
+    smgi_qentry* q = smgi_q_at(&ch->lower, i);
+    q->M = placement_of(ch->graph, q);
+  }
+}
+
+/* Ground position of the frame k frames after the playhead (0 when the
+ * queue is shorter). */
+static int frame_ground(const smg_character* ch, uint32_t k, float* x,
+                        float* z, uint32_t* flags) {
+  uint32_t entry, offset;
+  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, k, &entry,
+                     &offset))
+    return 0;
+  const smg_graph* g = ch->graph;
+  const smgi_qentry* q = smgi_q_at_c(&ch->lower, entry);
+  const smgi_frame* f =
+      &g->data.frames[g->data.lower_edges[q->edge].first_frame + offset];
+  smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], x, z);
+  if (flags) *flags = f->flags;
+  return 1;
+}
+
+/* Frames from the playhead to (seq, offset), or a negative value when the
+ * queue no longer holds that entry. */
+static float frames_to(const smg_character* ch, uint32_t seq,
+                       uint32_t offset) {
+  const smgi_edge* edges = ch->graph->data.lower_edges;
+  float f = -ch->lower.t;
+  for (uint32_t i = 0; i < ch->lower.count; ++i) {
+    const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
+    if (q->seq == seq) return f + (float)offset;
+    f += (float)edges[q->edge].frame_count;
+  }
+  return -1.0f;
+}
+
+/* Near the end: choose the queued frame to come to rest on and start
+ * braking once it is as many frames ahead as braking from the current
+ * rate over stop_seconds covers. */
+static void consider_stop(smg_character* ch) {
+  smgi_steer* s = &ch->steer;
+  const smgi_path* p = &ch->path;
+  const float ex = p->xz[2u * (p->count - 1u)];
+  const float ez = p->xz[2u * (p->count - 1u) + 1u];
+  const float brake_frames = 0.5f * s->stop_seconds * ch->fps * s->rate;
+  /* nothing to decide while the end is further along the path than
+   * braking needs (by progress: a loop may pass near its end early) */
+  if (p->length - ch->progress >
+      s->own_speed * s->stop_seconds + SMGI_STEER_STOP_NEAR)
+    return;
+  const uint32_t ahead = (uint32_t)smgi_frames_ahead(&ch->lower);
+  /* a gait cycle past the braking distance: a frame with both feet down
+   * is always among them */
+  const uint32_t limit =
+      (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
+  const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
+  /* decide only on a plan that reaches that far (not just after a
+   * re-plan left the edge playing alone) */
+  if (ahead < limit) return;
+  float best = INFINITY, x, z;
+  uint32_t best_k = 0, prev = 0;
+  if (!frame_ground(ch, 0, &x, &z, &prev)) return;
+  for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
+    uint32_t fl;
+    if (!frame_ground(ch, k, &x, &z, &fl)) break;
+    float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
+    /* both feet down: labelled so, or where the label passes from one
+     * foot to the other (contact labels may leave no frame between the
+     * two supports, though both feet are on the floor there) */
+    int down = (fl & both) == both ||
+               ((fl | prev) == both && (fl & both) != 0 && fl != prev);
+    if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
+    prev = fl;
+    if (d < best) {
+      best = d;
+      best_k = k;
+    }
+  }
+  if (best_k == 0 || best > SMGI_STEER_STOP_NEAR + SMGI_STEER_NO_FOOT) return;
+  float frames = (float)best_k - (ch->lower.t - floorf(ch->lower.t));
+  if (frames > brake_frames) return;
+  uint32_t entry, offset;
+  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, best_k,
+                     &entry, &offset))
+    return;
+  s->stop_seq = smgi_q_at(&ch->lower, entry)->seq;
+  s->stop_offset = offset;
+  s->mode = SMGI_STEER_BRAKE;
+}
+
+/* Signed turning of the path ahead (radians per metre, + = left): the
+ * sharper of two halves of the next SMGI_STEER_CURVE_AHEAD metres, so a
+ * short tight loop is not averaged away. */
+static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
+  const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
+  float x, z, h0, h1, h2;
+  uint32_t sg = seg;
+  smgi_path_eval(p, s, &sg, &x, &z, &h0);
+  smgi_path_eval(p, s + half, &sg, &x, &z, &h1);
+  smgi_path_eval(p, s + 2.0f * half, &sg, &x, &z, &h2);
+  float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
+  return (fabsf(a) > fabsf(b) ? a : b) / half;
+}
+
+float smgi_steer_frames(smg_character* ch, float dt) {
+  smgi_steer* s = &ch->steer;
+  const float full = dt * ch->fps;
+  if (!s->enabled || ch->path.count < 2u) {
+    s->mode = SMGI_STEER_FOLLOW;
+    s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
+    return full * s->rate;
+  }
+  if (s->mode == SMGI_STEER_FOLLOW &&
+      (s->drift_turn > SMGI_STEER_REPLAN_TURN ||
+       s->drift_move > SMGI_STEER_REPLAN_MOVE)) {
+    /* the planned edges were chosen for where the character would have
+     * been without the correction since: choose them again from where it
+     * is (the edge playing stays) */
+    smgi_replan(ch);
+    s->drift_turn = s->drift_move = 0.0f;
+  }
+  if (s->mode == SMGI_STEER_FOLLOW) {
+    /* slow down where the path turns tighter than the steering can turn
+     * at this speed */
+    float kappa = curvature_ahead(&ch->path, ch->progress, ch->seg);
+    float r = s->rate > 0.05f ? s->rate : 0.05f;
+    /* the correction the path asks for at full playback: its turning at
+     * the motion's speed minus the motion's own turning */
+    float need = fabsf(kappa * s->own_speed - s->own_turn) / r;
+    float want = 1.0f;
+    if (need > s->turn_limit)
+      want = smgi_clampf(s->turn_limit / need, SMGI_STEER_RATE_MIN, 1.0f);
+    s->rate = approach(s->rate, want, SMGI_STEER_RATE_ACCEL * dt);
+    consider_stop(ch);
+    if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
+  }
+  if (s->mode == SMGI_STEER_REST) {
+    s->rate = 0.0f;
+    return 0.0f;
+  }
+  /* braking: constant deceleration that ends on the stop frame */
+  float left = frames_to(ch, s->stop_seq, s->stop_offset);
+  if (left < 0.0f) { /* re-planned away: follow again */
+    s->mode = SMGI_STEER_FOLLOW;
+    return full * s->rate;
+  }
+  float r = s->rate > SMGI_STEER_REST_RATE ? s->rate : SMGI_STEER_REST_RATE;
+  float decel = left > 1e-3f ? ch->fps * r * r / (2.0f * left) : INFINITY;
+  float r1 = r - decel * dt;
+  float frames = 0.5f * (r + (r1 > 0.0f ? r1 : 0.0f)) * full;
+  if (r1 <= SMGI_STEER_REST_RATE || frames >= left) {
+    s->mode = SMGI_STEER_REST;
+    s->rate = 0.0f;
+    return left > 0.0f ? left : 0.0f;
+  }
+  s->rate = r1;
+  return frames;
+}
+
+/* Turn everything placed in the world by the correction: rotation by
+ * `da` about (px, pz), then translation (tx, tz). */
+typedef struct delta {
+  float c, s, da, px, pz, tx, tz;
+} delta;
+
+static void delta_xf(const delta* d, smgi_xform2* x) {
+  float vx = x->x - d->px, vz = x->z - d->pz;
+  x->x = d->px + d->c * vx + d->s * vz + d->tx;
+  x->z = d->pz - d->s * vx + d->c * vz + d->tz;
+  x->h = smgi_wrap_angle(x->h + d->da);
+}
+
+void smgi_steer_apply(smg_character* ch, float dt) {
+  smgi_steer* s = &ch->steer;
+  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
+  const float gh = ch->pose.heading;
+  if (dt <= 0.0f) return;
+  /* the motion's own speed and turning this step, low-passed */
+  float k = dt / (SMGI_STEER_SMOOTH + dt);
+  if (s->have_prev) {
+    float vx = gx - s->prev_x, vz = gz - s->prev_z;
+    float v = sqrtf(vx * vx + vz * vz) / dt;
+    float w = smgi_wrap_angle(gh - s->prev_h) / dt;
+    s->own_speed += k * (v - s->own_speed);
+    s->own_turn += k * (w - s->own_turn);
+  }
+  s->have_prev = 1;
+  float want_turn = 0.0f, want_sx = 0.0f, want_sz = 0.0f;
+  const smgi_path* p = &ch->path;
+  if (s->enabled && p->count >= 2u && s->mode != SMGI_STEER_REST) {
+    /* heading: the clip's direction of travel towards the pursuit point */
+    float fx, fz, tx, tz, look;
+    float dir = gh;
+    if (frame_ground(ch, (uint32_t)(SMGI_STEER_FUTURE * ch->fps), &fx, &fz,
+                     NULL) &&
+        (fx - gx) * (fx - gx) + (fz - gz) * (fz - gz) > 1e-4f)
+      dir = atan2f(fx - gx, fz - gz);
+    look = smgi_clampf(s->own_speed * SMGI_STEER_LOOK_TIME, SMGI_STEER_LOOK_MIN,
+                  SMGI_STEER_LOOK_MAX);
+    point_ahead(p, ch->progress + look, ch->seg, &tx, &tz);
+    if ((tx - gx) * (tx - gx) + (tz - gz) * (tz - gz) > 1e-4f)
+      want_turn = smgi_wrap_angle(atan2f(tx - gx, tz - gz) - dir) /
+                  SMGI_STEER_HEADING_TIME;
+    /* position: towards the path, or towards the end while braking */
+    float qx, qz;
+    if (s->mode == SMGI_STEER_BRAKE) {
+      float left = frames_to(ch, s->stop_seq, s->stop_offset);
+      uint32_t entry, offset;
+      if (left > 0.0f &&
+          smgi_q_locate(&ch->lower, ch->graph->data.lower_edges,
+                        (uint32_t)(ch->lower.t - floorf(ch->lower.t) + left +
+                                   0.5f),
+                        &entry, &offset)) {
+        const smgi_qentry* q = smgi_q_at(&ch->lower, entry);
+        const smgi_frame* f =
+            &ch->graph->data.frames[ch->graph->data.lower_edges[q->edge]
+                                        .first_frame + offset];
+        float sx, sz;
+        smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], &sx,
+                      &sz);
+        /* the rest of the braking lasts 2 * left / (fps * rate) */
+        float remain =
+            2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
+        if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
+        want_sx = (p->xz[2u * (p->count - 1u)] - sx) / remain;
+        want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
+      }
+    } else {
+      uint32_t sg = ch->seg;
+      smgi_path_eval(p, ch->progress, &sg, &qx, &qz, NULL);
+      /* the hips sway from side to side with every step: only the offset
+       * beyond that is an error to remove */
+      float ox = qx - gx, oz = qz - gz, ol = sqrtf(ox * ox + oz * oz);
+      if (ol > SMGI_STEER_SWAY) {
+        float k2 = (ol - SMGI_STEER_SWAY) / (ol * SMGI_STEER_SLIDE_TIME);
+        want_sx = ox * k2;
+        want_sz = oz * k2;
+      }
+    }
+  }
+  /* bounds relative to the motion itself */
+  float tb = SMGI_STEER_CLIP_SCALE * fabsf(s->own_turn) +
+             fminf(s->turn_limit, s->own_speed / SMGI_STEER_TURN_RADIUS);
+  float sb = s->slide_ratio * s->own_speed;
+  want_turn = smgi_clampf(want_turn, -tb, tb);
+  float wl = sqrtf(want_sx * want_sx + want_sz * want_sz);
+  if (wl > sb) {
+    want_sx *= sb / wl;
+    want_sz *= sb / wl;
+  }
+  /* continuous: the correction's rates change by bounded steps */
+  s->turn = smgi_clampf(
+      approach(s->turn, want_turn, SMGI_STEER_TURN_ACCEL * dt), -tb, tb);
+  s->slide[0] = approach(s->slide[0], want_sx, SMGI_STEER_SLIDE_ACCEL * dt);
+  s->slide[1] = approach(s->slide[1], want_sz, SMGI_STEER_SLIDE_ACCEL * dt);
+  float sl = sqrtf(s->slide[0] * s->slide[0] + s->slide[1] * s->slide[1]);
+  if (sl > sb) {
+    s->slide[0] *= sb / sl;
+    s->slide[1] *= sb / sl;
+  }
+  delta d;
+  d.da = s->turn * dt;
+  d.c = cosf(d.da);
+  d.s = sinf(d.da);
+  d.px = gx;
+  d.pz = gz;
+  d.tx = s->slide[0] * dt;
+  d.tz = s->slide[1] * dt;
+  if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
+    /* the pose just composed ... */
+    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, yaw[4], q[4];
+    ch->pose.root[0] = gx + d.c * rx + d.s * rz + d.tx;
+    ch->pose.root[2] = gz - d.s * rx + d.c * rz + d.tz;
+    smgi_q_yaw(d.da, yaw);
+    smgi_q_mul(yaw, ch->pose.rot, q);
+    smgi_q_normalize(q);
+    ch->pose.rot[0] = q[0];
+    ch->pose.rot[1] = q[1];
+    ch->pose.rot[2] = q[2];
+    ch->pose.rot[3] = q[3];
+    ch->pose.ground[0] = gx + d.tx;
+    ch->pose.ground[1] = gz + d.tz;
+    ch->pose.heading = smgi_wrap_angle(gh + d.da);
+    /* ... and every queued placement, so the plan moves with it */
+    for (uint32_t i = 0; i < ch->lower.count; ++i) {
+      smgi_qentry* e = smgi_q_at(&ch->lower, i);
+      delta_xf(&d, &e->W);
+      if (i < 2u) delta_xf(&d, &e->M); /* further ones: entry_M */
+    }
+    s->corrected = 1;
+  }
+  s->drift_turn += fabsf(d.da);
+  s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);
+  s->prev_x = ch->pose.ground[0];
+  s->prev_z = ch->pose.ground[1];
+  s->prev_h = ch->pose.heading;
+}
+
+/* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
+static float discount(float e, float reach) {
+  if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
+  return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
+}
+
+float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed) {
+  if (!s->enabled || u <= 0.0f) return 0.0f;
+  /* the additive turning per metre travelled at this speed turns the
+   * heading by k u and, with the slide, moves the motion sideways by
+   * about ratio u + k u^2 / 2 after u metres; half of that counts as
+   * reachable, since the heading must first be turned */
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
+  return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
+}
+
+void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
+                          float* d, float* a) {
+  if (!s->enabled || u <= 0.0f) return;
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
+  *d = discount(*d, smgi_steer_plan_reach(s, u, speed));
+  *a = discount(*a, 0.5f * k * u);
+}
+
+int smgi_steer_settling(const smg_character* ch, float s) {
+  const smgi_steer* st = &ch->steer;
+  if (!st->enabled || ch->path.count < 2u) return 0;
+  return ch->path.length - s <
+         st->own_speed * (st->stop_seconds + SMGI_STEER_SETTLE_SECONDS) +
+             SMGI_STEER_STOP_NEAR;
+}

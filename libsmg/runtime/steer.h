@@ -1,0 +1,83 @@
+/*
+ * steer.h - root steering: the state of the stage that keeps a character's
+ * ground transform on its path on top of the motion the planner chose, and
+ * brings it to rest at the path's end (steer.c; docs/runtime.md, "Root
+ * steering").
+ */
+#ifndef SMG_STEER_H
+#define SMG_STEER_H
+
+#include <stdint.h>
+
+#include "smg.h"
+
+#define SMGI_STEER_FOLLOW 0u /* on the path: correct towards it */
+#define SMGI_STEER_BRAKE 1u  /* slowing down onto the chosen stop frame */
+#define SMGI_STEER_REST 2u   /* standing at the end until the path changes */
+
+typedef struct smgi_steer {
+  uint32_t enabled;
+  uint32_t mode;          /* SMGI_STEER_* */
+  /* limits (smg_character_desc, resolved) */
+  float turn_limit;       /* rad/s of heading correction beyond the clip's */
+  float slide_ratio;      /* translation per metre the motion travels */
+  float stop_seconds;     /* braking time at the end */
+  /* what the motion itself did, low-passed over a gait cycle's fraction */
+  uint32_t have_prev;
+  float prev_x, prev_z, prev_h; /* ground transform after the last step */
+  float own_turn;         /* the motion's own turning, rad/s */
+  float own_speed;        /* the motion's own ground speed, m/s */
+  /* the correction, continuous (its rate of change is bounded) */
+  float turn;             /* heading correction, rad/s */
+  float slide[2];         /* translation correction, m/s (x, z) */
+  float rate;             /* playback rate: 1 following, < 1 slowing */
+  /* correction applied since the planned edges were chosen: the plan
+   * moves with the character, so beyond a bound it is chosen again */
+  uint32_t corrected;     /* a correction moved the queue: placements (M)
+                             beyond the two next entries derive from W */
+  float drift_turn;       /* radians */
+  float drift_move;       /* metres */
+  /* braking: the frame the character comes to rest on */
+  uint32_t stop_seq;      /* queue entry (seq) holding it */
+  uint32_t stop_offset;   /* frame offset inside that entry's edge */
+} smgi_steer;
+
+
+void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
+                     float slide_ratio, float stop_seconds);
+/* Limits as in smg_character_desc (0 = default). */
+void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
+                           float slide_ratio, float stop_seconds);
+/* The path changed: follow it again (from rest too). */
+void smgi_steer_path_changed(smgi_steer* s);
+/* Frames the playhead advances this step: dt * fps scaled by the playback
+ * rate (slowing for a tight turn, braking at the end, 0 at rest). */
+float smgi_steer_frames(smg_character* ch, float dt);
+/* After the playhead passed `pops` edges: the entries now next in line
+ * get their placements back from their (corrected) ground transforms. */
+void smgi_steer_refresh(smg_character* ch, uint32_t pops);
+/* Correct the pose just composed and the queued placements (before FK and
+ * foot IK, so planted feet keep their world anchors). */
+void smgi_steer_apply(smg_character* ch, float dt);
+
+/* What the planner should count of an error the steering will remove
+ * (steer.c): `d` metres off the path and `a` radians off its direction
+ * after the motion travelled `u` metres at `speed` m/s. Corrections
+ * within reach count SMGI_STEER_PLAN_WEIGHT of themselves, so the
+ * planner still prefers motion that needs little correction; beyond reach
+ * in full. Unchanged with steering off. */
+void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
+                          float* d, float* a);
+/* How far off the path (metres) the steering brings motion back within
+ * its first `u` metres at `speed` m/s (0 with steering off): the part of
+ * an edge's distance error the planner's threshold need not see. */
+float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed);
+
+/* Whether planning from arc s belongs to coming to rest at the path's end:
+ * the end lies within what the current speed covers in the braking time
+ * plus SMGI_STEER_SETTLE_SECONDS. The planner then wants the graph's most
+ * agile style (walking, in any graph that has it), whose frames with both
+ * feet down make a stop; a run has none. */
+int smgi_steer_settling(const smg_character* ch, float s);
+
+#endif /* SMG_STEER_H */

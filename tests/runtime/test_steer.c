@@ -1,0 +1,410 @@
+/*
+ * test_steer.c - root steering (steer.c), judged from the exported poses:
+ *  - a sharp 90-degree corner and a 2 m U-turn, which the fixture's motion
+ *    (45 degrees of turn per 1.2 m, about a 1.5 m radius) can only cut,
+ *    are rounded with a radius of about 1 m: the root stays within the
+ *    distance such a rounding gives (0.29 r) plus the gait's sway, and
+ *    the same run with steering off leaves that bound (the test can fail);
+ *  - at the end the character comes to rest with the root within 0.3 m of
+ *    the last point, stands (speed <= 0.1 m/s over the last second) and
+ *    reports SMG_STATE_PATH_END_REACHED; appending points starts it again;
+ *    a run walks the last metres and stands on both feet;
+ *  - the correction is continuous: no per-step root jump beyond what the
+ *    same motion does without steering plus the correction's bound, and
+ *    switching steering off mid-run fades the correction out;
+ *  - settings: negative or non-finite limits are refused at create and by
+ *    the setter, which then changes nothing (bit-identical poses);
+ *  - with steering off the state reports no correction and playback rate
+ *    1; the steering on the synthetic default graph follows a corner too.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "runtime/runtime_testutil.h"
+
+#define DT (1.0f / 60.0f)
+
+typedef rt_fixture_ctx ctx;
+
+static smg_character_state get_state(const smg_character* ch) {
+  smg_character_state s;
+  memset(&s, 0, sizeof s);
+  s.struct_size = sizeof s;
+  assert_int_equal(smg_character_get_state(ch, &s), SMG_OK);
+  return s;
+}
+
+/* Distance from (x, z) to the polyline. */
+static float polyline_distance(const float* xz, uint32_t n, float x,
+                               float z) {
+  float best = INFINITY;
+  for (uint32_t i = 1; i < n; ++i) {
+    float ax = xz[2 * i - 2], az = xz[2 * i - 1];
+    float dx = xz[2 * i] - ax, dz = xz[2 * i + 1] - az;
+    float l2 = dx * dx + dz * dz;
+    float t = l2 > 0.0f ? ((x - ax) * dx + (z - az) * dz) / l2 : 0.0f;
+    t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+    float ex = x - ax - t * dx, ez = z - az - t * dz;
+    float d = sqrtf(ex * ex + ez * ez);
+    if (d < best) best = d;
+  }
+  return best;
+}
+
+typedef struct run_result {
+  float mean, max;      /* root to path until within 0.5 m of the end */
+  int reached;          /* root came within 0.5 m of the last point */
+  float rest_speed;     /* last second: mean root ground speed */
+  float rest_dist;      /* last second: largest distance to the end */
+  float max_jump;       /* largest per-step root ground displacement */
+  int flag_at_end;      /* SMG_STATE_PATH_END_REACHED in the last step */
+} run_result;
+
+/* Runs a character on the path for `seconds`, measuring the root (joint
+ * 0 of the exported local pose) on the ground. */
+static run_result run_path(smg_graph* g, uint32_t J, const float* xz,
+                           uint32_t n, uint32_t flags, float seconds) {
+  run_result r;
+  smg_character_desc d;
+  smg_character* ch = NULL;
+  float root[3], prev[3];
+  float* rot = (float*)malloc(sizeof(float) * 4 * J);
+  const float ex = xz[2 * n - 2], ez = xz[2 * n - 1];
+  const int steps = (int)(seconds / DT), last = (int)(1.0f / DT);
+  double sum = 0.0;
+  int measured = 0;
+  memset(&r, 0, sizeof r);
+  assert_non_null(rot);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.flags = flags;
+  d.position[0] = xz[0];
+  d.position[2] = xz[1];
+  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
+  assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+  assert_int_equal(smg_character_get_local_pose(ch, prev, rot, J), SMG_OK);
+  for (int i = 0; i < steps; ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    assert_int_equal(smg_character_get_local_pose(ch, root, rot, J), SMG_OK);
+    float jx = root[0] - prev[0], jz = root[2] - prev[2];
+    float jump = sqrtf(jx * jx + jz * jz);
+    if (jump > r.max_jump) r.max_jump = jump;
+    float de = sqrtf((root[0] - ex) * (root[0] - ex) +
+                     (root[2] - ez) * (root[2] - ez));
+    if (!r.reached) {
+      float e = polyline_distance(xz, n, root[0], root[2]);
+      sum += e;
+      ++measured;
+      if (e > r.max) r.max = e;
+      if (de < 0.5f) r.reached = 1;
+    }
+    if (i >= steps - last) {
+      r.rest_speed += jump / (last * DT);
+      if (de > r.rest_dist) r.rest_dist = de;
+    }
+    memcpy(prev, root, sizeof prev);
+  }
+  r.mean = measured ? (float)(sum / measured) : 0.0f;
+  r.flag_at_end = (get_state(ch).flags & SMG_STATE_PATH_END_REACHED) != 0;
+  smg_character_destroy(ch);
+  free(rot);
+  return r;
+}
+
+static void print_result(const char* what, const run_result* r) {
+  print_message("%s: mean %.3f m, max %.3f m, reached %d, last second "
+                "%.3f m/s at <= %.3f m from the end, max step %.3f m, end "
+                "flag %d\n",
+                what, r->mean, r->max, r->reached, r->rest_speed,
+                r->rest_dist, r->max_jump, r->flag_at_end);
+}
+
+/* A sharp corner: 6 m, 90 degrees, 6 m. */
+static uint32_t corner(float* xz, int left) {
+  const float s = left ? 1.0f : -1.0f;
+  xz[0] = 0.0f, xz[1] = 0.0f;
+  xz[2] = 0.0f, xz[3] = 6.0f;
+  xz[4] = 6.0f * s, xz[5] = 6.0f;
+  return 3;
+}
+
+/* Rounded with radius <= 1 m the root stays within 0.29 m of a 90-degree
+ * polyline corner (r (1 - cos 45 deg)); the gait's sway stays inside. */
+#define CORNER_MAX 0.30f
+#define CORNER_MEAN 0.10f
+
+static void test_corner_and_rest(void** state) {
+  ctx* c = (ctx*)*state;
+  float xz[6];
+  for (int left = 0; left < 2; ++left) {
+    uint32_t n = corner(xz, left);
+    run_result on = run_path(c->g, FIXTURE_JOINTS, xz, n, 0u, 16.0f);
+    run_result off =
+        run_path(c->g, FIXTURE_JOINTS, xz, n, SMG_CHARACTER_NO_STEERING, 16.0f);
+    print_result(left ? "left corner, steering on" : "right corner, steering on",
+                 &on);
+    print_result("  steering off", &off);
+    assert_true(on.max < CORNER_MAX);
+    assert_true(on.mean < CORNER_MEAN);
+    assert_true(on.reached);
+    assert_true(on.rest_dist < 0.3f);
+    assert_true(on.rest_speed <= 0.1f);
+    assert_true(on.flag_at_end);
+    /* without steering the fixture cuts the corner and never stands */
+    assert_true(off.max > CORNER_MAX || off.rest_speed > 0.1f);
+    /* continuity: steps no longer than the motion's own plus the
+     * translation bound (a quarter of the speed) */
+    assert_true(on.max_jump <= 1.25f * off.max_jump + 1e-3f);
+  }
+}
+
+static void test_u_turn(void** state) {
+  ctx* c = (ctx*)*state;
+  const float xz[8] = {0.0f, 0.0f, 0.0f, 8.0f, 2.0f, 8.0f, 2.0f, 0.0f};
+  run_result on = run_path(c->g, FIXTURE_JOINTS, xz, 4, 0u, 20.0f);
+  print_result("U-turn 2 m across, steering on", &on);
+  assert_true(on.max < CORNER_MAX);
+  assert_true(on.mean < CORNER_MEAN);
+  assert_true(on.reached);
+  assert_true(on.rest_dist < 0.3f && on.rest_speed <= 0.1f);
+}
+
+/* Resting lasts until the path changes; appending points walks on. */
+static void test_rest_until_path_changes(void** state) {
+  ctx* c = (ctx*)*state;
+  float xz[6], more[2];
+  float root[3], rest[3], rot[4 * FIXTURE_JOINTS];
+  smg_character* ch = NULL;
+  uint32_t n = corner(xz, 1);
+  assert_int_equal(smg_character_create(c->g, NULL, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+  for (int i = 0; i < (int)(16.0f / DT); ++i)
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+  assert_true(get_state(ch).flags & SMG_STATE_PATH_END_REACHED);
+  assert_int_equal(smg_character_get_local_pose(ch, rest, rot, FIXTURE_JOINTS),
+                   SMG_OK);
+  for (int i = 0; i < (int)(3.0f / DT); ++i)
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+  assert_int_equal(smg_character_get_local_pose(ch, root, rot, FIXTURE_JOINTS),
+                   SMG_OK);
+  /* standing: not a millimetre moved in 3 s */
+  assert_true(fabsf(root[0] - rest[0]) < 1e-3f &&
+              fabsf(root[2] - rest[2]) < 1e-3f);
+  smg_character_state s = get_state(ch);
+  assert_true(s.playback_rate == 0.0f);
+  /* 4 m more along the last direction */
+  more[0] = 10.0f;
+  more[1] = 6.0f;
+  assert_int_equal(smg_character_append_path(ch, more, 1), SMG_OK);
+  assert_false(get_state(ch).flags & SMG_STATE_PATH_END_REACHED);
+  for (int i = 0; i < (int)(2.0f / DT); ++i)
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+  assert_int_equal(smg_character_get_local_pose(ch, root, rot, FIXTURE_JOINTS),
+                   SMG_OK);
+  print_message("after appending 4 m: moved %.2f m along +x in 2 s\n",
+                root[0] - rest[0]);
+  assert_true(root[0] - rest[0] > 0.8f);
+  for (int i = 0; i < (int)(8.0f / DT); ++i)
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+  s = get_state(ch);
+  assert_true(s.flags & SMG_STATE_PATH_END_REACHED);
+  assert_true(fabsf(s.position[0] - 10.0f) < 0.3f &&
+              fabsf(s.position[2] - 6.0f) < 0.3f);
+  smg_character_destroy(ch);
+}
+
+/* A run asked for until the end: the last metres are walked (the graph's
+ * most agile style) so that the stop lands on a frame with both feet down,
+ * within 0.3 m of the last point. */
+static void test_run_comes_to_rest(void** state) {
+  ctx* c = (ctx*)*state;
+  float xz[2 * 21];
+  smg_character* ch = NULL;
+  float root[3], prev[3], rot[4 * FIXTURE_JOINTS];
+  rt_line(xz, 21, 20.0f);
+  assert_int_equal(smg_character_create(c->g, NULL, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, 21), SMG_OK);
+  assert_int_equal(smg_character_add_transition(ch, 2.0f, 1, NULL), SMG_OK);
+  int ran = 0;
+  float travelled = 0.0f;
+  smg_character_get_local_pose(ch, prev, rot, FIXTURE_JOINTS);
+  const int steps = (int)(14.0f / DT);
+  for (int i = 0; i < steps; ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    if (get_state(ch).style == 1) ran = 1;
+    smg_character_get_local_pose(ch, root, rot, FIXTURE_JOINTS);
+    if (i >= steps - (int)(1.0f / DT))
+      travelled += sqrtf((root[0] - prev[0]) * (root[0] - prev[0]) +
+                         (root[2] - prev[2]) * (root[2] - prev[2]));
+    memcpy(prev, root, sizeof prev);
+  }
+  smg_character_state s = get_state(ch);
+  print_message("run to the end: ran %d, rests at z %.2f (end 20) in style "
+                "%u, contacts %u, last second %.3f m\n",
+                ran, root[2], s.style, s.flags & 12u, travelled);
+  assert_true(ran);
+  assert_true(fabsf(root[2] - 20.0f) < 0.3f && fabsf(root[0]) < 0.3f);
+  assert_true(travelled <= 0.1f);
+  assert_true(s.flags & SMG_STATE_PATH_END_REACHED);
+  assert_int_equal(s.style, 0); /* walked out */
+  assert_int_equal(s.flags & (SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT),
+                   SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT);
+  smg_character_destroy(ch);
+}
+
+/* Off: no correction reported, full playback, and switching it off in
+ * mid-run fades the correction instead of dropping it. */
+static void test_switch_off(void** state) {
+  ctx* c = (ctx*)*state;
+  float xz[6];
+  smg_character* ch = NULL;
+  smg_character_desc d;
+  uint32_t n = corner(xz, 1);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.flags = SMG_CHARACTER_NO_STEERING;
+  assert_int_equal(smg_character_create(c->g, &d, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+  /* off for 3 s (3.6 m of the 6 m lead) */
+  for (int i = 0; i < (int)(3.0f / DT); ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    smg_character_state s = get_state(ch);
+    assert_true(s.steer_turn_rate == 0.0f && s.steer_slide_speed == 0.0f);
+    assert_true(s.playback_rate == 1.0f);
+  }
+  /* on for the corner, then off while it corrects */
+  assert_int_equal(smg_character_set_steering(ch, 1), SMG_OK);
+  float peak = 0.0f, prev = 0.0f, max_change = 0.0f;
+  for (int i = 0; i < (int)(5.0f / DT); ++i) {
+    if (fabsf(prev) > peak) peak = fabsf(prev);
+    if (i == (int)(2.2f / DT))
+      assert_int_equal(smg_character_set_steering(ch, 0), SMG_OK);
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    float t = get_state(ch).steer_turn_rate;
+    if (fabsf(t - prev) > max_change) max_change = fabsf(t - prev);
+    prev = t;
+  }
+  print_message("switch on, then off: largest correction %.3f rad/s, "
+                "largest change per step %.3f rad/s, %.4f at the end\n",
+                peak, max_change, prev);
+  assert_true(peak > 0.2f); /* it did correct the corner */
+  /* the rate changes by at most its bounded acceleration per step
+   * (SMGI_STEER_TURN_ACCEL, 8 rad/s^2), switching on and off included */
+  assert_true(max_change <= 8.0f * DT + 1e-4f);
+  assert_true(prev == 0.0f);
+  smg_character_destroy(ch);
+}
+
+static void test_settings(void** state) {
+  ctx* c = (ctx*)*state;
+  smg_character_desc d;
+  smg_character *a = NULL, *b = NULL;
+  const float bad[] = {-1.0f, NAN, INFINITY};
+  for (int k = 0; k < 3; ++k) {
+    for (int f = 0; f < 3; ++f) {
+      smg_character* ch = NULL;
+      memset(&d, 0, sizeof d);
+      d.struct_size = sizeof d;
+      if (f == 0) d.steer_turn_rate = bad[k];
+      if (f == 1) d.steer_slide_ratio = bad[k];
+      if (f == 2) d.stop_seconds = bad[k];
+      assert_int_equal(smg_character_create(c->g, &d, &ch),
+                       SMG_ERROR_INVALID_ARGUMENT);
+      assert_null(ch);
+    }
+  }
+  assert_int_equal(smg_character_set_steering(NULL, 1),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  assert_int_equal(smg_character_set_steering_limits(NULL, 0, 0, 0),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  /* a refused setter changes nothing: same poses as an untouched twin */
+  float xz[6];
+  uint32_t n = corner(xz, 0);
+  assert_int_equal(smg_character_create(c->g, NULL, &a), SMG_OK);
+  assert_int_equal(smg_character_create(c->g, NULL, &b), SMG_OK);
+  assert_int_equal(smg_character_set_path(a, xz, n), SMG_OK);
+  assert_int_equal(smg_character_set_path(b, xz, n), SMG_OK);
+  for (int k = 0; k < 3; ++k) {
+    assert_int_equal(smg_character_set_steering_limits(a, bad[k], 1.0f, 1.0f),
+                     SMG_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(smg_character_set_steering_limits(a, 1.0f, bad[k], 1.0f),
+                     SMG_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(smg_character_set_steering_limits(a, 1.0f, 1.0f, bad[k]),
+                     SMG_ERROR_INVALID_ARGUMENT);
+  }
+  float ra[3], qa[4 * FIXTURE_JOINTS], rb[3], qb[4 * FIXTURE_JOINTS];
+  for (int i = 0; i < (int)(12.0f / DT); ++i) {
+    assert_int_equal(smg_character_step(a, DT), SMG_OK);
+    assert_int_equal(smg_character_step(b, DT), SMG_OK);
+  }
+  smg_character_get_local_pose(a, ra, qa, FIXTURE_JOINTS);
+  smg_character_get_local_pose(b, rb, qb, FIXTURE_JOINTS);
+  assert_memory_equal(ra, rb, sizeof ra);
+  assert_memory_equal(qa, qb, sizeof qa);
+  /* zero is the default: explicit defaults change nothing either */
+  assert_int_equal(smg_character_set_steering_limits(a, 0.0f, 0.0f, 0.0f),
+                   SMG_OK);
+  /* a turn limit of 0.1 rad/s cannot round the corner: limits matter */
+  smg_character_destroy(a);
+  smg_character_destroy(b);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.steer_turn_rate = 0.1f;
+  d.steer_slide_ratio = 0.01f;
+  assert_int_equal(smg_character_create(c->g, &d, &a), SMG_OK);
+  assert_int_equal(smg_character_set_path(a, xz, n), SMG_OK);
+  float max_err = 0.0f;
+  for (int i = 0; i < (int)(10.0f / DT); ++i) {
+    assert_int_equal(smg_character_step(a, DT), SMG_OK);
+    smg_character_state s = get_state(a);
+    /* 0.1 rad/s plus half the motion's own turning (the fixture turns
+     * at most about 1.5 rad/s) */
+    assert_true(fabsf(s.steer_turn_rate) <= 0.1f + 0.5f * 1.5f);
+    if (s.path_error > max_err) max_err = s.path_error;
+  }
+  print_message("weak limits: max error %.3f m\n", max_err);
+  assert_true(max_err > CORNER_MAX);
+  smg_character_destroy(a);
+}
+
+/* The synthetic default graph (build/default.smg) rounds a corner too. */
+static void test_default_graph_corner(void** state) {
+  (void)state;
+  smg_graph* g = rt_default_graph();
+  smg_graph_info info;
+  float xz[6];
+  if (!g) {
+    skip();
+    return;
+  }
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
+  for (int left = 0; left < 2; ++left) {
+    uint32_t n = corner(xz, left);
+    run_result on = run_path(g, info.joint_count, xz, n, 0u, 16.0f);
+    print_result(left ? "default graph, left corner"
+                      : "default graph, right corner", &on);
+    assert_true(on.max < CORNER_MAX && on.mean < CORNER_MEAN);
+    assert_true(on.reached && on.rest_dist < 0.3f && on.rest_speed <= 0.1f);
+  }
+  smg_graph_destroy(g);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_corner_and_rest),
+      cmocka_unit_test(test_u_turn),
+      cmocka_unit_test(test_rest_until_path_changes),
+      cmocka_unit_test(test_run_comes_to_rest),
+      cmocka_unit_test(test_switch_off),
+      cmocka_unit_test(test_settings),
+      cmocka_unit_test(test_default_graph_corner),
+  };
+  return cmocka_run_group_tests(tests, rt_fixture_setup, rt_fixture_teardown);
+}
