@@ -8,8 +8,9 @@
  * foot pivots about its planted toe instead of dragging, and the feet stay
  * on the floor the data has. The ankle keeps its animated world
  * orientation, which puts the toe on the anchor. The correction blends in
- * over SMGI_IK_BLEND seconds and out over SMGI_IK_RELEASE_BLEND, eased at
- * both ends, so contact changes never pop. A contact whose anchor
+ * over SMGI_IK_BLEND seconds and, once released, out as the toe rises off
+ * the floor (within SMGI_IK_RELEASE_BLEND seconds), eased at both ends, so
+ * contact changes never pop. A contact whose anchor
  * drifted implausibly far (a re-plan moved the body) is released rather
  * than stretched. Each solve starts from the foot's previous correction
  * (see solve_leg), and IK refreshes the world transform cache of the joints
@@ -101,6 +102,27 @@ static void blend_local(float* rot, const float* local, float w) {
   }
 }
 
+/* Turn the whole leg (bones a, b from the hip) about the hip so that
+ * hip->ankle lies along t (|t|^2 = d2), adding the turn to the world
+ * corrections Th and Tk. */
+static inline void hip_turn(float* a, float* b, const float* t, float d2,
+                            float* Th, float* Tk) {
+  float sum[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+  const float s2 = dot3(sum, sum);
+  float dq[4], lab;
+  if (turn(sum, s2, t, d2, dq, &lab)) {
+    float k = s2 / lab; /* |sum| / |t| */
+    float ra[3];
+    smgi_q_rotate(dq, a, ra);
+    memcpy(a, ra, sizeof ra);
+    b[0] = t[0] * k - a[0];
+    b[1] = t[1] * k - a[1];
+    b[2] = t[2] * k - a[2];
+    premul(dq, Th);
+    premul(dq, Tk);
+  }
+}
+
 /* CCD on knee then hip, moving the ankle to `target`. The chain is kept as
  * two bone vectors a (hip->knee) and b (knee->ankle) relative to the hip,
  * and the rotations CCD applies are accumulated as world-space corrections
@@ -142,6 +164,45 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   if (reach < 0.0f) reach = 0.0f;
   const float tol = foot->planted ? SMGI_IK_TOLERANCE : SMGI_IK_TOLERANCE / w;
   const float stop2 = (reach + tol) * (reach + tol);
+  /* The knee first, in closed form: bend it (in the leg's own plane) so
+   * that hip->ankle is as long as hip->target, or as near as the leg
+   * allows. CCD alone cannot shorten a nearly straight leg: the shin
+   * already points along knee->target, its sweep turns it by almost
+   * nothing, and the hip sweep then lays the too-long leg along the
+   * target's direction, past it - below it for a leg reaching down, the
+   * toe pushed into the floor (by 1.3 cm on the synthetic walk when root
+   * steering moved the body towards a planted foot). */
+  {
+    const float l1sq = dot3(a, a);
+    /* never quite straight (0.1 % short, within the tolerance): a
+     * straight leg has no plane left to bend the knee in next time */
+    const float longest = 0.999f * (l1 + l2);
+    float want = d < longest ? d : longest;
+    if (want < fabsf(l1 - l2)) want = fabsf(l1 - l2);
+    const float s[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+    const float have = sqrtf(dot3(s, s));
+    /* b's part across a: the leg's plane and which way the knee bends */
+    const float k = dot3(a, b) / l1sq;
+    float p[3] = {b[0] - k * a[0], b[1] - k * a[1], b[2] - k * a[2]};
+    const float p2 = dot3(p, p);
+    if (fabsf(have - want) > tol && p2 > 1e-12f * l2sq) {
+      /* cos of the angle between the bones for |a + b| = want */
+      float c = (want * want - l1sq - l2sq) / (2.0f * l1 * l2);
+      c = smgi_clampf(c, -1.0f, 1.0f);
+      const float sn = sqrtf(1.0f - c * c);
+      const float ia = l2 / l1, ip = l2 / sqrtf(p2);
+      float nb[3] = {c * ia * a[0] + sn * ip * p[0],
+                     c * ia * a[1] + sn * ip * p[1],
+                     c * ia * a[2] + sn * ip * p[2]};
+      float dq[4], lab;
+      if (turn(b, l2sq, nb, l2sq, dq, &lab)) {
+        memcpy(b, nb, sizeof nb);
+        premul(dq, Tk);
+        hip_turn(a, b, t, d2, Th, Tk); /* and aim it: done, unless the
+                                          target is out of reach */
+      }
+    }
+  }
   float prev2 = INFINITY;
   for (uint32_t it = 0; it < SMGI_IK_ITERATIONS; ++it) {
     float e[3] = {t[0] - a[0] - b[0], t[1] - a[1] - b[1], t[2] - a[2] - b[2]};
@@ -160,20 +221,7 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
       b[2] = v[2] * k;
       premul(dq, Tk);
     }
-    /* hip: turn the whole leg; hip->ankle then lies along t */
-    float sum[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    const float s2 = dot3(sum, sum);
-    if (turn(sum, s2, t, d2, dq, &lab)) {
-      float k = s2 / lab; /* |sum| / |t| */
-      float ra[3];
-      smgi_q_rotate(dq, a, ra);
-      memcpy(a, ra, sizeof a);
-      b[0] = t[0] * k - a[0];
-      b[1] = t[1] * k - a[1];
-      b[2] = t[2] * k - a[2];
-      premul(dq, Th);
-      premul(dq, Tk);
-    }
+    hip_turn(a, b, t, d2, Th, Tk);
   }
   smgi_q_normalize(Th);
   smgi_q_normalize(Tk);
@@ -279,7 +327,6 @@ void smgi_ik_apply(smg_character* ch, float dt) {
   const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
   const uint32_t* legs[2] = {info->left_leg, info->right_leg};
   const float step_in = dt / SMGI_IK_BLEND;
-  const float step_out = dt / SMGI_IK_RELEASE_BLEND;
   for (uint32_t f = 0; f < 2u; ++f) {
     smgi_foot* foot = &ch->ik.feet[f];
     if (!ch->ik.leg_ok[f]) continue;
@@ -317,12 +364,23 @@ void smgi_ik_apply(smg_character* ch, float dt) {
         foot->planted = 0; /* implausible: let go smoothly */
       }
     }
-    foot->weight += foot->planted ? step_in : -step_out;
+    if (foot->planted) {
+      foot->weight += step_in;
+    } else {
+      /* A released foot lets its correction go as the animated toe rises
+       * off the floor (by SMGI_IK_LIFT leg lengths above where it was
+       * held), so the correction returns in the air, not as a slide while
+       * the toe pushes off; and within SMGI_IK_RELEASE_BLEND seconds at
+       * most, for a foot that shuffles on without lifting. */
+      float by_time = foot->weight - dt / SMGI_IK_RELEASE_BLEND;
+      float by_lift = 1.0f - (ap[1] - foot->anchor[1]) /
+                                 (SMGI_IK_LIFT * info->leg_length);
+      foot->weight = by_time < by_lift ? by_time : by_lift;
+    }
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
     if (foot->weight > 0.0f) {
       /* eased (smoothstep): the correction starts and stops moving
-       * gently; a released foot's returns mostly in the middle of the
-       * blend-out, once the toe is off the floor, not as it pushes off */
+       * gently */
       const float w = foot->weight * foot->weight * (3.0f - 2.0f * foot->weight);
       /* ankle target: the animated ankle-from-toe offset at the anchor,
        * at the animation's height (the data's feet are on the data's

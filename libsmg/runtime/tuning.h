@@ -96,16 +96,17 @@
 
 /* ---- foot IK (ik.c) ---- */
 #define SMGI_IK_BLEND 0.1f      /* seconds to blend a planted foot in */
-#define SMGI_IK_RELEASE_BLEND 0.2f /* seconds to blend a released foot
-                                      out: twice the blend-in, so that
-                                      the held correction returns mostly
-                                      once the foot is in the air. Over
-                                      0.1 s it returned as the toe pushed
-                                      off and added 27 cm/s to a toe still
-                                      within 2 cm of the floor (02_01 +
-                                      06_01); over 0.3 s it still ran
-                                      into the low swing of CMU 09_12's
-                                      turning steps. */
+#define SMGI_IK_RELEASE_BLEND 0.3f /* seconds at most to blend a
+                                      released foot out */
+#define SMGI_IK_LIFT 0.05f      /* leg lengths the animated toe rises above
+                                   where it was held while a released
+                                   foot's correction returns (about 4 cm):
+                                   it returns in the air, not while the toe
+                                   pushes off. A fixed 0.1 s return added
+                                   27 cm/s to toes still within 2 cm of the
+                                   floor (02_01 + 06_01); a fixed 0.2 s
+                                   one ran into the low swing of the
+                                   synthetic walk on a Mixamo rig. */
 #define SMGI_IK_ITERATIONS 8u   /* CCD sweeps at most */
 #define SMGI_IK_RELEASE 0.35f   /* anchor drift, in leg lengths, that lets
                                    a contact go */
