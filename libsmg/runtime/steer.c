@@ -32,7 +32,7 @@
  * motion) until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the playback slows down (to no
  * less than SMGI_STEER_RATE_MIN). What the planner should make of the
- * correction is smgi_steer_plan_view / _plan_reach (bottom of the file).
+ * correction is smgi_steer_plan_view / _plan_reach (inline, steer.h).
  *
  * Deterministic, no allocation, O(frames planned ahead) near the end and
  * O(1) otherwise.
@@ -409,32 +409,6 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   s->prev_x = ch->pose.ground[0];
   s->prev_z = ch->pose.ground[1];
   s->prev_h = ch->pose.heading;
-}
-
-/* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
-static float discount(float e, float reach) {
-  if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
-  return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
-}
-
-float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed) {
-  if (!s->enabled || u <= 0.0f) return 0.0f;
-  /* the additive turning per metre travelled at this speed turns the
-   * heading by k u and, with the slide, moves the motion sideways by
-   * about ratio u + k u^2 / 2 after u metres; half of that counts as
-   * reachable, since the heading must first be turned */
-  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
-  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
-  return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
-}
-
-void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
-                          float* d, float* a) {
-  if (!s->enabled || u <= 0.0f) return;
-  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
-  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
-  *d = discount(*d, smgi_steer_plan_reach(s, u, speed));
-  *a = discount(*a, 0.5f * k * u);
 }
 
 int smgi_steer_settling(const smg_character* ch, float s) {
