@@ -79,11 +79,11 @@ void smgi_steer_path_changed(smgi_steer* s) {
  * end along the last segment (a character arriving keeps its line). */
 static void point_ahead(const smgi_path* p, float s, uint32_t seg,
                         float* x, float* z) {
-  float h;
   float t = s;
   if (t > p->length) t = p->length;
-  smgi_path_eval(p, t, &seg, x, z, &h);
+  smgi_path_eval(p, t, &seg, x, z, NULL);
   if (s > p->length) {
+    float h = smgi_path_heading(p, seg);
     *x += (s - p->length) * sinf(h);
     *z += (s - p->length) * cosf(h);
   }
@@ -208,11 +208,17 @@ static void consider_stop(smg_character* ch) {
  * short tight loop is not averaged away. */
 static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
-  float x, z, h0, h1, h2;
-  uint32_t sg = seg;
-  smgi_path_eval(p, s, &sg, &x, &z, &h0);
-  smgi_path_eval(p, s + half, &sg, &x, &z, &h1);
-  smgi_path_eval(p, s + 2.0f * half, &sg, &x, &z, &h2);
+  float x, z;
+  uint32_t s0 = seg, s1, s2;
+  smgi_path_eval(p, s, &s0, &x, &z, NULL);
+  s1 = s0;
+  smgi_path_eval(p, s + half, &s1, &x, &z, NULL);
+  s2 = s1;
+  smgi_path_eval(p, s + 2.0f * half, &s2, &x, &z, NULL);
+  /* one heading per segment: the three points mostly share one or two */
+  float h0 = smgi_path_heading(p, s0);
+  float h1 = s1 == s0 ? h0 : smgi_path_heading(p, s1);
+  float h2 = s2 == s1 ? h1 : smgi_path_heading(p, s2);
   float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
   return (fabsf(a) > fabsf(b) ? a : b) / half;
 }
