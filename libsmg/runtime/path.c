@@ -122,6 +122,11 @@ void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
   if (heading) *heading = segment_heading(p, i);
 }
 
+float smgi_path_heading(const smgi_path* p, uint32_t seg) {
+  if (p->count < 2u) return 0.0f;
+  return segment_heading(p, seg <= p->count - 2u ? seg : p->count - 2u);
+}
+
 /* Squared distance from (x, z) to segment i and the arc length there. */
 static float seg_dist2(const smgi_path* p, uint32_t i, float x, float z,
                        float* s) {

@@ -21,6 +21,9 @@ void smgi_path_reset(smgi_path* p);
  * and the segment out. */
 void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
                     float* z, float* heading);
+/* The heading smgi_path_eval reports on segment `seg` (an atan2: callers
+ * that evaluate several points on one segment ask once). */
+float smgi_path_heading(const smgi_path* p, uint32_t seg);
 /* Nearest point search starting at segment *seg, walking while the
  * distance shrinks (bounded steps). Returns arc length, writes *seg and the
  * distance. */

@@ -52,19 +52,23 @@ static smgi_xform2 disp_of(const smgi_edge* e) {
 }
 
 /* The paper's distance error of an edge whose end lies d from the path,
- * less what the root steering takes out over the edge (steer.c): the
- * threshold judges the motion as it will be shown. */
+ * less what the root steering takes out by the edge's end (steer.c), `u`
+ * metres of planned motion before it: the threshold judges the motion as
+ * it will be shown. */
 static float edge_error(const smg_character* ch, const smgi_edge* e,
-                        float d) {
+                        float u, float d) {
   float speed = ch->fps * e->arc_length / (float)e->frame_count;
-  float reach = smgi_steer_plan_reach(&ch->steer, e->arc_length, speed);
+  float reach =
+      smgi_steer_plan_reach(&ch->steer, u + e->arc_length, speed);
   return d > reach ? d - reach : 0.0f;
 }
 
 /* A committed edge's bookkeeping without a search: where it ends, the
- * progress there and its distance error. */
+ * progress there and its distance error, `u` metres into the sequence
+ * that was ranked (the search valued it with the steering's reach from
+ * the sequence's start, so the threshold does too). */
 static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
-                      uint32_t seg, uint32_t ei, cand* x) {
+                      uint32_t seg, float u, uint32_t ei, cand* x) {
   const smgi_edge* e = &ch->graph->data.lower_edges[ei];
   memset(x, 0, sizeof *x);
   x->edge = ei;
@@ -78,7 +82,7 @@ static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
     float sp = smgi_path_project_local(&ch->path, x->end.x, x->end.z, &sg, &d);
     x->s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
     x->seg_end = sg;
-    if (s < ch->path.length - SMGI_END_EPS) x->err = edge_error(ch, e, d);
+    if (s < ch->path.length - SMGI_END_EPS) x->err = edge_error(ch, e, u, d);
   }
 }
 
@@ -126,7 +130,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
       s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
       /* the paper's distance error (what the threshold is compared
        * with): how far the edge leaves the character from the path */
-      if (sc.following) x->err = edge_error(ch, e, d);
+      if (sc.following) x->err = edge_error(ch, e, 0.0f, d);
     }
     x->s_end = s_end;
     x->seg_end = sg;
@@ -351,15 +355,17 @@ void smgi_plan(smg_character* ch, uint32_t budget, float step_frames) {
      * second of motion; each edge still faces the threshold */
     if (seq_len > 1u && seq[0] == c[0].edge) {
       float frames = (float)ch->graph->data.lower_edges[seq[0]].frame_count;
+      float u = ch->graph->data.lower_edges[seq[0]].arc_length;
       for (uint32_t j = 1; j < seq_len && frames < SMGI_SEQ_COMMIT_FRAMES &&
                            ch->lower.count < SMGI_QUEUE_CAP; ++j) {
         cand x;
         tail_state(ch, &node, &W, &s, &seg);
         if (ch->graph->data.lower_edges[seq[j]].from != node) break;
-        make_cand(ch, W, s, seg, seq[j], &x);
+        make_cand(ch, W, s, seg, u, seq[j], &x);
         if (x.err > ch->plan.error_threshold) break;
         push(ch, W, s, &x, 0, 1);
         frames += (float)ch->graph->data.lower_edges[seq[j]].frame_count;
+        u += ch->graph->data.lower_edges[seq[j]].arc_length;
       }
     }
   }

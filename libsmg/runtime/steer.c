@@ -32,7 +32,7 @@
  * motion) until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the playback slows down (to no
  * less than SMGI_STEER_RATE_MIN). What the planner should make of the
- * correction is smgi_steer_plan_view / _plan_reach (bottom of the file).
+ * correction is smgi_steer_plan_view / _plan_reach (inline, steer.h).
  *
  * Deterministic, no allocation, O(frames planned ahead) near the end and
  * O(1) otherwise.
@@ -79,11 +79,11 @@ void smgi_steer_path_changed(smgi_steer* s) {
  * end along the last segment (a character arriving keeps its line). */
 static void point_ahead(const smgi_path* p, float s, uint32_t seg,
                         float* x, float* z) {
-  float h;
   float t = s;
   if (t > p->length) t = p->length;
-  smgi_path_eval(p, t, &seg, x, z, &h);
+  smgi_path_eval(p, t, &seg, x, z, NULL);
   if (s > p->length) {
+    float h = smgi_path_heading(p, seg);
     *x += (s - p->length) * sinf(h);
     *z += (s - p->length) * cosf(h);
   }
@@ -208,11 +208,17 @@ static void consider_stop(smg_character* ch) {
  * short tight loop is not averaged away. */
 static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
-  float x, z, h0, h1, h2;
-  uint32_t sg = seg;
-  smgi_path_eval(p, s, &sg, &x, &z, &h0);
-  smgi_path_eval(p, s + half, &sg, &x, &z, &h1);
-  smgi_path_eval(p, s + 2.0f * half, &sg, &x, &z, &h2);
+  float x, z;
+  uint32_t s0 = seg, s1, s2;
+  smgi_path_eval(p, s, &s0, &x, &z, NULL);
+  s1 = s0;
+  smgi_path_eval(p, s + half, &s1, &x, &z, NULL);
+  s2 = s1;
+  smgi_path_eval(p, s + 2.0f * half, &s2, &x, &z, NULL);
+  /* one heading per segment: the three points mostly share one or two */
+  float h0 = smgi_path_heading(p, s0);
+  float h1 = s1 == s0 ? h0 : smgi_path_heading(p, s1);
+  float h2 = s2 == s1 ? h1 : smgi_path_heading(p, s2);
   float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
   return (fabsf(a) > fabsf(b) ? a : b) / half;
 }
@@ -409,32 +415,6 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   s->prev_x = ch->pose.ground[0];
   s->prev_z = ch->pose.ground[1];
   s->prev_h = ch->pose.heading;
-}
-
-/* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
-static float discount(float e, float reach) {
-  if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
-  return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
-}
-
-float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed) {
-  if (!s->enabled || u <= 0.0f) return 0.0f;
-  /* the additive turning per metre travelled at this speed turns the
-   * heading by k u and, with the slide, moves the motion sideways by
-   * about ratio u + k u^2 / 2 after u metres; half of that counts as
-   * reachable, since the heading must first be turned */
-  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
-  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
-  return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
-}
-
-void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
-                          float* d, float* a) {
-  if (!s->enabled || u <= 0.0f) return;
-  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
-  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
-  *d = discount(*d, smgi_steer_plan_reach(s, u, speed));
-  *a = discount(*a, 0.5f * k * u);
 }
 
 int smgi_steer_settling(const smg_character* ch, float s) {

@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "smg.h"
+#include "tuning.h"
 
 #define SMGI_STEER_FOLLOW 0u /* on the path: correct towards it */
 #define SMGI_STEER_BRAKE 1u  /* slowing down onto the chosen stop frame */
@@ -60,18 +61,49 @@ void smgi_steer_refresh(smg_character* ch, uint32_t pops);
  * foot IK, so planted feet keep their world anchors). */
 void smgi_steer_apply(smg_character* ch, float dt);
 
-/* What the planner should count of an error the steering will remove
- * (steer.c): `d` metres off the path and `a` radians off its direction
- * after the motion travelled `u` metres at `speed` m/s. Corrections
- * within reach count SMGI_STEER_PLAN_WEIGHT of themselves, so the
- * planner still prefers motion that needs little correction; beyond reach
- * in full. Unchanged with steering off. */
-void smgi_steer_plan_view(const smgi_steer* s, float u, float speed,
-                          float* d, float* a);
+/* What the planner should count of an error the steering will remove:
+ * the planner asks for every root sample of every sequence it ranks, so
+ * these are inline (a call per sample was a tenth of the planning).
+ * Turning per metre the steering can add at `speed` m/s: its additive
+ * term is at most speed / SMGI_STEER_TURN_RADIUS and turn_limit. */
+static inline float smgi_steer_plan_curve(const smgi_steer* s, float speed) {
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
+  return k;
+}
+
 /* How far off the path (metres) the steering brings motion back within
  * its first `u` metres at `speed` m/s (0 with steering off): the part of
- * an edge's distance error the planner's threshold need not see. */
-float smgi_steer_plan_reach(const smgi_steer* s, float u, float speed);
+ * an edge's distance error the planner's threshold need not see. The
+ * additive turning k per metre turns the heading by k u and, with the
+ * slide, moves the motion sideways by about ratio u + k u^2 / 2 after u
+ * metres; half of that counts as reachable, since the heading must first
+ * be turned. */
+static inline float smgi_steer_plan_reach(const smgi_steer* s, float u,
+                                          float speed) {
+  if (!s->enabled || u <= 0.0f) return 0.0f;
+  float k = smgi_steer_plan_curve(s, speed);
+  return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
+}
+
+/* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
+static inline float smgi_steer_discount(float e, float reach) {
+  if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
+  return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
+}
+
+/* `d` metres off the path and `a` radians off its direction after the
+ * motion travelled `u` metres at `speed` m/s, as the planner should count
+ * them. Corrections within reach count SMGI_STEER_PLAN_WEIGHT of
+ * themselves, so the planner still prefers motion that needs little
+ * correction; beyond reach in full. Unchanged with steering off. */
+static inline void smgi_steer_plan_view(const smgi_steer* s, float u,
+                                        float speed, float* d, float* a) {
+  if (!s->enabled || u <= 0.0f) return;
+  float k = smgi_steer_plan_curve(s, speed);
+  *d = smgi_steer_discount(*d, 0.5f * (s->slide_ratio * u + 0.5f * k * u * u));
+  *a = smgi_steer_discount(*a, 0.5f * k * u);
+}
 
 /* Whether planning from arc s belongs to coming to rest at the path's end:
  * the end lies within what the current speed covers in the braking time
