@@ -312,6 +312,25 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
   return c[best_r].edge != last.edge;
 }
 
+/* Seconds the planner keeps planned ahead. Steering moves the queued plan
+ * with the character and plans it again once the correction adds up
+ * (SMGI_STEER_REPLAN_*): whatever lies beyond what the next re-plan keeps
+ * is searched for nothing, so while following, the plan reaches
+ * SMGI_STEER_HORIZON ahead (the search itself still judges 2 s sequences).
+ * Near the end the full horizon comes back: choosing the stop frame needs
+ * the braking distance and a gait cycle beyond it planned. */
+static float plan_horizon(const smg_character* ch) {
+  const smgi_steer* s = &ch->steer;
+  const float full = ch->plan.horizon;
+  if (!s->enabled || ch->path.count < 2u || full <= SMGI_STEER_HORIZON)
+    return full;
+  const float to_end = ch->path.length - ch->progress;
+  const float near = s->own_speed * (s->stop_seconds + SMGI_STEER_STOP_SCAN +
+                                     SMGI_STEER_SETTLE_SECONDS + full) +
+                     SMGI_STEER_STOP_NEAR;
+  return to_end > near ? SMGI_STEER_HORIZON : full;
+}
+
 void smgi_plan(smg_character* ch, uint32_t budget, float step_frames) {
   cand c[SMGI_MAX_CANDIDATES];
   /* this step's frames plus one to interpolate towards */
@@ -326,7 +345,8 @@ void smgi_plan(smg_character* ch, uint32_t budget, float step_frames) {
    * is longer: with half-frame steps, only a threshold that moves by a
    * whole frame meets both kinds of step. */
   const float span = step_frames > 1.0f ? step_frames : 1.0f;
-  const float horizon_frames = ch->plan.horizon * ch->fps + ch->plan.phase * span;
+  const float horizon_frames =
+      plan_horizon(ch) * ch->fps + ch->plan.phase * span;
   for (;;) {
     if (ch->lower.count == 0 || ch->lower.count >= SMGI_QUEUE_CAP) return;
     float ahead = smgi_frames_ahead(&ch->lower);

@@ -155,5 +155,7 @@
                                           style */
 #define SMGI_STEER_STOP_SCAN 1.0f     /* s of frames beyond the braking
                                          distance searched for a stop */
+#define SMGI_STEER_HORIZON 1.0f       /* s planned ahead while steering
+                                         follows, away from the end */
 
 #endif /* SMG_TUNING_H */
