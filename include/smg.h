@@ -250,7 +250,11 @@ typedef struct smg_character_desc {
   uint32_t reserved0;
   float position[3];         /* start position; y is ignored (ground) */
   float heading;             /* start heading, radians */
-  float horizon;             /* planning look-ahead, seconds; 0 = 2.0 */
+  float horizon;             /* planning look-ahead, seconds; 0 = 2.0.
+                                While root steering follows a path, at
+                                most 1 s is kept planned (the steering
+                                re-plans as its correction adds up); the
+                                full horizon returns near the path's end */
   float error_threshold;     /* search distance-error threshold, metres;
                                 0 = 0.25 */
   smg_allocator allocator;   /* 0 = malloc/free */
