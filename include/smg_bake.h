@@ -18,7 +18,10 @@
  *
  * Conventions are smg.h's: descriptor structs are zero-initialised, the
  * caller sets struct_size and only the fields it cares about (zero = the
- * documented default); every call returns an smg_result; on failure a
+ * documented default); struct_size may be that of an older, smaller
+ * version of the struct (all clip descs of one array share one size; an
+ * all-zero options struct means defaults); every call returns an
+ * smg_result; on failure a
  * one-line message naming the file, line (when there is one) and problem
  * is written to the result's `error` buffer.
  *

@@ -18,6 +18,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "abi.h"
+#include "bake_desc.h"
 #include "bake_graph.h"
 #include "bake_math.h"
 #include "blob.h"
@@ -278,10 +280,6 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
     memset(&mir, 0, sizeof mir);
     err.message[0] = '\0';
     where(d, i, at, sizeof at);
-    if (d->struct_size == 0 || d->struct_size > sizeof *d) {
-      smgb_fail(b, "%s: struct_size must be sizeof(smg_bake_clip_desc)", at);
-      return SMG_ERROR_INVALID_ARGUMENT;
-    }
     if (d->role != SMG_BAKE_ROLE_LOWER && d->role != SMG_BAKE_ROLE_UPPER) {
       smgb_fail(b, "%s: role must be lower or upper", at);
       return SMG_ERROR_INVALID_ARGUMENT;
@@ -413,28 +411,12 @@ static void stage_end(smgb_bake* b, smg_bake_result* out, double t0) {
   smgb_progress(b, 1.0f);
 }
 
-smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
+/* The bake proper, on resolved full-size structs (smg_bake_run). */
+static smg_result bake(const smg_bake_desc* desc, smg_bake_result* out) {
   smgb_bake* b;
   smg_result r;
   double t0, tstart = now_seconds();
   int attempt;
-  if (!out || out->struct_size != sizeof *out) return SMG_ERROR_INVALID_ARGUMENT;
-  memset(out, 0, sizeof *out);
-  out->struct_size = sizeof *out;
-  if (!desc || desc->struct_size != sizeof *desc || !desc->clips ||
-      desc->clip_count == 0) {
-    snprintf(out->error, sizeof out->error,
-             "smg_bake_run: desc with struct_size = sizeof(smg_bake_desc) "
-             "and at least one clip is required");
-    return SMG_ERROR_INVALID_ARGUMENT;
-  }
-  if (desc->options.struct_size != 0 &&
-      desc->options.struct_size != sizeof desc->options) {
-    snprintf(out->error, sizeof out->error,
-             "smg_bake_run: options.struct_size must be 0 or "
-             "sizeof(smg_bake_options)");
-    return SMG_ERROR_INVALID_ARGUMENT;
-  }
   b = calloc(1, sizeof *b);
   if (!b) {
     snprintf(out->error, sizeof out->error, "out of memory");
@@ -532,8 +514,32 @@ done:
   return r;
 }
 
+smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
+  smg_bake_result full; /* the caller gets the prefix it knows about */
+  smg_bake_desc resolved;
+  smg_bake_clip_desc* clips;
+  smg_result r;
+  uint32_t size;
+  if (!out || !smgi_struct_size_ok(out->struct_size, sizeof *out))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  size = out->struct_size;
+  memset(&full, 0, sizeof full);
+  r = smgb_desc_resolve(desc, &resolved, &clips, full.error,
+                        sizeof full.error);
+  if (r == SMG_OK) r = bake(&resolved, &full);
+  free(clips);
+  /* a caller whose struct cannot hold the blob cannot free it either */
+  if (!smgb_result_holds_blob(size) && full.blob) {
+    smgi_blob_free(full.blob, NULL);
+    full.blob = NULL;
+  }
+  full.struct_size = size;
+  memcpy(out, &full, size);
+  return r;
+}
+
 void smg_bake_result_free(smg_bake_result* result) {
-  if (!result) return;
+  if (!result || !smgb_result_holds_blob(result->struct_size)) return;
   if (result->blob) smgi_blob_free(result->blob, NULL);
   result->blob = NULL;
   result->blob_size = 0;
@@ -546,7 +552,8 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
   FILE* f;
   size_t n;
   if (error && error_size) error[0] = '\0';
-  if (!result || !result->blob || !path || !path[0]) {
+  if (!result || !smgb_result_holds_blob(result->struct_size) ||
+      !result->blob || !path || !path[0]) {
     if (error && error_size)
       snprintf(error, error_size, "smg_bake_write_file: no blob or no path");
     return SMG_ERROR_INVALID_ARGUMENT;
