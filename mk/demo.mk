@@ -28,7 +28,7 @@ DEMO_SDL_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2 2>
 DEMO_SDL_LIBS := $(shell pkg-config --libs sdl2 2>/dev/null || echo -lSDL2)
 DEMO_CXXFLAGS := -std=c++17 -Wall -Wextra -Werror $(OPT) -Iinclude $(DEMO_SDL_CFLAGS) \
   -isystem $(DEMO_IMGUI_INC) -isystem $(DEMO_IMGUI_INC)/backends -isystem /usr/include/stb \
-  -DSMG_DEMO_DEFAULT_GRAPH='"$(abspath $(DEMO_DEFAULT_BLOB))"'
+  -DSMG_DEMO_DEFAULT_GRAPH='"$(notdir $(DEMO_DEFAULT_BLOB))"'
 DEMO_LDLIBS := -limgui -lstb $(DEMO_SDL_LIBS) -ldl -lm
 
 # Xvfb with Mesa's software rasteriser: deterministic pictures, no GPU.
