@@ -9,19 +9,6 @@
 #include "abi.h"
 #include "alloc.h"
 #include "character_internal.h"
-#include "pose_simd.h"
-
-/* 512 points (6 KB) keep a default character within 16 KiB in all; a
- * mouse-drawn path resampled every few centimetres fits, and longer paths
- * set path_capacity (12 bytes per point). */
-#define DEFAULT_PATH_CAPACITY 512u
-#define DEFAULT_CONSTRAINT_CAPACITY 32u
-#define MAX_PATH_CAPACITY (1u << 26)
-#define MAX_CONSTRAINT_CAPACITY (1u << 16)
-#define DEFAULT_HORIZON 2.0f
-#define MAX_HORIZON 30.0f
-#define DEFAULT_THRESHOLD 0.25f
-#define DEFAULT_WINDOW 0.25f
 
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
@@ -79,17 +66,17 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
   if (!isfinite(d->position[0]) || !isfinite(d->position[1]) ||
       !isfinite(d->position[2]) || !isfinite(d->heading) ||
       !isfinite(d->horizon) || !isfinite(d->error_threshold) ||
-      d->horizon < 0.0f || d->horizon > MAX_HORIZON ||
+      d->horizon < 0.0f || d->horizon > SMGI_MAX_HORIZON ||
       d->error_threshold < 0.0f)
     return SMG_ERROR_INVALID_ARGUMENT;
-  if (d->path_capacity == 0) d->path_capacity = DEFAULT_PATH_CAPACITY;
+  if (d->path_capacity == 0) d->path_capacity = SMGI_DEFAULT_PATH_CAPACITY;
   if (d->constraint_capacity == 0)
-    d->constraint_capacity = DEFAULT_CONSTRAINT_CAPACITY;
-  if (d->path_capacity > MAX_PATH_CAPACITY ||
-      d->constraint_capacity > MAX_CONSTRAINT_CAPACITY)
+    d->constraint_capacity = SMGI_DEFAULT_CONSTRAINT_CAPACITY;
+  if (d->path_capacity > SMGI_MAX_PATH_CAPACITY ||
+      d->constraint_capacity > SMGI_MAX_CONSTRAINT_CAPACITY)
     return SMG_ERROR_INVALID_ARGUMENT;
-  if (d->horizon == 0.0f) d->horizon = DEFAULT_HORIZON;
-  if (d->error_threshold == 0.0f) d->error_threshold = DEFAULT_THRESHOLD;
+  if (d->horizon == 0.0f) d->horizon = SMGI_DEFAULT_HORIZON;
+  if (d->error_threshold == 0.0f) d->error_threshold = SMGI_DEFAULT_THRESHOLD;
   if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL))
     return SMG_ERROR_INVALID_ARGUMENT;
   return SMG_OK;
@@ -107,44 +94,6 @@ SMG_API smg_result smg_character_memory_size(const smg_graph* graph,
                  d.constraint_capacity, &l);
   *out_bytes = l.total;
   return SMG_OK;
-}
-
-/* The joints IK updates per leg (see leg_joints in character_internal.h),
- * using `mark` (J bytes of scratch) to tell which part of the leg a joint
- * hangs from. A leg that is not a hip-knee-ankle parent chain is left
- * without IK: its correction would have no meaning. */
-static void leg_lists(const smg_graph* g, smg_character* ch, uint8_t* mark) {
-  const uint32_t J = g->data.joint_count;
-  const smgi_joint* joints = g->data.joints;
-  const smgi_info* info = g->data.info;
-  const uint32_t* legs[2] = {info->left_leg, info->right_leg};
-  enum { OUT = 0, SIDE = 1, BELOW = 2 };
-  for (uint32_t f = 0; f < 2u; ++f) {
-    const uint32_t hip = legs[f][0], knee = legs[f][1], ankle = legs[f][2];
-    ch->leg_ok[f] = hip > 0 && hip < J && knee < J && ankle < J &&
-                    (uint32_t)joints[knee].parent == hip &&
-                    (uint32_t)joints[ankle].parent == knee;
-    ch->leg_side[f] = ch->leg_below[f] = 0;
-    if (!ch->leg_ok[f]) continue;
-    uint32_t* list = ch->leg_joints + (size_t)f * J;
-    list[0] = hip;
-    list[1] = knee;
-    list[2] = ankle;
-    memset(mark, OUT, J);
-    mark[hip] = mark[knee] = SIDE;
-    mark[ankle] = BELOW;
-    uint32_t n = 3;
-    /* parents come first, so one ascending pass sees every parent's mark */
-    for (uint32_t j = hip + 1u; j < J; ++j) {
-      if (j == knee || j == ankle) continue;
-      mark[j] = mark[(uint32_t)joints[j].parent];
-      if (mark[j] == SIDE) list[n++] = j;
-    }
-    ch->leg_side[f] = n - 3u;
-    for (uint32_t j = ankle + 1u; j < J; ++j)
-      if (mark[j] == BELOW) list[n++] = j;
-    ch->leg_below[f] = n - 3u - ch->leg_side[f];
-  }
 }
 
 /* The character's planning phase (0..1 of a step, see smgi_plan), from
@@ -187,41 +136,41 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->allocator = a;
   ch->joint_count = J;
   ch->flags = d.flags;
-  ch->ik_enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
+  ch->ik.enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
   ch->rng = d.seed ? d.seed : 0x9e3779b9u;
-  ch->plan_phase = plan_phase(&d);
-  ch->horizon = d.horizon;
-  ch->error_threshold = d.error_threshold;
+  ch->plan.phase = plan_phase(&d);
+  ch->plan.horizon = d.horizon;
+  ch->plan.error_threshold = d.error_threshold;
   ch->fps = graph->data.info->frame_rate;
   float window = graph->data.info->window_seconds;
-  ch->fade_rate = 1.0f / (window > 1e-3f ? window : DEFAULT_WINDOW);
-  ch->constraints = (smgi_constraint*)(mem + l.constraints);
-  ch->constraint_capacity = d.constraint_capacity;
-  ch->next_id = 1;
-  ch->queue = (smgi_qentry*)(mem + l.queue);
-  ch->rot = (float*)(mem + l.rot);
-  ch->tmp = J > SMGI_POSE_STACK_JOINTS ? (float*)(mem + l.tmp) : NULL;
-  ch->snap = (float*)(mem + l.snap);
-  ch->wpos = (float*)(mem + l.wpos);
-  ch->wrot = (float*)(mem + l.wrot);
-  ch->leg_joints = (uint32_t*)(mem + l.legs);
+  ch->upper.fade_rate = 1.0f / (window > 1e-3f ? window : SMGI_DEFAULT_WINDOW);
+  ch->cons.items = (smgi_constraint*)(mem + l.constraints);
+  ch->cons.capacity = d.constraint_capacity;
+  ch->cons.next_id = 1;
+  ch->lower.queue = (smgi_qentry*)(mem + l.queue);
+  ch->pose.rot = (float*)(mem + l.rot);
+  ch->pose.tmp = J > SMGI_POSE_STACK_JOINTS ? (float*)(mem + l.tmp) : NULL;
+  ch->upper.snap = (float*)(mem + l.snap);
+  ch->pose.wpos = (float*)(mem + l.wpos);
+  ch->pose.wrot = (float*)(mem + l.wrot);
+  ch->ik.leg_joints = (uint32_t*)(mem + l.legs);
   /* the crossfade snapshot (4J floats, unused until the first switch) as
-   * J bytes of scratch: ch->tmp no longer exists for skeletons that fit
+   * J bytes of scratch: ch->pose.tmp no longer exists for skeletons that fit
    * the stack */
-  leg_lists(graph, ch, mem + l.snap);
+  smgi_ik_init_legs(&ch->ik, graph, mem + l.snap);
   memset(mem + l.snap, 0, J); /* scratch back to how create found it */
-  smgi_ik_reset(ch);
+  smgi_ik_reset(&ch->ik);
   ch->path.xz = (float*)(mem + l.xz);
   ch->path.cum = (float*)(mem + l.cum);
   ch->path.capacity = d.path_capacity;
-  ch->base_style = d.initial_style;
-  ch->base_action = d.initial_action;
-  ch->base_style_arc = -1.0f;
-  ch->base_action_arc = -1.0f;
+  ch->cons.base_style = d.initial_style;
+  ch->cons.base_action = d.initial_action;
+  ch->cons.base_style_arc = -1.0f;
+  ch->cons.base_action_arc = -1.0f;
   ch->anchor[0] = d.position[0];
   ch->anchor[1] = d.position[2];
-  ch->sync_rate = 1.0f;
-  ch->last_lower_frame = 0xffffffffu;
+  ch->sync.rate = 1.0f;
+  ch->lower.last_frame = 0xffffffffu;
   r = smgi_plan_start(ch, d.position[0], d.position[2], d.heading);
   if (r != SMG_OK) {
     smgi_free(&a, mem);
@@ -255,11 +204,11 @@ SMG_API smg_result smg_character_set_path(smg_character* ch, const float* xz,
   if (!smgi_all_finite(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
   float dist = 0.0f;
   ch->seg = 0;
-  ch->progress = smgi_path_load(&ch->path, xz, 0, count, 1, ch->ground[0],
-                                ch->ground[1], &ch->seg, &dist);
+  ch->progress = smgi_path_load(&ch->path, xz, 0, count, 1, ch->pose.ground[0],
+                                ch->pose.ground[1], &ch->seg, &dist);
   ch->path_error = dist;
-  ch->base_style_arc = ch->base_style_arc < 0.0f ? -1.0f : 0.0f;
-  ch->base_action_arc = ch->base_action_arc < 0.0f ? -1.0f : 0.0f;
+  ch->cons.base_style_arc = ch->cons.base_style_arc < 0.0f ? -1.0f : 0.0f;
+  ch->cons.base_action_arc = ch->cons.base_action_arc < 0.0f ? -1.0f : 0.0f;
   ch->end_reached = 0;
   smgi_replan(ch);
   return SMG_OK;
@@ -276,7 +225,7 @@ SMG_API smg_result smg_character_append_path(smg_character* ch,
   float dist = 0.0f;
   /* O(appended): only a path that was empty needs the projection */
   float s = smgi_path_load(&ch->path, xz, old, count, old == 0,
-                           ch->ground[0], ch->ground[1], &ch->seg, &dist);
+                           ch->pose.ground[0], ch->pose.ground[1], &ch->seg, &dist);
   if (old == 0) {
     ch->progress = s;
     ch->path_error = dist;
@@ -294,7 +243,7 @@ SMG_API smg_result smg_character_clear_path(smg_character* ch) {
   ch->path_error = 0.0f;
   ch->end_reached = 0;
   /* stay around the end of the motion already committed */
-  const smgi_qentry* h = smgi_q_at(ch, 0);
+  const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
   const smgi_edge* e = &ch->graph->data.lower_edges[h->edge];
   smgi_xform2 d = {e->displacement[0], e->displacement[1],
                    e->displacement[2]};
@@ -318,8 +267,8 @@ SMG_API smg_result smg_character_set_style(smg_character* ch,
                                            uint32_t style) {
   if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
   if (style >= ch->graph->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
-  ch->base_style = style;
-  ch->base_style_arc = ch->progress;
+  ch->cons.base_style = style;
+  ch->cons.base_style_arc = ch->progress;
   smgi_replan(ch);
   return SMG_OK;
 }
@@ -329,9 +278,9 @@ SMG_API smg_result smg_character_set_action(smg_character* ch,
   if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
   if (action >= ch->graph->data.action_count)
     return SMG_ERROR_UNKNOWN_ACTION;
-  ch->base_action = action;
+  ch->cons.base_action = action;
   /* just behind the character so the look-ahead sees it at once */
-  ch->base_action_arc = ch->progress;
+  ch->cons.base_action_arc = ch->progress;
   return SMG_OK;
 }
 
@@ -339,14 +288,14 @@ SMG_API smg_result smg_character_set_error_threshold(smg_character* ch,
                                                      float metres) {
   if (!ch || !isfinite(metres) || metres < 0.0f)
     return SMG_ERROR_INVALID_ARGUMENT;
-  ch->error_threshold = metres > 0.0f ? metres : DEFAULT_THRESHOLD;
+  ch->plan.error_threshold = metres > 0.0f ? metres : SMGI_DEFAULT_THRESHOLD;
   smgi_replan(ch);
   return SMG_OK;
 }
 
 SMG_API smg_result smg_character_set_ik(smg_character* ch, uint32_t enabled) {
   if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
-  ch->ik_enabled = enabled ? 1u : 0u;
+  ch->ik.enabled = enabled ? 1u : 0u;
   return SMG_OK;
 }
 
@@ -367,21 +316,21 @@ SMG_API smg_result smg_character_get_state(const smg_character* ch,
   smg_character_state s;
   memset(&s, 0, sizeof s);
   s.struct_size = out->struct_size;
-  s.flags = ch->contacts;
+  s.flags = ch->pose.contacts;
   if (ch->path.count > 0) s.flags |= SMG_STATE_HAS_PATH;
   if (ch->end_reached) s.flags |= SMG_STATE_PATH_END_REACHED;
-  s.style = ch->style;
-  s.action = ch->action;
-  s.position[0] = ch->ground[0];
+  s.style = ch->lower.style;
+  s.action = ch->upper.action;
+  s.position[0] = ch->pose.ground[0];
   s.position[1] = 0.0f;
-  s.position[2] = ch->ground[1];
-  s.heading = ch->heading;
+  s.position[2] = ch->pose.ground[1];
+  s.heading = ch->pose.heading;
   s.path_distance = ch->progress;
   s.path_error = ch->path_error;
   s.time = ch->time;
-  s.lower_node = ch->lower_node;
-  s.upper_node = ch->upper_node;
-  s.sync_rate = ch->sync_rate;
+  s.lower_node = ch->lower.node;
+  s.upper_node = ch->upper.node;
+  s.sync_rate = ch->sync.rate;
   memcpy(out, &s, out->struct_size);
   return SMG_OK;
 }
@@ -394,8 +343,8 @@ SMG_API smg_result smg_character_get_local_pose(const smg_character* ch,
     return SMG_ERROR_INVALID_ARGUMENT;
   if (joint_count < ch->joint_count) return SMG_ERROR_BUFFER_TOO_SMALL;
   if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
-  memcpy(root_translation, ch->root, sizeof(float) * 3u);
-  memcpy(rotations, ch->rot, sizeof(float) * 4u * ch->joint_count);
+  memcpy(root_translation, ch->pose.root, sizeof(float) * 3u);
+  memcpy(rotations, ch->pose.rot, sizeof(float) * 4u * ch->joint_count);
   return SMG_OK;
 }
 
@@ -409,60 +358,6 @@ SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
   if (joint_count < ch->joint_count) return SMG_ERROR_BUFFER_TOO_SMALL;
   if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
   /* world transforms were cached by the last step; only convert */
-  const uint32_t J = ch->joint_count;
-  const float* wpos = ch->wpos;
-  const float* wrot = ch->wrot;
-#if SMGI_POSE_SSE
-  /* four joints at a time; the last group pads with identities and only
-   * its real joints are copied out */
-  const int world = space == SMG_SPACE_WORLD;
-  __m128 yaw = _mm_setzero_ps(), ground = _mm_setzero_ps();
-  if (!world) {
-    float y[4];
-    smgi_q_yaw(-ch->heading, y);
-    yaw = _mm_loadu_ps(y);
-    ground = _mm_setr_ps(ch->ground[0], 0.0f, ch->ground[1], 0.0f);
-  }
-  uint32_t j = 0;
-  if (world) {
-    for (; j + 4u <= J; j += 4u)
-      smgi_mat4_world_sse(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
-  } else {
-    for (; j + 4u <= J; j += 4u)
-      smgi_mat4_character_sse(wrot + 4u * j, wpos + 3u * j, yaw, ground,
-                              matrices + 16u * j);
-  }
-  if (j < J) {
-    const uint32_t n = J - j;
-    float q[16] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    float p[12] = {0};
-    float m[64];
-    memcpy(q, wrot + 4u * j, sizeof(float) * 4u * n);
-    memcpy(p, wpos + 3u * j, sizeof(float) * 3u * n);
-    if (world)
-      smgi_mat4_world_sse(q, p, m);
-    else
-      smgi_mat4_character_sse(q, p, yaw, ground, m);
-    memcpy(matrices + 16u * j, m, sizeof(float) * 16u * n);
-  }
-#else
-  if (space == SMG_SPACE_WORLD) {
-    for (uint32_t j = 0; j < J; ++j)
-      smgi_mat_from_c(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
-    return SMG_OK;
-  }
-  /* character space: the inverse of (ground position, heading) first */
-  float yaw[4];
-  smgi_q_yaw(-ch->heading, yaw);
-  for (uint32_t j = 0; j < J; ++j) {
-    float q[4], v[3], p[3];
-    smgi_q_mul(yaw, wrot + 4u * j, q);
-    v[0] = wpos[3u * j] - ch->ground[0];
-    v[1] = wpos[3u * j + 1u];
-    v[2] = wpos[3u * j + 2u] - ch->ground[1];
-    smgi_q_rotate(yaw, v, p);
-    smgi_mat_from_c(q, p, matrices + 16u * j);
-  }
-#endif
+  smgi_pose_model_matrices(&ch->pose, ch->joint_count, space, matrices);
   return SMG_OK;
 }

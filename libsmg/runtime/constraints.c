@@ -10,38 +10,38 @@
 
 #define ARC_SLACK 1e-4f /* tolerance when comparing with the path length */
 
-uint32_t smgi_style_at(const smg_character* ch, float s) {
-  uint32_t v = ch->base_style;
-  float best = ch->base_style_arc;
-  for (uint32_t i = 0; i < ch->constraint_count; ++i) {
-    const smgi_constraint* c = &ch->constraints[i];
-    if (c->kind == SMGI_CONSTRAINT_TRANSITION && c->arc <= s &&
-        c->arc > best) {
-      best = c->arc;
-      v = c->value;
+uint32_t smgi_style_at(const smgi_constraints* c, float s) {
+  uint32_t v = c->base_style;
+  float best = c->base_style_arc;
+  for (uint32_t i = 0; i < c->count; ++i) {
+    const smgi_constraint* k = &c->items[i];
+    if (k->kind == SMGI_CONSTRAINT_TRANSITION && k->arc <= s &&
+        k->arc > best) {
+      best = k->arc;
+      v = k->value;
     }
   }
   return v;
 }
 
-uint32_t smgi_action_at(const smg_character* ch, float s, float* out_arc) {
-  uint32_t v = ch->base_action;
-  float best = ch->base_action_arc;
-  for (uint32_t i = 0; i < ch->constraint_count; ++i) {
-    const smgi_constraint* c = &ch->constraints[i];
-    if (c->kind == SMGI_CONSTRAINT_SPLICE && c->arc <= s && c->arc > best) {
-      best = c->arc;
-      v = c->value;
+uint32_t smgi_action_at(const smgi_constraints* c, float s, float* out_arc) {
+  uint32_t v = c->base_action;
+  float best = c->base_action_arc;
+  for (uint32_t i = 0; i < c->count; ++i) {
+    const smgi_constraint* k = &c->items[i];
+    if (k->kind == SMGI_CONSTRAINT_SPLICE && k->arc <= s && k->arc > best) {
+      best = k->arc;
+      v = k->value;
     }
   }
   if (out_arc) *out_arc = best;
   return v;
 }
 
-float smgi_next_constraint_arc(const smg_character* ch, float s) {
+float smgi_next_constraint_arc(const smgi_constraints* c, float s) {
   float next = INFINITY;
-  for (uint32_t i = 0; i < ch->constraint_count; ++i) {
-    float a = ch->constraints[i].arc;
+  for (uint32_t i = 0; i < c->count; ++i) {
+    float a = c->items[i].arc;
     if (a > s && a < next) next = a;
   }
   return next;
@@ -58,11 +58,11 @@ static smg_result add(smg_character* ch, float arc, uint32_t kind,
                       uint32_t value, uint32_t* out_id) {
   smg_result r = check_arc(ch, arc);
   if (r != SMG_OK) return r;
-  if (ch->constraint_count >= ch->constraint_capacity)
+  if (ch->cons.count >= ch->cons.capacity)
     return SMG_ERROR_CAPACITY;
-  smgi_constraint* c = &ch->constraints[ch->constraint_count++];
-  c->id = ch->next_id++;
-  if (ch->next_id == 0) ch->next_id = 1; /* ids stay > 0 after wrap */
+  smgi_constraint* c = &ch->cons.items[ch->cons.count++];
+  c->id = ch->cons.next_id++;
+  if (ch->cons.next_id == 0) ch->cons.next_id = 1; /* ids stay > 0 after wrap */
   c->kind = kind;
   c->value = value;
   c->arc = arc;
@@ -91,8 +91,8 @@ SMG_API smg_result smg_character_add_splice(smg_character* ch, float arc,
 }
 
 static smgi_constraint* find(smg_character* ch, uint32_t id) {
-  for (uint32_t i = 0; i < ch->constraint_count; ++i)
-    if (ch->constraints[i].id == id) return &ch->constraints[i];
+  for (uint32_t i = 0; i < ch->cons.count; ++i)
+    if (ch->cons.items[i].id == id) return &ch->cons.items[i];
   return NULL;
 }
 
@@ -114,16 +114,16 @@ SMG_API smg_result smg_character_remove_constraint(smg_character* ch,
   smgi_constraint* c = find(ch, id);
   if (!c) return SMG_ERROR_NOT_FOUND;
   /* keep insertion order: ties between equal arcs stay deterministic */
-  smgi_constraint* end = ch->constraints + ch->constraint_count;
+  smgi_constraint* end = ch->cons.items + ch->cons.count;
   for (smgi_constraint* p = c; p + 1 < end; ++p) p[0] = p[1];
-  ch->constraint_count--;
+  ch->cons.count--;
   smgi_replan(ch);
   return SMG_OK;
 }
 
 SMG_API smg_result smg_character_clear_constraints(smg_character* ch) {
   if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
-  ch->constraint_count = 0;
+  ch->cons.count = 0;
   smgi_replan(ch);
   return SMG_OK;
 }

@@ -10,10 +10,10 @@
  *  - node_turn, a dynamic programme over 3 s of frames x every edge, runs
  *    eight frames at a time in both directions at once, over rings of the
  *    last few frames (build_turn);
- *  - node_look and node_trail come from one walk per node that carries the
- *    cosine and sine of its heading instead of calling sincosf per edge
- *    (build_walks; x and z agree with composing transforms edge by edge to
- *    float rounding, everything else is bit for bit the same);
+ *  - node_trail comes from one walk per node that carries the cosine and
+ *    sine of its heading instead of calling sincosf per edge (build_walks;
+ *    x and z agree with composing transforms edge by edge to float
+ *    rounding, everything else is bit for bit the same);
  *  - edge_mid inverts each node's ground frame once, not once per edge.
  */
 #include "graph_derived.h"
@@ -153,12 +153,10 @@ static void put_sample(float* o, float x, float z, float h, float arc) {
   o[3] = arc;
 }
 
-/* node_look and node_trail: every lower node's natural continuation,
- * followed for SMGI_TRAIL_SAMPLES * SMGI_TRAIL_STEP_SECONDS, sampled every
- * SMGI_TRAIL_STEP_SECONDS at the first edge end past the step (node_trail)
- * and at the first edge end past SMGI_LOOK_SECONDS or after 256 edges
- * (node_look; 0.7 s < 2 s, so the look is a prefix of the trail's walk and
- * one walk per node gives both).
+/* node_trail: every lower node's natural continuation, followed for
+ * SMGI_TRAIL_SAMPLES * SMGI_TRAIL_STEP_SECONDS and sampled every
+ * SMGI_TRAIL_STEP_SECONDS at the first edge end past the step (at most
+ * 1024 edges per sample).
  *
  * The ground transform is composed edge by edge as acc = acc * step with
  * the heading wrapped each time, as smgi_xf_mul does; but instead of
@@ -171,11 +169,10 @@ static void put_sample(float* o, float x, float z, float h, float arc) {
  * ulps of the rotation: <= 3.4e-6 m over the 2 s walks of a CMU graph).
  * The SSE2 and plain versions do the same operations lane by lane. */
 static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
-                        walk_step* ws, float* look, float* trail,
-                        float* trail_frames, uint32_t* trail_edge) {
+                        walk_step* ws, float* trail, float* trail_frames,
+                        uint32_t* trail_edge) {
   const uint32_t LN = d->lower_node_count, K = SMGI_TRAIL_SAMPLES;
   const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
-  const float look_frames = SMGI_LOOK_SECONDS * fps;
   const float step = SMGI_TRAIL_STEP_SECONDS * fps;
   for (uint32_t m = 0; m < LN; ++m) {
     walk_step* w = &ws[m];
@@ -212,63 +209,30 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
     /* cur: the step about to be taken; from: the last one taken (its edge
      * is natural[from - ws]) */
     const walk_step *cur = &ws[n], *from = cur;
-    uint32_t walked = 0;
-    int looked = 0;
     for (uint32_t k = 0; k < K; ++k) {
       const float want = step * (float)(k + 1u);
-      /* hops within this sample, as the plain walk counts them */
-      uint32_t hops = 0;
-      float target = want;
-      uint32_t limit = 1024u;
-      if (!looked) {
-        /* first to where the look ends, if it ends within this sample */
-        if (look_frames < want) target = look_frames;
-        if (walked >= 256u)
-          limit = 0;
-        else if (256u - walked < limit)
-          limit = 256u - walked;
-      }
-      for (;;) {
-        while (hops < limit && frames < target && cur->next) {
-          const walk_step* w = cur;
+      for (uint32_t hops = 0; hops < 1024u && frames < want && cur->next;
+           ++hops) {
+        const walk_step* w = cur;
 #if SMGI_DERIVED_SSE
-          const __m128 c = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(2, 2, 2, 2));
-          const __m128 s = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(3, 3, 3, 3));
-          rot = _mm_add_ps(_mm_mul_ps(c, _mm_loadu_ps(w->a)),
-                           _mm_mul_ps(s, _mm_loadu_ps(w->b)));
-          acc = _mm_add_ps(acc, rot);
+        const __m128 c = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(2, 2, 2, 2));
+        const __m128 s = _mm_shuffle_ps(rot, rot, _MM_SHUFFLE(3, 3, 3, 3));
+        rot = _mm_add_ps(_mm_mul_ps(c, _mm_loadu_ps(w->a)),
+                         _mm_mul_ps(s, _mm_loadu_ps(w->b)));
+        acc = _mm_add_ps(acc, rot);
 #else
-          x = x + (c * w->a[0] + s * w->b[0]);
-          z = z + (c * w->a[1] + s * w->b[1]);
-          const float c2 = c * w->a[2] + s * w->b[2];
-          s = c * w->a[3] + s * w->b[3];
-          c = c2;
+        x = x + (c * w->a[0] + s * w->b[0]);
+        z = z + (c * w->a[1] + s * w->b[1]);
+        const float c2 = c * w->a[2] + s * w->b[2];
+        s = c * w->a[3] + s * w->b[3];
+        c = c2;
 #endif
-          h = wrap_fast(h + w->h);
-          arc += w->arc;
-          frames += w->frames;
-          from = w;
-          cur = w->next;
-          ++hops;
-        }
-        if (looked) break;
-        if (walked + hops >= 256u || !(frames < look_frames) || !cur->next) {
-          /* the look ends here: after 256 edges, past its frames or where
-           * the continuation ends; the sample goes on */
-#if SMGI_DERIVED_SSE
-          _mm_storeu_ps(xz, acc);
-          put_sample(look + 4u * (size_t)n, xz[0], xz[1], h, arc);
-#else
-          put_sample(look + 4u * (size_t)n, x, z, h, arc);
-#endif
-          looked = 1;
-          target = want;
-          limit = 1024u;
-          continue;
-        }
-        break; /* the sample ended first */
+        h = wrap_fast(h + w->h);
+        arc += w->arc;
+        frames += w->frames;
+        from = w;
+        cur = w->next;
       }
-      walked += hops;
       const size_t i = (size_t)n * K + k;
 #if SMGI_DERIVED_SSE
       _mm_storeu_ps(xz, acc);
@@ -278,15 +242,6 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
 #endif
       trail_frames[i] = frames;
       trail_edge[i] = natural[from - ws];
-    }
-    /* not reached: the trail walks past the look's frames or to its end */
-    if (!looked) {
-#if SMGI_DERIVED_SSE
-      _mm_storeu_ps(xz, acc);
-      put_sample(look + 4u * (size_t)n, xz[0], xz[1], h, arc);
-#else
-      put_sample(look + 4u * (size_t)n, x, z, h, arc);
-#endif
     }
   }
 }
@@ -753,11 +708,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_lh = 0;
   size_t off_uh = off_lh + align16((size_t)LN * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
-  size_t off_fu = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
-  size_t off_af = off_fu + align16(sizeof(uint32_t) * (size_t)F);
-  size_t off_sn = off_af + align16(sizeof(uint32_t) * (size_t)A);
-  size_t off_nl = off_sn + align16(sizeof(uint32_t) * (size_t)S);
-  size_t off_nn = off_nl + align16(sizeof(float) * 4u * (size_t)LN);
+  size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
+  size_t off_nn = off_af + align16(sizeof(uint32_t) * (size_t)A);
   const size_t TK = (size_t)LN * SMGI_TRAIL_SAMPLES;
   size_t off_tr = off_nn + align16(sizeof(uint32_t) * (size_t)LN);
   size_t off_tf = off_tr + align16(sizeof(float) * 4u * TK);
@@ -795,10 +747,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint8_t* lower_hops = base + off_lh;
   uint8_t* upper_hops = base + off_uh;
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
-  uint32_t* frame_upper = (uint32_t*)(base + off_fu);
   uint32_t* action_first = (uint32_t*)(base + off_af);
-  uint32_t* style_first = (uint32_t*)(base + off_sn);
-  float* node_look = (float*)(base + off_nl);
   uint32_t* natural = (uint32_t*)(base + off_nn);
   float* trail = (float*)(base + off_tr);
   float* trail_frames = (float*)(base + off_tf);
@@ -828,32 +777,15 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   }
   for (uint32_t f = 0; f < F; ++f) splice_first[f + 1u] += splice_first[f];
 
-  for (uint32_t f = 0; f < F; ++f) frame_upper[f] = SMGI_NONE;
-  for (uint32_t e = 0; e < d->upper_edge_count; ++e) {
-    const smgi_edge* ue = &d->upper_edges[e];
-    for (uint32_t k = 0; k < ue->frame_count; ++k) {
-      uint64_t f = (uint64_t)ue->first_frame + k;
-      if (f < F && frame_upper[f] == SMGI_NONE) frame_upper[f] = e;
-    }
-  }
   for (uint32_t a = 0; a < A; ++a) action_first[a] = SMGI_NONE;
   for (uint32_t e = d->upper_edge_count; e > 0; --e) {
     uint32_t l = d->upper_edges[e - 1u].label;
     if (l < A) action_first[l] = e - 1u;
   }
-  for (uint32_t s = 0; s < S; ++s) style_first[s] = SMGI_NONE;
-  for (uint32_t n = LN; n > 0; --n) {
-    uint32_t l = d->lower_nodes[n - 1u].label;
-    if (l < S) style_first[l] = n - 1u;
-  }
-  uint32_t maxdeg = 0;
-  for (uint32_t n = 0; n < LN; ++n)
-    if (d->lower_nodes[n].edge_count > maxdeg)
-      maxdeg = d->lower_nodes[n].edge_count;
 
   find_natural(d, natural);
-  build_walks(d, natural, (walk_step*)scratch, node_look, trail,
-              trail_frames, trail_edge);
+  build_walks(d, natural, (walk_step*)scratch, trail, trail_frames,
+              trail_edge);
   build_turn(d, scratch, node_turn);
   smgi_free(&g->allocator, scratch);
 
@@ -866,14 +798,11 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   dv->lower_hops = lower_hops;
   dv->upper_hops = upper_hops;
   dv->splice_first = splice_first;
-  dv->frame_upper_edge = frame_upper;
   dv->action_first_edge = action_first;
-  dv->style_first_node = style_first;
-  dv->max_lower_degree = maxdeg;
-  dv->node_look = node_look;
   /* most agile style: heading change per metre travelled (curvature) of
    * the natural continuations - what decides how tightly it can turn back
-   * to a path */
+   * to a path. The turn is summed over the trail's samples so that a
+   * continuation turning more than half a circle counts in full. */
   {
     float best = -1.0f;
     dv->agile_style = 0;
@@ -881,8 +810,13 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
       double turn = 0.0, arc = 0.0;
       for (uint32_t n = 0; n < LN; ++n) {
         if (d->lower_nodes[n].label != st) continue;
-        turn += fabs((double)node_look[4u * n + 2u]);
-        arc += (double)node_look[4u * n + 3u];
+        const float* tr = trail + 4u * (size_t)n * SMGI_TRAIL_SAMPLES;
+        float h = 0.0f;
+        for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES; ++k) {
+          turn += fabs((double)smgi_wrap_angle(tr[4u * k + 2u] - h));
+          h = tr[4u * k + 2u];
+        }
+        arc += (double)tr[4u * (SMGI_TRAIL_SAMPLES - 1u) + 3u];
       }
       float mean = arc > 1e-6 ? (float)(turn / arc) : -1.0f;
       if (mean > best) {

@@ -12,12 +12,9 @@
 #include <stdint.h>
 
 #include "graph_internal.h"
+#include "tuning.h"
 
 #define SMGI_HOPS_UNREACHABLE 255u
-#define SMGI_LOOK_SECONDS 0.7f
-#define SMGI_TRAIL_SAMPLES 4u      /* samples of a node's natural future */
-#define SMGI_TRAIL_STEP_SECONDS 0.5f
-#define SMGI_TURN_SECONDS 3.0f     /* horizon of node_turn */
 
 typedef struct smgi_derived {
   /* lower_hops[node * style_count + style]: number of edges to traverse
@@ -32,19 +29,9 @@ typedef struct smgi_derived {
    * splice_first[f + 1]) (SPLC is sorted by lower_frame); frame_count + 1
    * entries. */
   const uint32_t* splice_first;
-  /* The upper edge whose frames contain POSE frame f, or SMGI_NONE. */
-  const uint32_t* frame_upper_edge;
   /* First upper edge labelled with each action (SMGI_NONE if none): the
    * entry used when a splice must happen but no candidate was found. */
   const uint32_t* action_first_edge;
-  /* First lower node labelled with each style (SMGI_NONE if none). */
-  const uint32_t* style_first_node;
-  /* node_look[4 * node]: where the node's natural continuation (the
-   * original motion that follows its pose, edge after edge) leads within
-   * SMGI_LOOK_SECONDS: dx, dz, dheading in the node's ground frame, and
-   * the arc length. Lets the greedy planner judge an edge by where it
-   * leads, not only by its own few frames (baked edges may be 2 frames). */
-  const float* node_look;
   /* natural_next[node]: the out-edge continuing the node's original
    * motion (first_frame == the node's frame, not a transition), or
    * SMGI_NONE. */
@@ -72,11 +59,9 @@ typedef struct smgi_derived {
    * instead of composing two transforms from two pose records. */
   const float* edge_mid;
   /* The style whose motion turns most tightly (heading change per metre of
-   * its nodes' natural continuations): where a character that got far
+   * its nodes' natural continuations, node_trail): where a character that got far
    * off its path goes to get back (CMU runs, for one, barely turn). */
   uint32_t agile_style;
-  /* Largest out-degree of any lower node (bounds planner work). */
-  uint32_t max_lower_degree;
 } smgi_derived;
 
 /* Build g->derived through g->allocator. The graph must be validated. */

@@ -6,7 +6,7 @@
  * foot stays put and a rolling foot pivots about its planted toe instead of
  * dragging. The ankle keeps its animated world orientation, which puts the
  * toe exactly on the anchor. The correction blends in and out over
- * IK_BLEND seconds so contact changes never pop. A contact whose anchor
+ * SMGI_IK_BLEND seconds so contact changes never pop. A contact whose anchor
  * drifted implausibly far (a re-plan moved the body) is released rather
  * than stretched. Each solve starts from the foot's previous correction
  * (see solve_leg), and IK refreshes the world transform cache of the joints
@@ -24,11 +24,6 @@
 #if IK_SSE
 #include <xmmintrin.h>
 #endif
-
-#define IK_BLEND 0.1f      /* seconds to blend in/out */
-#define IK_ITERATIONS 8u
-#define IK_RELEASE 0.35f   /* fraction of leg length */
-#define IK_TOLERANCE 2e-3f /* metres beyond the closest the leg can reach */
 
 static const float k_identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 
@@ -113,13 +108,13 @@ static void blend_local(float* rot, const float* local, float w) {
 static void solve_leg(smg_character* ch, uint32_t f, const float* target,
                       float w) {
   const smgi_joint* joints = ch->graph->data.joints;
-  const uint32_t* list = ch->leg_joints + (size_t)f * ch->joint_count;
+  const uint32_t* list = ch->ik.leg_joints + (size_t)f * ch->joint_count;
   const uint32_t hip = list[0], knee = list[1], ankle = list[2];
-  smgi_foot* foot = &ch->feet[f];
+  smgi_foot* foot = &ch->ik.feet[f];
   const uint32_t hp = (uint32_t)joints[hip].parent;
-  const float* p0 = ch->wpos + 3u * hip;
-  const float* p1 = ch->wpos + 3u * knee;
-  const float* p2 = ch->wpos + 3u * ankle;
+  const float* p0 = ch->pose.wpos + 3u * hip;
+  const float* p1 = ch->pose.wpos + 3u * knee;
+  const float* p2 = ch->pose.wpos + 3u * ankle;
   float a0[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
   float b0[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
   float t[3] = {target[0] - p0[0], target[1] - p0[1], target[2] - p0[2]};
@@ -128,7 +123,7 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   memcpy(Tk, foot->fix[1], sizeof Tk);
   smgi_q_rotate(Th, a0, a);
   smgi_q_rotate(Tk, b0, b);
-  /* Stop within IK_TOLERANCE of the closest the ankle can get: 0 for a
+  /* Stop within SMGI_IK_TOLERANCE of the closest the ankle can get: 0 for a
    * reachable target, else how far it lies outside the leg's annulus.
    * A released foot blending out moves the pose's ankle by only about w
    * times what it moves the solved one, and its solve is on its way to
@@ -142,10 +137,10 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   float inner = fabsf(l1 - l2) - d;
   if (inner > reach) reach = inner;
   if (reach < 0.0f) reach = 0.0f;
-  const float tol = foot->planted ? IK_TOLERANCE : IK_TOLERANCE / w;
+  const float tol = foot->planted ? SMGI_IK_TOLERANCE : SMGI_IK_TOLERANCE / w;
   const float stop2 = (reach + tol) * (reach + tol);
   float prev2 = INFINITY;
-  for (uint32_t it = 0; it < IK_ITERATIONS; ++it) {
+  for (uint32_t it = 0; it < SMGI_IK_ITERATIONS; ++it) {
     float e[3] = {t[0] - a[0] - b[0], t[1] - a[1] - b[1], t[2] - a[2] - b[2]};
     float e2 = dot3(e, e);
     if (e2 <= stop2) break;
@@ -184,21 +179,21 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   /* back to local rotations, blended with the animation by w; the ankle
    * keeps its animated world orientation */
   float r0[4], r1[4], inv[4], local[4];
-  float* wrot = ch->wrot;
+  float* wrot = ch->pose.wrot;
   qmul(Th, wrot + 4u * hip, r0);
   qmul(Tk, wrot + 4u * knee, r1);
   smgi_q_conj(wrot + 4u * hp, inv);
   qmul(inv, r0, local);
-  blend_local(ch->rot + 4u * hip, local, w);
+  blend_local(ch->pose.rot + 4u * hip, local, w);
   smgi_q_conj(r0, inv);
   qmul(inv, r1, local);
-  blend_local(ch->rot + 4u * knee, local, w);
+  blend_local(ch->pose.rot + 4u * knee, local, w);
   smgi_q_conj(r1, inv);
   qmul(inv, wrot + 4u * ankle, local);
-  blend_local(ch->rot + 4u * ankle, local, w);
+  blend_local(ch->pose.rot + 4u * ankle, local, w);
 
   /* keep the world transform cache true for every joint IK moved */
-  const uint32_t side = ch->leg_side[f], below = ch->leg_below[f];
+  const uint32_t side = ch->ik.leg_side[f], below = ch->ik.leg_below[f];
   if (w < 1.0f) { /* blended: the solve's transforms are not the pose's */
     smgi_fk_joints(ch, list, 3u + side + below);
     return;
@@ -206,7 +201,7 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   /* At full weight the solve already has the pose's hip and knee (what FK
    * of the new local rotations gives, to rounding) and the ankle keeps its
    * world rotation, so joints below it only move with it. */
-  float* wpos = ch->wpos;
+  float* wpos = ch->pose.wpos;
   memcpy(wrot + 4u * hip, r0, sizeof r0);
   memcpy(wrot + 4u * knee, r1, sizeof r1);
   const float ax = p0[0] + a[0] + b[0], ay = p0[1] + a[1] + b[1],
@@ -227,32 +222,66 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   }
 }
 
-void smgi_ik_reset(smg_character* ch) {
+void smgi_ik_init_legs(smgi_ik* ik, const smg_graph* g, uint8_t* mark) {
+  const uint32_t J = g->data.joint_count;
+  const smgi_joint* joints = g->data.joints;
+  const smgi_info* info = g->data.info;
+  const uint32_t* legs[2] = {info->left_leg, info->right_leg};
+  enum { OUT = 0, SIDE = 1, BELOW = 2 };
   for (uint32_t f = 0; f < 2u; ++f) {
-    ch->feet[f].planted = 0;
-    ch->feet[f].weight = 0.0f;
-    memcpy(ch->feet[f].fix[0], k_identity, sizeof k_identity);
-    memcpy(ch->feet[f].fix[1], k_identity, sizeof k_identity);
+    const uint32_t hip = legs[f][0], knee = legs[f][1], ankle = legs[f][2];
+    ik->leg_ok[f] = hip > 0 && hip < J && knee < J && ankle < J &&
+                    (uint32_t)joints[knee].parent == hip &&
+                    (uint32_t)joints[ankle].parent == knee;
+    ik->leg_side[f] = ik->leg_below[f] = 0;
+    if (!ik->leg_ok[f]) continue;
+    uint32_t* list = ik->leg_joints + (size_t)f * J;
+    list[0] = hip;
+    list[1] = knee;
+    list[2] = ankle;
+    memset(mark, OUT, J);
+    mark[hip] = mark[knee] = SIDE;
+    mark[ankle] = BELOW;
+    uint32_t n = 3;
+    /* parents come first, so one ascending pass sees every parent's mark */
+    for (uint32_t j = hip + 1u; j < J; ++j) {
+      if (j == knee || j == ankle) continue;
+      mark[j] = mark[(uint32_t)joints[j].parent];
+      if (mark[j] == SIDE) list[n++] = j;
+    }
+    ik->leg_side[f] = n - 3u;
+    for (uint32_t j = ankle + 1u; j < J; ++j)
+      if (mark[j] == BELOW) list[n++] = j;
+    ik->leg_below[f] = n - 3u - ik->leg_side[f];
+  }
+}
+
+void smgi_ik_reset(smgi_ik* ik) {
+  for (uint32_t f = 0; f < 2u; ++f) {
+    ik->feet[f].planted = 0;
+    ik->feet[f].weight = 0.0f;
+    memcpy(ik->feet[f].fix[0], k_identity, sizeof k_identity);
+    memcpy(ik->feet[f].fix[1], k_identity, sizeof k_identity);
   }
 }
 
 void smgi_ik_apply(smg_character* ch, float dt) {
-  if (!ch->ik_enabled) {
-    smgi_ik_reset(ch);
+  if (!ch->ik.enabled) {
+    smgi_ik_reset(&ch->ik);
     return;
   }
   const smgi_info* info = ch->graph->data.info;
   const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
   const uint32_t* legs[2] = {info->left_leg, info->right_leg};
-  float step = dt / IK_BLEND;
+  float step = dt / SMGI_IK_BLEND;
   for (uint32_t f = 0; f < 2u; ++f) {
-    smgi_foot* foot = &ch->feet[f];
-    if (!ch->leg_ok[f]) continue;
+    smgi_foot* foot = &ch->ik.feet[f];
+    if (!ch->ik.leg_ok[f]) continue;
     uint32_t ankle = legs[f][2];
     /* the planted point: the toe when the skeleton has one */
     uint32_t toe = legs[f][3] < ch->joint_count ? legs[f][3] : ankle;
-    const float* ap = ch->wpos + 3u * toe;
-    int contact = (ch->contacts & bits[f]) != 0;
+    const float* ap = ch->pose.wpos + 3u * toe;
+    int contact = (ch->pose.contacts & bits[f]) != 0;
     if (contact && !foot->planted) {
       foot->planted = 1;
       memcpy(foot->anchor, ap, sizeof foot->anchor);
@@ -266,7 +295,7 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     if (foot->planted) {
       float dx = foot->anchor[0] - ap[0], dy = foot->anchor[1] - ap[1],
             dz = foot->anchor[2] - ap[2];
-      float lim = IK_RELEASE * info->leg_length;
+      float lim = SMGI_IK_RELEASE * info->leg_length;
       if (dx * dx + dy * dy + dz * dz > lim * lim) {
         foot->planted = 0; /* implausible: let go smoothly */
       }
@@ -275,7 +304,7 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
     if (foot->weight > 0.0f) {
       /* ankle target: the animated ankle-from-toe offset at the anchor */
-      const float* an = ch->wpos + 3u * ankle;
+      const float* an = ch->pose.wpos + 3u * ankle;
       float target[3] = {foot->anchor[0] + an[0] - ap[0],
                          foot->anchor[1] + an[1] - ap[1],
                          foot->anchor[2] + an[2] - ap[2]};

@@ -7,10 +7,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "character_internal.h"
-
-#define WALK_LIMIT 4u
-#define PROJECT_LIMIT 256u
+#include "path.h"
+#include "rmath.h"
+#include "tuning.h"
 
 void smgi_path_reset(smgi_path* p) {
   p->count = 0;
@@ -41,7 +40,7 @@ static uint32_t last_at_or_before(const smgi_path* p, float s, uint32_t lo,
 static uint32_t find_segment(const smgi_path* p, float s, uint32_t hint) {
   uint32_t last = p->count - 2u;
   uint32_t i = hint > last ? last : hint;
-  for (uint32_t k = 0; k < WALK_LIMIT; ++k) {
+  for (uint32_t k = 0; k < SMGI_PATH_WALK_LIMIT; ++k) {
     if (s < p->cum[i] && i > 0) {
       --i;
     } else if (s > p->cum[i + 1u] && i < last) {
@@ -123,8 +122,6 @@ void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
   if (heading) *heading = segment_heading(p, i);
 }
 
-#define PROJECT_TIE 0.02f /* metres: nearer passes within this are ties */
-
 /* Squared distance from (x, z) to segment i and the arc length there. */
 static float seg_dist2(const smgi_path* p, uint32_t i, float x, float z,
                        float* s) {
@@ -157,7 +154,7 @@ float smgi_path_project_local(const smgi_path* p, float x, float z,
   float d_best = seg_dist2(p, i, x, z, &s_best);
   /* descend towards the nearer neighbour until neither improves; ties
    * move forward so progress never stalls on zero-length segments */
-  for (uint32_t k = 0; k < PROJECT_LIMIT; ++k) {
+  for (uint32_t k = 0; k < SMGI_PATH_PROJECT_LIMIT; ++k) {
     float s_n, s_p;
     float d_n = i < last ? seg_dist2(p, i + 1u, x, z, &s_n) : INFINITY;
     float d_p = i > 0 ? seg_dist2(p, i - 1u, x, z, &s_p) : INFINITY;
@@ -205,7 +202,7 @@ int smgi_all_finite(const float* v, uint32_t count) {
 
 /* Exact nearest point to (px, pz) over segments [first, last] (arc
  * lengths already summed). A segment can only replace the best so far if
- * it is nearer than t = best - PROJECT_TIE (a later pass must be nearer by
+ * it is nearer than t = best - SMGI_PATH_PROJECT_TIE (a later pass must be nearer by
  * more than that: where the path passes the character twice, as a closed
  * loop does, progress is the earliest pass, not float noise's pick), and
  * it can only be that near if its start is within t + its length; once
@@ -241,7 +238,7 @@ static float nearest_segment(const smgi_path* p, uint32_t first,
         best = sqrtf(d2);
         s_best = si;
         best_seg = i;
-        t = best - PROJECT_TIE;
+        t = best - SMGI_PATH_PROJECT_TIE;
         if (t <= 0.0f) { /* on the path: no later pass can win */
           b = last;      /* ends the outer loop after this block */
           break;

@@ -103,20 +103,15 @@ static void place(const smg_graph* g, uint32_t frame, const placement* pl,
   *gh = pl->M.h + r[2];
 }
 
-/* Upper-body rotations are written straight into the pose unless a
- * crossfade needs them apart; the scratch for that lives on the stack up
- * to this many joints (ch->tmp is allocated only for bigger skeletons). */
-#define POSE_STACK_JOINTS SMGI_POSE_STACK_JOINTS
-
 void smgi_pose_compose(smg_character* ch) {
   const smg_graph* g = ch->graph;
   const uint32_t J = ch->joint_count;
   const smgi_edge* edges = g->data.lower_edges;
-  const smgi_qentry* h = smgi_q_at(ch, 0);
+  const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
   const smgi_edge* e = &edges[h->edge];
-  uint32_t i0 = (uint32_t)ch->t;
+  uint32_t i0 = (uint32_t)ch->lower.t;
   if (i0 >= e->frame_count) i0 = e->frame_count - 1u;
-  float a = ch->t - (float)i0;
+  float a = ch->lower.t - (float)i0;
   a = smgi_clampf(a, 0.0f, 1.0f);
   uint32_t fa = e->first_frame + i0, fb = fa;
   placement pa_pl, pb_pl;
@@ -124,8 +119,8 @@ void smgi_pose_compose(smg_character* ch) {
   const placement* plb = &pa_pl;
   if (i0 + 1u < e->frame_count) {
     fb = fa + 1u;
-  } else if (ch->q_count > 1u) {
-    const smgi_qentry* n = smgi_q_at(ch, 1);
+  } else if (ch->lower.count > 1u) {
+    const smgi_qentry* n = smgi_q_at(&ch->lower, 1);
     fb = edges[n->edge].first_frame;
     placement_init(n->M, &pb_pl);
     plb = &pb_pl;
@@ -133,52 +128,56 @@ void smgi_pose_compose(smg_character* ch) {
   float pa[3], pb[3], ra[4], rb[4], gax, gaz, gah, gbx, gbz, gbh;
   place(g, fa, &pa_pl, pa, ra, &gax, &gaz, &gah);
   place(g, fb, plb, pb, rb, &gbx, &gbz, &gbh);
-  for (int k = 0; k < 3; ++k) ch->root[k] = pa[k] + a * (pb[k] - pa[k]);
-  smgi_q_nlerp(ra, rb, a, ch->rot);
-  ch->ground[0] = gax + a * (gbx - gax);
-  ch->ground[1] = gaz + a * (gbz - gaz);
-  ch->heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));
+  for (int k = 0; k < 3; ++k) ch->pose.root[k] = pa[k] + a * (pb[k] - pa[k]);
+  smgi_q_nlerp(ra, rb, a, ch->pose.rot);
+  ch->pose.ground[0] = gax + a * (gbx - gax);
+  ch->pose.ground[1] = gaz + a * (gbz - gaz);
+  ch->pose.heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));
   /* Decode both frames' joints straight into their nlerps, four joints at
    * a time. While an action plays, its sample replaces every upper-body
    * joint below, so the locomotion's own are not sampled at all. */
   smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), a,
-                     ch->action != 0 ? SMGI_JOINTS_NOT_UPPER
+                     ch->upper.action != 0 ? SMGI_JOINTS_NOT_UPPER
                                      : SMGI_JOINTS_ALL,
-                     ch->rot);
+                     ch->pose.rot);
   uint32_t flags = g->data.frames[a < 0.5f ? fa : fb].flags;
-  ch->contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
+  ch->pose.contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
                                                      : 0u) |
                  ((flags & SMGI_FRAME_RIGHT_CONTACT) ? SMG_STATE_RIGHT_CONTACT
                                                       : 0u);
 
   /* upper body */
-  if (ch->action == 0 && ch->fade >= 1.0f) return;
+  if (ch->upper.action == 0 && ch->upper.fade >= 1.0f) return;
   /* smoothstep keeps the crossfade's velocity continuous at both ends */
-  float w = ch->fade >= 1.0f ? 1.0f : ch->fade * ch->fade * (3.0f - 2.0f * ch->fade);
+  float w = ch->upper.fade >= 1.0f ? 1.0f : ch->upper.fade * ch->upper.fade * (3.0f - 2.0f * ch->upper.fade);
   const smgi_joint* joints = g->data.joints;
-  if (ch->action != 0 && w >= 1.0f) {
+  if (ch->upper.action != 0 && w >= 1.0f) {
     /* no crossfade: the action's upper body goes straight into the pose
      * (the upper joints were not written above). Only when the spine-base
      * correction lands on an upper joint too, as in every baked skeleton;
      * otherwise the general path below keeps it off the pose. */
     const uint32_t sb = g->data.info->spine_base_joint;
     if (sb == 0 || sb >= J || joints[sb].body_part == SMG_BODY_UPPER) {
-      smgi_upper_sample(ch, ch->rot);
+      smgi_upper_sample(ch, ch->pose.rot);
       return;
     }
   }
-  float stack_tmp[4u * POSE_STACK_JOINTS];
-  float* tmp = J <= POSE_STACK_JOINTS ? stack_tmp : ch->tmp;
-  if (ch->action != 0) smgi_upper_sample(ch, tmp);
+  /* upper-body rotations go straight into the pose unless a crossfade
+   * needs them apart; the scratch for that lives on the stack up to
+   * SMGI_POSE_STACK_JOINTS joints (pose.tmp exists only for bigger
+   * skeletons) */
+  float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
+  float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : ch->pose.tmp;
+  if (ch->upper.action != 0) smgi_upper_sample(ch, tmp);
   for (uint32_t j = 1; j < J; ++j) {
     if (joints[j].body_part != SMG_BODY_UPPER) continue;
-    float* out = ch->rot + 4u * j;
-    const float* target = ch->action != 0 ? tmp + 4u * j : out;
+    float* out = ch->pose.rot + 4u * j;
+    const float* target = ch->upper.action != 0 ? tmp + 4u * j : out;
     if (w >= 1.0f) {
       memcpy(out, target, sizeof(float) * 4u);
     } else {
       float q[4];
-      smgi_q_nlerp(ch->snap + 4u * j, target, w, q);
+      smgi_q_nlerp(ch->upper.snap + 4u * j, target, w, q);
       memcpy(out, q, sizeof q);
     }
   }
@@ -200,20 +199,20 @@ void smgi_pose_prefetch(const smg_character* ch) {
    * and its world transforms, which are rewritten. character.c lays them
    * out in that order in one block: one range then, else three. */
   const char* c0 = (const char*)ch;
-  const char* c1 = (const char*)(ch->wrot + 4u * J);
-  if ((const char*)ch->rot > c0 && (const char*)ch->wpos > c0 &&
-      (const char*)ch->wrot > c0 && c1 > c0 &&
+  const char* c1 = (const char*)(ch->pose.wrot + 4u * J);
+  if ((const char*)ch->pose.rot > c0 && (const char*)ch->pose.wpos > c0 &&
+      (const char*)ch->pose.wrot > c0 && c1 > c0 &&
       (size_t)(c1 - c0) <= sizeof *ch + sizeof(float) * 12u * J + 64u) {
     PREFETCH_RANGE(c0, c1 - c0, 1);
   } else {
     PREFETCH_RANGE(ch, sizeof *ch, 1);
-    PREFETCH_RANGE(ch->rot, sizeof(float) * 4u * J, 1);
-    PREFETCH_RANGE(ch->wpos, sizeof(float) * 3u * J, 1);
-    PREFETCH_RANGE(ch->wrot, sizeof(float) * 4u * J, 1);
+    PREFETCH_RANGE(ch->pose.rot, sizeof(float) * 4u * J, 1);
+    PREFETCH_RANGE(ch->pose.wpos, sizeof(float) * 3u * J, 1);
+    PREFETCH_RANGE(ch->pose.wrot, sizeof(float) * 4u * J, 1);
   }
   /* the queue entries the pose is placed with */
-  PREFETCH_RANGE(smgi_q_at_c(ch, 0), sizeof(smgi_qentry), 0);
-  if (ch->q_count > 1u) PREFETCH_RANGE(smgi_q_at_c(ch, 1), sizeof(smgi_qentry), 0);
+  PREFETCH_RANGE(smgi_q_at_c(&ch->lower, 0), sizeof(smgi_qentry), 0);
+  if (ch->lower.count > 1u) PREFETCH_RANGE(smgi_q_at_c(&ch->lower, 1), sizeof(smgi_qentry), 0);
   /* the path around the character's projection (progress tracking) */
   if (ch->seg + 2u < ch->path.count) {
     PREFETCH_RANGE(ch->path.xz + 2u * ch->seg, sizeof(float) * 6u, 0);
@@ -221,9 +220,9 @@ void smgi_pose_prefetch(const smg_character* ch) {
   }
   /* the lower-body records the playhead is at and goes to next */
   const smg_graph* g = ch->graph;
-  const smgi_qentry* h = smgi_q_at_c(ch, 0);
+  const smgi_qentry* h = smgi_q_at_c(&ch->lower, 0);
   const smgi_edge* e = &g->data.lower_edges[h->edge];
-  const uint32_t i0 = (uint32_t)ch->t;
+  const uint32_t i0 = (uint32_t)ch->lower.t;
   if (i0 + 1u < e->frame_count)
     PREFETCH_RANGE(smgi_graph_pose(g, e->first_frame + i0),
                    2u * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
@@ -271,8 +270,8 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
 void smgi_fk_joints(smg_character* ch, const uint32_t* list,
                     uint32_t count) {
   const smgi_joint* joints = ch->graph->data.joints;
-  float* wpos = ch->wpos;
-  float* wrot = ch->wrot;
+  float* wpos = ch->pose.wpos;
+  float* wrot = ch->pose.wrot;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t j = list[i];
     const uint32_t p = (uint32_t)joints[j].parent;
@@ -280,11 +279,70 @@ void smgi_fk_joints(smg_character* ch, const uint32_t* list,
     __m128 unused;
     (void)smgi_fk_joint_sse(_mm_loadu_ps(wrot + 4u * p),
                             smgi_load3_sse(wpos + 3u * p),
-                            _mm_loadu_ps(joints[j].offset), ch->rot + 4u * j,
+                            _mm_loadu_ps(joints[j].offset), ch->pose.rot + 4u * j,
                             wpos + 3u * j, wrot + 4u * j, &unused);
 #else
     smgi_fk_joint_c(wrot + 4u * p, wpos + 3u * p, joints[j].offset,
-                    ch->rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
+                    ch->pose.rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
 #endif
   }
+}
+
+void smgi_pose_model_matrices(const smgi_pose* p, uint32_t joint_count,
+                              uint32_t space, float* matrices) {
+  const uint32_t J = joint_count;
+  const float* wpos = p->wpos;
+  const float* wrot = p->wrot;
+#if SMGI_POSE_SSE
+  /* four joints at a time; the last group pads with identities and only
+   * its real joints are copied out */
+  const int world = space == SMG_SPACE_WORLD;
+  __m128 yaw = _mm_setzero_ps(), ground = _mm_setzero_ps();
+  if (!world) {
+    float y[4];
+    smgi_q_yaw(-p->heading, y);
+    yaw = _mm_loadu_ps(y);
+    ground = _mm_setr_ps(p->ground[0], 0.0f, p->ground[1], 0.0f);
+  }
+  uint32_t j = 0;
+  if (world) {
+    for (; j + 4u <= J; j += 4u)
+      smgi_mat4_world_sse(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
+  } else {
+    for (; j + 4u <= J; j += 4u)
+      smgi_mat4_character_sse(wrot + 4u * j, wpos + 3u * j, yaw, ground,
+                              matrices + 16u * j);
+  }
+  if (j < J) {
+    const uint32_t n = J - j;
+    float q[16] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    float pp[12] = {0};
+    float m[64];
+    memcpy(q, wrot + 4u * j, sizeof(float) * 4u * n);
+    memcpy(pp, wpos + 3u * j, sizeof(float) * 3u * n);
+    if (world)
+      smgi_mat4_world_sse(q, pp, m);
+    else
+      smgi_mat4_character_sse(q, pp, yaw, ground, m);
+    memcpy(matrices + 16u * j, m, sizeof(float) * 16u * n);
+  }
+#else
+  if (space == SMG_SPACE_WORLD) {
+    for (uint32_t j = 0; j < J; ++j)
+      smgi_mat_from_c(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
+    return;
+  }
+  /* character space: the inverse of (ground position, heading) first */
+  float yaw[4];
+  smgi_q_yaw(-p->heading, yaw);
+  for (uint32_t j = 0; j < J; ++j) {
+    float q[4], v[3], r[3];
+    smgi_q_mul(yaw, wrot + 4u * j, q);
+    v[0] = wpos[3u * j] - p->ground[0];
+    v[1] = wpos[3u * j + 1u];
+    v[2] = wpos[3u * j + 2u] - p->ground[1];
+    smgi_q_rotate(yaw, v, r);
+    smgi_mat_from_c(q, r, matrices + 16u * j);
+  }
+#endif
 }

@@ -25,11 +25,6 @@
 
 #include "character_internal.h"
 
-#define RATE_MIN 0.5f
-#define RATE_MAX 2.0f
-#define SMOOTH 0.3f
-#define PHASE_LOCK 0.5f /* rate change per cycle of phase difference */
-
 static void features(const smg_graph* g, uint32_t frame, float* f) {
   const smgi_frame* fr = &g->data.frames[frame];
   f[0] = (fr->flags & SMGI_FRAME_LEFT_CONTACT) ? 1.0f : 0.0f;
@@ -54,15 +49,15 @@ static float phase_at(const smg_graph* g, const smg_character* ch,
                       uint32_t k, int upper) {
   if (!upper) {
     uint32_t entry, offset;
-    if (!smgi_q_locate(ch, k, &entry, &offset)) return -1.0f;
-    const smgi_edge* e = &g->data.lower_edges[smgi_q_at_c(ch, entry)->edge];
+    if (!smgi_q_locate(&ch->lower, g->data.lower_edges, k, &entry, &offset)) return -1.0f;
+    const smgi_edge* e = &g->data.lower_edges[smgi_q_at_c(&ch->lower, entry)->edge];
     return g->data.frames[e->first_frame + offset].phase;
   }
   const smgi_edge* ue = g->data.upper_edges;
-  uint32_t edge = ch->uedge, off = (uint32_t)ch->ut + k;
+  uint32_t edge = ch->upper.edge, off = (uint32_t)ch->upper.t + k;
   if (off >= ue[edge].frame_count) {
     off -= ue[edge].frame_count;
-    edge = ch->unext;
+    edge = ch->upper.next;
     if (off >= ue[edge].frame_count) return -1.0f;
   }
   return g->data.frames[ue[edge].first_frame + off].phase;
@@ -93,8 +88,8 @@ static int phase_speed(const smg_graph* g, const smg_character* ch,
 }
 
 void smgi_sync_update(smg_character* ch) {
-  if (ch->action == 0) {
-    ch->sync_rate = 1.0f;
+  if (ch->upper.action == 0) {
+    ch->sync.rate = 1.0f;
     return;
   }
   const smg_graph* g = ch->graph;
@@ -103,12 +98,12 @@ void smgi_sync_update(smg_character* ch) {
   float lf[SMGI_SYNC_LOWER][4], uf[SMGI_SYNC_UPPER][4];
 
   /* lower window, clipped at the end of the synchronizing range */
-  float range_end = smgi_next_constraint_arc(ch, ch->progress);
+  float range_end = smgi_next_constraint_arc(&ch->cons, ch->progress);
   uint32_t n = 0;
   for (; n < SMGI_SYNC_LOWER; ++n) {
     uint32_t entry, offset;
-    if (!smgi_q_locate(ch, n, &entry, &offset)) break;
-    const smgi_qentry* q = smgi_q_at(ch, entry);
+    if (!smgi_q_locate(&ch->lower, g->data.lower_edges, n, &entry, &offset)) break;
+    const smgi_qentry* q = smgi_q_at(&ch->lower, entry);
     const smgi_edge* e = &le[q->edge];
     float s = q->s_start +
               (q->s_end - q->s_start) * (float)offset / (float)e->frame_count;
@@ -119,11 +114,11 @@ void smgi_sync_update(smg_character* ch) {
 
   /* upper window: the current edge, then the chosen successor */
   uint32_t m = 0;
-  uint32_t edge = ch->uedge, off = (uint32_t)ch->ut;
+  uint32_t edge = ch->upper.edge, off = (uint32_t)ch->upper.t;
   for (; m < SMGI_SYNC_UPPER; ++m) {
     if (off >= ue[edge].frame_count) {
-      if (edge != ch->uedge) break;
-      edge = ch->unext;
+      if (edge != ch->upper.edge) break;
+      edge = ch->upper.next;
       off = 0;
     }
     features(g, ue[edge].first_frame + off, uf[m]);
@@ -147,11 +142,11 @@ void smgi_sync_update(smg_character* ch) {
       if (pl >= 0.0f && pu >= 0.0f) {
         float dphi = pl - pu;
         dphi -= floorf(dphi + 0.5f); /* (-0.5, 0.5] cycles */
-        rate *= 1.0f + PHASE_LOCK * dphi;
+        rate *= 1.0f + SMGI_SYNC_PHASE_LOCK * dphi;
       }
-      rate = smgi_clampf(rate, RATE_MIN, RATE_MAX);
-      ch->sync_rate += SMOOTH * (rate - ch->sync_rate);
-      ch->sync_rate = smgi_clampf(ch->sync_rate, RATE_MIN, RATE_MAX);
+      rate = smgi_clampf(rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
+      ch->sync.rate += SMGI_SYNC_SMOOTH * (rate - ch->sync.rate);
+      ch->sync.rate = smgi_clampf(ch->sync.rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
       return;
     }
   }
@@ -188,7 +183,7 @@ void smgi_sync_update(smg_character* ch) {
     }
   }
   float rate = (float)jend / (float)(n - 1u);
-  rate = smgi_clampf(rate, RATE_MIN, RATE_MAX);
-  ch->sync_rate += SMOOTH * (rate - ch->sync_rate);
-  ch->sync_rate = smgi_clampf(ch->sync_rate, RATE_MIN, RATE_MAX);
+  rate = smgi_clampf(rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
+  ch->sync.rate += SMGI_SYNC_SMOOTH * (rate - ch->sync.rate);
+  ch->sync.rate = smgi_clampf(ch->sync.rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
 }

@@ -2,12 +2,12 @@
  * test_derived.c - the tables the runtime derives at load time
  * (libsmg/runtime/graph_derived.c) against plain reference versions kept
  * here: the straightforward code the load-time builders replaced (node_turn
- * one frame and one node at a time, node_look and node_trail composing
- * smgi_xf_mul edge by edge with a sincosf each, edge_mid inverting the
- * from-node's ground frame for every edge).
+ * one frame and one node at a time, node_trail composing smgi_xf_mul edge
+ * by edge with a sincosf each, edge_mid inverting the from-node's ground
+ * frame for every edge).
  *
- * Every table must match bit for bit, except the x and z of node_look and
- * node_trail: the builder walks with a carried (cos, sin) of the heading
+ * Every table must match bit for bit, except the x and z of node_trail:
+ * the builder walks with a carried (cos, sin) of the heading
  * rotated by each edge's own instead of cosf/sinf of the accumulated
  * heading. Each hop the carried pair gains at most a few float roundings
  * (two products and a sum, the edge's own cosf/sinf) against the reference's
@@ -58,13 +58,13 @@ void smgi_graph_derived_free(smg_graph* g);
 
 typedef struct ref_tables {
   uint8_t *lower_hops, *upper_hops;
-  uint32_t *splice_first, *frame_upper, *action_first, *style_first;
+  uint32_t *splice_first, *action_first;
   uint32_t *natural, *trail_edge;
-  float *look, *trail, *trail_frames, *turn, *edge_mid;
+  float *trail, *trail_frames, *turn, *edge_mid;
   /* per trail sample: hops walked and ground distance covered (bound) */
   uint32_t* trail_hops;
   float* trail_dist;
-  uint32_t agile_style, max_lower_degree;
+  uint32_t agile_style;
 } ref_tables;
 
 static float ref_fps(const smgi_graph_data* d) {
@@ -130,34 +130,6 @@ static smgi_xform2 ref_step(const smgi_edge* E) {
   smgi_xform2 s = {E->displacement[0], E->displacement[1],
                    E->displacement[2]};
   return s;
-}
-
-/* looks that stopped after 256 edges (coverage report) */
-static unsigned g_looks_cut;
-
-static void ref_look(const smgi_graph_data* d, const uint32_t* natural,
-                     float* look) {
-  const float look_frames = SMGI_LOOK_SECONDS * ref_fps(d);
-  for (uint32_t n = 0; n < d->lower_node_count; ++n) {
-    smgi_xform2 acc = {0.0f, 0.0f, 0.0f};
-    float arc = 0.0f, frames = 0.0f;
-    uint32_t cur = n;
-    uint32_t hop;
-    for (hop = 0; hop < 256u && frames < look_frames; ++hop) {
-      uint32_t e = natural[cur];
-      if (e == SMGI_NONE) break;
-      const smgi_edge* E = &d->lower_edges[e];
-      acc = smgi_xf_mul(acc, ref_step(E));
-      arc += E->arc_length;
-      frames += (float)E->frame_count;
-      cur = E->to;
-    }
-    if (hop == 256u && frames < look_frames) g_looks_cut++;
-    look[4u * n + 0u] = acc.x;
-    look[4u * n + 1u] = acc.z;
-    look[4u * n + 2u] = acc.h;
-    look[4u * n + 3u] = arc;
-  }
 }
 
 static void ref_trail(const smgi_graph_data* d, const uint32_t* natural,
@@ -247,11 +219,8 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
   r->lower_hops = (uint8_t*)calloc((size_t)LN * S + 1u, 1);
   r->upper_hops = (uint8_t*)calloc((size_t)UN * A + 1u, 1);
   r->splice_first = (uint32_t*)calloc((size_t)F + 1u, sizeof(uint32_t));
-  r->frame_upper = (uint32_t*)calloc((size_t)F + 1u, sizeof(uint32_t));
   r->action_first = (uint32_t*)calloc((size_t)A + 1u, sizeof(uint32_t));
-  r->style_first = (uint32_t*)calloc((size_t)S + 1u, sizeof(uint32_t));
   r->natural = (uint32_t*)calloc((size_t)LN + 1u, sizeof(uint32_t));
-  r->look = (float*)calloc(4u * (size_t)LN + 1u, sizeof(float));
   r->trail = (float*)calloc(4u * TK + 1u, sizeof(float));
   r->trail_frames = (float*)calloc(TK + 1u, sizeof(float));
   r->trail_edge = (uint32_t*)calloc(TK + 1u, sizeof(uint32_t));
@@ -261,8 +230,7 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
   r->edge_mid =
       (float*)calloc(4u * (size_t)d->lower_edge_count + 1u, sizeof(float));
   assert_true(r->lower_hops && r->upper_hops && r->splice_first &&
-              r->frame_upper && r->action_first && r->style_first &&
-              r->natural && r->look && r->trail && r->trail_frames &&
+              r->action_first && r->natural && r->trail && r->trail_frames &&
               r->trail_edge && r->trail_hops && r->trail_dist && r->turn &&
               r->edge_mid);
 
@@ -275,16 +243,6 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
       r->splice_first[d->splices[i].lower_frame + 1u]++;
   for (uint32_t f = 0; f < F; ++f)
     r->splice_first[f + 1u] += r->splice_first[f];
-  for (uint32_t f = 0; f < F; ++f) {
-    r->frame_upper[f] = SMGI_NONE;
-    for (uint32_t e = 0; e < d->upper_edge_count; ++e) {
-      const smgi_edge* ue = &d->upper_edges[e];
-      if (f >= ue->first_frame && f - ue->first_frame < ue->frame_count) {
-        r->frame_upper[f] = e;
-        break;
-      }
-    }
-  }
   for (uint32_t a = 0; a < A; ++a) {
     r->action_first[a] = SMGI_NONE;
     for (uint32_t e = 0; e < d->upper_edge_count; ++e)
@@ -293,19 +251,7 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
         break;
       }
   }
-  for (uint32_t s = 0; s < S; ++s) {
-    r->style_first[s] = SMGI_NONE;
-    for (uint32_t n = 0; n < LN; ++n)
-      if (d->lower_nodes[n].label == s) {
-        r->style_first[s] = n;
-        break;
-      }
-  }
-  for (uint32_t n = 0; n < LN; ++n)
-    if (d->lower_nodes[n].edge_count > r->max_lower_degree)
-      r->max_lower_degree = d->lower_nodes[n].edge_count;
   ref_natural(d, r->natural);
-  ref_look(d, r->natural, r->look);
   ref_trail(d, r->natural, r);
   ref_turn(d, r->turn);
   ref_edge_mid(d, r->edge_mid);
@@ -314,8 +260,14 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
     double turn = 0.0, arc = 0.0;
     for (uint32_t n = 0; n < LN; ++n) {
       if (d->lower_nodes[n].label != st) continue;
-      turn += fabs((double)r->look[4u * n + 2u]);
-      arc += (double)r->look[4u * n + 3u];
+      /* heading change summed over the trail's samples, per metre */
+      const float* tr = r->trail + 4u * (size_t)n * SMGI_TRAIL_SAMPLES;
+      float h = 0.0f;
+      for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES; ++k) {
+        turn += fabs((double)smgi_wrap_angle(tr[4u * k + 2u] - h));
+        h = tr[4u * k + 2u];
+      }
+      arc += (double)tr[4u * (SMGI_TRAIL_SAMPLES - 1u) + 3u];
     }
     float mean = arc > 1e-6 ? (float)(turn / arc) : -1.0f;
     if (mean > best) {
@@ -329,11 +281,8 @@ static void ref_free(ref_tables* r) {
   free(r->lower_hops);
   free(r->upper_hops);
   free(r->splice_first);
-  free(r->frame_upper);
   free(r->action_first);
-  free(r->style_first);
   free(r->natural);
-  free(r->look);
   free(r->trail);
   free(r->trail_frames);
   free(r->trail_edge);
@@ -405,12 +354,8 @@ static void compare(const char* name, const smgi_graph_data* d,
   EXPECT_SAME("upper_hops", dv->upper_hops, r->upper_hops, (size_t)UN * A);
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
-  EXPECT_SAME("frame_upper_edge", dv->frame_upper_edge, r->frame_upper,
-              4u * (size_t)F);
   EXPECT_SAME("action_first_edge", dv->action_first_edge, r->action_first,
               4u * (size_t)A);
-  EXPECT_SAME("style_first_node", dv->style_first_node, r->style_first,
-              4u * (size_t)S);
   EXPECT_SAME("natural_next", dv->natural_next, r->natural, 4u * (size_t)LN);
   EXPECT_SAME("node_trail_frames", dv->node_trail_frames, r->trail_frames,
               4u * TK);
@@ -418,14 +363,8 @@ static void compare(const char* name, const smgi_graph_data* d,
   EXPECT_SAME("node_turn", dv->node_turn, r->turn, 8u * (size_t)LN);
   EXPECT_SAME("edge_mid", dv->edge_mid, r->edge_mid,
               16u * (size_t)d->lower_edge_count);
-  assert_int_equal(dv->max_lower_degree, r->max_lower_degree);
   assert_int_equal(dv->agile_style, r->agile_style);
   for (uint32_t n = 0; n < LN; ++n) {
-    /* the look is a prefix of the trail's walk: its last sample bounds it */
-    const size_t last = (size_t)n * K + K - 1u;
-    check_sample(name, "node_look", n, dv->node_look + 4u * (size_t)n,
-                 r->look + 4u * (size_t)n, r->trail_hops[last],
-                 r->trail_dist[last], st);
     for (uint32_t k = 0; k < K; ++k) {
       const size_t i = (size_t)n * K + k;
       check_sample(name, "node_trail", n, dv->node_trail + 4u * i,
@@ -435,7 +374,7 @@ static void compare(const char* name, const smgi_graph_data* d,
 }
 
 static void report(const char* name, const dev_stats* st) {
-  printf("%s: x/z of node_look+node_trail: %zu of %zu not bit-identical, "
+  printf("%s: x/z of node_trail: %zu of %zu not bit-identical, "
          "max deviation %.3g m (%.2g of the allowed bound); every other "
          "table bit-identical\n",
          name, st->inexact, st->checked, st->max_abs, st->max_ratio);
@@ -447,8 +386,6 @@ static void compare_builds(const char* name, const smgi_graph_data* d,
                            const smgi_derived* a, const smgi_derived* b) {
   const size_t LN = d->lower_node_count;
   const size_t TK = LN * SMGI_TRAIL_SAMPLES;
-  EXPECT_SAME("node_look (SSE2 vs plain)", a->node_look, b->node_look,
-              16u * LN);
   EXPECT_SAME("node_trail (SSE2 vs plain)", a->node_trail, b->node_trail,
               16u * TK);
   EXPECT_SAME("node_turn (SSE2 vs plain)", a->node_turn, b->node_turn,
@@ -502,8 +439,8 @@ static float rng_range(uint64_t* s, float lo, float hi) {
 
 /* Nodes and edges of one graph; `dag` keeps edges shorter than 8 frames
  * going to higher node indices (no cycle of them: the block path);
- * `short_only` makes edges 1-2 frames (at high frame rates the look then
- * stops after 256 edges). */
+ * `short_only` makes edges 1-2 frames (hundreds of them per trail sample
+ * at high frame rates). */
 static uint32_t rand_edges(uint64_t* s, smgi_node* nodes, uint32_t N,
                            smgi_edge* edges, uint32_t labels, int dag,
                            int short_only, uint32_t T) {
@@ -551,7 +488,7 @@ static void rand_graph_make(rand_graph* rg, uint64_t seed) {
   uint64_t s = seed;
   memset(rg, 0, sizeof *rg);
   rg->info.frame_rate = rates[rng_next(&s) % (sizeof rates / sizeof *rates)];
-  /* every 8th graph: 500 Hz with 1-2 frame edges, so looks stop at 256 */
+  /* every 8th graph: 500 Hz with 1-2 frame edges: long walks */
   if ((seed & 7u) == 0) rg->info.frame_rate = 500.0f;
   const uint32_t T = (uint32_t)(SMGI_TURN_SECONDS * rg->info.frame_rate + 0.5f);
   for (uint32_t f = 0; f < RG_FRAMES; ++f) {
@@ -599,7 +536,6 @@ static void test_random_graphs(void** state) {
   memset(&st, 0, sizeof st);
   const uint32_t trials = smgt_quick() ? 60u : 400u;
   unsigned cyclic = 0;
-  g_looks_cut = 0;
   for (uint32_t i = 0; i < trials; ++i) {
     char name[64];
     snprintf(name, sizeof name, "random graph %u", i);
@@ -633,10 +569,9 @@ static void test_random_graphs(void** state) {
   }
   report("random graphs", &st);
   printf("random graphs: %u of %u with a cycle of short edges (node_turn "
-         "frame by frame), %u looks cut at 256 edges\n",
-         cyclic, trials, g_looks_cut);
+         "frame by frame)\n",
+         cyclic, trials);
   assert_true(cyclic > 0 && cyclic < trials);
-  assert_true(g_looks_cut > 0);
   free(rg);
 }
 

@@ -10,7 +10,8 @@
 
 #include <cmocka.h>
 
-#include "character_internal.h"
+#include "path.h"
+#include "rmath.h"
 #include "runtime/runtime_testutil.h"
 
 #define CAP 4096

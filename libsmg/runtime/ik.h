@@ -1,0 +1,44 @@
+/*
+ * ik.h - foot cleanup (ik.c): per foot, the contact anchor and the
+ * correction the last solve applied; per leg, the joints a solve moves.
+ */
+#ifndef SMG_IK_H
+#define SMG_IK_H
+
+#include <stdint.h>
+
+#include "graph_internal.h"
+#include "smg.h"
+
+typedef struct smgi_foot {
+  uint32_t planted;    /* contact currently anchored */
+  float anchor[3];     /* world toe position at contact start */
+  float weight;        /* IK blend weight 0..1 */
+  float fix[2][4];     /* world-space hip and knee rotations the last solve
+                          added (identity when the foot was not solved): the
+                          next solve starts from them */
+} smgi_foot;
+
+typedef struct smgi_ik {
+  uint32_t enabled;
+  smgi_foot feet[2];
+  /* 2J: per leg f at f*J, the joints whose world transforms IK changes,
+   * parents first: hip, knee, ankle, then the hip's other descendants not
+   * below the ankle (leg_side[f] of them: they turn with hip or knee), then
+   * those below the ankle (leg_below[f]: the solved ankle keeps its world
+   * rotation, so they only move with it). */
+  uint32_t* leg_joints;
+  uint32_t leg_ok[2];      /* hip > 0, knee's parent hip, ankle's parent knee */
+  uint32_t leg_side[2], leg_below[2];
+} smgi_ik;
+
+/* Fill ik->leg_joints and the per-leg counts for the graph's skeleton,
+ * using `mark` (joint_count bytes) as scratch. A leg that is not a
+ * hip-knee-ankle parent chain is left without IK. */
+void smgi_ik_init_legs(smgi_ik* ik, const smg_graph* g, uint8_t* mark);
+/* Feet unplanted, with no correction to start the next solve from. */
+void smgi_ik_reset(smgi_ik* ik);
+/* Anchor feet in contact and solve their legs on the character's pose. */
+void smgi_ik_apply(smg_character* ch, float dt);
+
+#endif /* SMG_IK_H */

@@ -1,0 +1,40 @@
+/*
+ * path.h - the polyline a character follows (path.c): interleaved (x, z)
+ * points with cumulative arc lengths, evaluated by arc length and
+ * projected onto in O(1) amortized from a segment hint. The buffers are
+ * carved out of the character's block at create (character.c).
+ */
+#ifndef SMG_PATH_H
+#define SMG_PATH_H
+
+#include <stdint.h>
+
+typedef struct smgi_path {
+  float* xz;       /* 2 * capacity */
+  float* cum;      /* capacity: arc length at each point */
+  uint32_t count, capacity;
+  float length;
+} smgi_path;
+
+void smgi_path_reset(smgi_path* p);
+/* Point and tangent heading at arc length s (clamped); *seg is a hint in
+ * and the segment out. */
+void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
+                    float* z, float* heading);
+/* Nearest point search starting at segment *seg, walking while the
+ * distance shrinks (bounded steps). Returns arc length, writes *seg and the
+ * distance. */
+float smgi_path_project_local(const smgi_path* p, float x, float z,
+                              uint32_t* seg, float* out_dist);
+/* Copy `count` points to index `from`, extend the arc lengths and, if
+ * `project`, return the exact nearest point to (px, pz) on the whole path
+ * (arc length; *seg, *out_dist set) in the same pass. */
+float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
+                     uint32_t count, int project, float px, float pz,
+                     uint32_t* seg, float* out_dist);
+/* Global nearest point (O(n)). */
+float smgi_path_project_global(const smgi_path* p, float x, float z,
+                               uint32_t* seg, float* out_dist);
+int smgi_all_finite(const float* v, uint32_t n);
+
+#endif /* SMG_PATH_H */

@@ -1,0 +1,396 @@
+/*
+ * plan_search.c - the planner's sequence search (Kovar et al. 2002 path
+ * synthesis, bounded for a per-frame budget; plan_search.h says what it
+ * computes). Everything here reads the character; nothing writes it.
+ */
+#include "plan_search.h"
+
+#include <math.h>
+#include <string.h>
+
+/* atan2 for the search's heading terms: a degree-11 minimax polynomial
+ * on [0, 1] (max error about 1e-5 rad, i.e. micrometres at these
+ * weights) instead of libm's atan2f, which was a fifth of all planning
+ * instructions. (0, 0) gives 0; NaN propagates (the cost turns infinite). */
+static inline float fast_atan2(float y, float x) {
+  float ax = fabsf(x), ay = fabsf(y);
+  float mx = ax > ay ? ax : ay, mn = ax > ay ? ay : ax;
+  if (mx == 0.0f) return 0.0f;
+  float a = mn / mx, t = a * a;
+  float r = a * (0.99997726f +
+                 t * (-0.33262347f +
+                      t * (0.19354346f +
+                           t * (-0.11643287f +
+                                t * (0.05265332f + t * -0.01172120f)))));
+  if (ay > ax) r = 0.5f * SMGI_PI - r;
+  if (x < 0.0f) r = SMGI_PI - r;
+  return y < 0.0f ? -r : r;
+}
+
+/* smgi_path_eval without the call when the hint segment already holds s
+ * (almost every query of a search: samples advance a little at a time);
+ * same arithmetic, so the same result. */
+static inline void path_at(const smgi_path* p, float s, uint32_t* seg,
+                           float* x, float* z) {
+  uint32_t i = *seg;
+  if (p->count >= 2u && i + 1u < p->count && s >= p->cum[i] &&
+      s <= p->cum[i + 1u] && s <= p->length) {
+    float len = p->cum[i + 1u] - p->cum[i];
+    float u = len > 1e-9f ? (s - p->cum[i]) / len : 0.0f;
+    u = smgi_clampf(u, 0.0f, 1.0f);
+    const float* a = &p->xz[2u * i];
+    *x = a[0] + u * (a[2] - a[0]);
+    *z = a[1] + u * (a[3] - a[1]);
+    return;
+  }
+  smgi_path_eval(p, s, seg, x, z, NULL);
+}
+
+/* (x, z) = the end point moved `beyond` metres further along the path's
+ * last non-degenerate segment (unchanged for a one-point path). */
+static void extend_past_end(const smgi_path* p, float beyond, float* x,
+                            float* z) {
+  const float* e = &p->xz[2u * (p->count - 1u)];
+  uint32_t i = p->count - 1u;
+  while (i > 0u) {
+    const float* a = &p->xz[2u * (i - 1u)];
+    float dx = e[0] - a[0], dz = e[1] - a[1], l2 = dx * dx + dz * dz;
+    if (l2 > 1e-8f) {
+      float k = beyond / sqrtf(l2);
+      *x = e[0] + k * dx;
+      *z = e[1] + k * dz;
+      return;
+    }
+    --i;
+  }
+}
+
+/* Where to stay when there is nothing (more) to follow. */
+static void end_target(const smg_character* ch, float* x, float* z) {
+  const smgi_path* p = &ch->path;
+  if (p->count > 0) {
+    *x = p->xz[2u * (p->count - 1u)];
+    *z = p->xz[2u * (p->count - 1u) + 1u];
+  } else {
+    *x = ch->anchor[0];
+    *z = ch->anchor[1];
+  }
+}
+
+static float style_penalty(const smg_character* ch, const smgi_edge* e,
+                           uint32_t desired) {
+  const smg_graph* g = ch->graph;
+  uint32_t S = g->data.style_count;
+  if (desired >= S || e->label == desired) return 0.0f;
+  const uint8_t* hops = smgi_derived_of(g)->lower_hops;
+  if (hops[(size_t)e->from * S + desired] == SMGI_HOPS_UNREACHABLE)
+    return 0.0f; /* cannot get there from here: ignore */
+  uint8_t h = hops[(size_t)e->to * S + desired];
+  if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
+  return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
+}
+
+/* Distance of a planned ground position from the path point at s. */
+float smgi_plan_start_error(const smg_character* ch, smgi_xform2 W, float s,
+                         uint32_t seg) {
+  if (ch->path.count < 2u) return 0.0f;
+  float x, z;
+  smgi_path_eval(&ch->path, s, &seg, &x, &z, NULL);
+  return sqrtf((W.x - x) * (W.x - x) + (W.z - z) * (W.z - z));
+}
+
+/* An edge that spans arc lengths [s0, s1] is in style if its label is
+ * wanted at either end: transition edges cross the point where the style
+ * changes, and an edge ending exactly on a transition point is fine. */
+static float edge_style_penalty(const smg_character* ch, const smgi_edge* e,
+                                float s0, float s1) {
+  uint32_t a = smgi_style_at(&ch->cons, s0), b = smgi_style_at(&ch->cons, s1);
+  if (e->label == a || e->label == b) return 0.0f;
+  return style_penalty(ch, e, b);
+}
+
+/* Lost (far off the path): the wanted style yields to the graph's most
+ * agile one until the path is rejoined - a style that cannot turn (CMU
+ * runs) would otherwise carry the character away for good. */
+static float lost_style_penalty(const smg_character* ch,
+                                const smgi_edge* e) {
+  return style_penalty(ch, e, smgi_derived_of(ch->graph)->agile_style);
+}
+
+/* Error of one root sample at (x, z) facing h, after arc u, having moved
+ * (mx, mz) since the previous sample over w frames. */
+static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
+                         float u, float mx, float mz, float w,
+                         uint32_t* seg, float* dist) {
+  const smgi_path* p = &c->ch->path;
+  float m2 = mx * mx + mz * mz;
+  if (!c->following) {
+    float dx = x - c->tx, dz = z - c->tz;
+    float d = sqrtf(dx * dx + dz * dz);
+    *dist = d;
+    /* at the end prefer motion that travels least and, there being no
+     * idle clips, turns back towards the end point (circles around it
+     * instead of walking off) */
+    float sc = d + SMGI_END_SPEED_WEIGHT * sqrtf(m2) * c->ch->fps /
+                       (w > 1.0f ? w : 1.0f);
+    if (d > SMGI_END_EPS)
+      sc += SMGI_HEADING_WEIGHT * fabsf(smgi_wrap_angle(h - fast_atan2(-dx, -dz)));
+    return sc;
+  }
+  float sr = c->s0 + u, rx, rz;
+  path_at(p, sr, seg, &rx, &rz);
+  /* Past the end the path goes on along its last direction. Clamping the
+   * target to the end point made any sequence that carries on beyond it
+   * look "off the path", so near the end a fast style (a run covering 6 m
+   * in the look-ahead) yielded to walking while right on the path. Coming
+   * to rest at the end is the end phase's job, not the follower's. */
+  if (sr > p->length) extend_past_end(p, sr - p->length, &rx, &rz);
+  float dx = x - rx, dz = z - rz;
+  float d = sqrtf(dx * dx + dz * dz);
+  *dist = d;
+  /* lost (far off the path): options differ little in distance (all move
+   * away for the next second or two) but much in where they face; the
+   * way back is towards the path near where the character left it */
+  float sc = c->lost ? SMGI_LOST_DISTANCE_WEIGHT * d : d;
+  if (sr < p->length) {
+    float qx, qz;
+    uint32_t sg = *seg;
+    path_at(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
+    float ax = qx - x, az = qz - z;
+    if (ax * ax + az * az > 1e-4f)
+      sc += (c->lost ? SMGI_HEADING_WEIGHT_LOST : SMGI_HEADING_WEIGHT) *
+            fabsf(smgi_wrap_angle(h - fast_atan2(ax, az)));
+  }
+  if (m2 > 1e-4f) sc += SMGI_TRAVEL_WEIGHT * fabsf(smgi_wrap_angle(fast_atan2(mx, mz) - h));
+  return sc;
+}
+
+/* Style penalty of an edge at arc lengths [a, b] of the path. */
+static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b) {
+  if (!c->following) return 10.0f * style_penalty(c->ch, e, c->style0);
+  if (c->lost || c->yield) return lost_style_penalty(c->ch, e);
+  /* s0 <= a <= b: before the next constraint the wanted style is the one
+   * at s0 (what edge_style_penalty would find with two scans) */
+  if (b < c->style_end)
+    return e->label == c->style0 ? 0.0f : style_penalty(c->ch, e, c->style0);
+  return edge_style_penalty(c->ch, e, a, b);
+}
+
+/* Append edge `ei` to the sequence in `in`: root samples at the edge's
+ * middle (edges of 4+ frames) and end, each weighted by the frames it
+ * stands for inside the window. *maxd gets the largest sample distance. */
+void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw,
+                     uint32_t ei, float pen_scale, float bound,
+                     smgi_seq_state* out, float* maxd) {
+  const smg_graph* g = c->ch->graph;
+  const smgi_edge* e = &g->data.lower_edges[ei];
+  /* one rotation (cw, sw = cos, sin of in->W.h, computed once by the
+   * caller for all of a state's children) places both the edge's end and
+   * its mid sample */
+  {
+    const float* dp = e->displacement;
+    out->W.x = in->W.x + (cw * dp[0] + sw * dp[1]);
+    out->W.z = in->W.z + (-sw * dp[0] + cw * dp[1]);
+    out->W.h = smgi_wrap_angle(in->W.h + dp[2]);
+  }
+  out->node = e->to;
+  out->seg = in->seg;
+  out->cost = in->cost;
+  const uint32_t fc = e->frame_count;
+  uint32_t ks[2];
+  uint32_t nk = 0;
+  if (fc >= 4u) ks[nk++] = fc / 2u;
+  ks[nk++] = fc;
+  float px = in->W.x, pz = in->W.z, kprev = 0.0f, md = 0.0f;
+  float room = c->T - in->f; /* frames left in the window */
+  for (uint32_t i = 0; i < nk; ++i) {
+    float k = (float)ks[i];
+    float w = (k < room ? k : room) - (kprev < room ? kprev : room);
+    if (w <= 0.0f) break;
+    float x, z, h;
+    if (ks[i] == fc) {
+      x = out->W.x;
+      z = out->W.z;
+      h = out->W.h;
+    } else {
+      /* the mid sample relative to the edge's start (derived edge_mid) */
+      const float* r = smgi_derived_of(g)->edge_mid + 4u * (size_t)ei;
+      x = in->W.x + (cw * r[0] + sw * r[1]);
+      z = in->W.z + (-sw * r[0] + cw * r[1]);
+      h = in->W.h + r[2];
+    }
+    float d;
+    float sc = sample_cost(c, x, z, h, in->u + e->arc_length * k / (float)fc,
+                           x - px, z - pz, k - kprev, &out->seg, &d);
+    out->cost += sc * w / c->T;
+    if (d > md) md = d;
+    if (out->cost + in->pen >= bound) {
+      /* already no better than the bound: costs and penalties only grow
+       * (every term is >= 0), so the caller prunes it either way */
+      *maxd = md;
+      out->cost = INFINITY;
+      out->pen = in->pen;
+      out->u = in->u + e->arc_length;
+      out->f = in->f + (float)fc;
+      return;
+    }
+    px = x;
+    pz = z;
+    kprev = k;
+  }
+  *maxd = md;
+  out->u = in->u + e->arc_length;
+  out->f = in->f + (float)fc;
+  float pe = pen_scale * seq_pen(c, e, c->s0 + in->u, c->s0 + out->u);
+  out->pen = in->pen > pe ? in->pen : pe;
+  if (!isfinite(out->cost)) out->cost = INFINITY;
+}
+
+/* Value of a finished (or budget-cut) sequence: an unfinished one is
+ * extrapolated at its mean so far. */
+static float seq_value(const smgi_seq_ctx* c, const smgi_seq_state* st) {
+  float v = st->cost;
+  if (st->f < c->T && st->f > 0.0f) v *= c->T / st->f;
+  return v + st->pen;
+}
+
+/* Value of a sequence that stops choosing at `st`: the node's natural
+ * continuation (derived node_trail, a few samples looked up, no edge
+ * walk) stands for the rest of the window, style included. */
+float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
+  const smg_graph* g = c->ch->graph;
+  const smgi_derived* dv = smgi_derived_of(g);
+  const float* tr = dv->node_trail + 4u * (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const float* tf = dv->node_trail_frames + (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const uint32_t* te = dv->node_trail_edge + (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const float f0 = st.f, u0 = st.u;
+  float pf = 0.0f, pu = 0.0f, px = st.W.x, pz = st.W.z;
+  /* beyond the window: can the motion turn towards the path soon? The
+   * heading still missing once the node's best reachable turn (derived
+   * node_turn) is spent costs like a heading error */
+  if (c->following) {
+    const smgi_path* p = &c->ch->path;
+    float sr = c->s0 + st.u, rx, rz, qx, qz;
+    uint32_t sg = st.seg;
+    path_at(p, sr, &sg, &rx, &rz);
+    float d = sqrtf((rx - st.W.x) * (rx - st.W.x) + (rz - st.W.z) * (rz - st.W.z));
+    path_at(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
+    float ax = qx - st.W.x, az = qz - st.W.z;
+    if (ax * ax + az * az > 1e-4f) {
+      float need = smgi_wrap_angle(fast_atan2(ax, az) - st.W.h);
+      const float* cap = dv->node_turn + 2u * st.node;
+      float rest = fabsf(need) - (need > 0.0f ? cap[0] : cap[1]);
+      if (rest > 0.0f) st.pen += SMGI_TURN_WEIGHT * rest;
+    }
+  }
+  /* the value is at least cost + pen (an unfinished window only scales
+   * the cost up): once that reaches the bound the leaf cannot win */
+  if (st.cost + st.pen >= bound) return INFINITY;
+  for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES && st.f < c->T; ++k) {
+    float fk = tf[k];
+    if (fk <= pf) break; /* the continuation ended */
+    float room = c->T - f0;
+    float w = (fk < room ? fk : room) - pf;
+    smgi_xform2 lk = {tr[4u * k], tr[4u * k + 1u], tr[4u * k + 2u]};
+    smgi_xform2 end = smgi_xf_mul(st.W, lk);
+    float d;
+    float sc = sample_cost(c, end.x, end.z, end.h, u0 + tr[4u * k + 3u],
+                           end.x - px, end.z - pz, fk - pf, &st.seg, &d);
+    st.cost += sc * w / c->T;
+    st.f = f0 + (fk < room ? fk : room);
+    if (te[k] != SMGI_NONE) {
+      const smgi_edge* e = &g->data.lower_edges[te[k]];
+      float pe = 0.5f * seq_pen(c, e, c->s0 + u0 + pu,
+                                c->s0 + u0 + tr[4u * k + 3u]);
+      if (pe > st.pen) st.pen = pe;
+    }
+    if (st.cost + st.pen >= bound) return INFINITY;
+    pf = fk;
+    pu = tr[4u * k + 3u];
+    px = end.x;
+    pz = end.z;
+  }
+  float v = seq_value(c, &st);
+  c->leaf_err = v - st.pen;
+  return v;
+}
+
+/* Depth-first branch and bound below `st`; *best is the bound. Branches
+ * at the next `branches` nodes with several exits (the early choices
+ * matter most; a node of one exit is no choice), then follows the natural
+ * continuation to the end of the window (smgi_seq_leaf values what is left
+ * when the graph or the budget ends first). */
+void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
+                    uint32_t depth, float* best) {
+  const smg_graph* g = c->ch->graph;
+  const smgi_derived* dv = smgi_derived_of(g);
+  for (uint32_t d = 0; d < SMGI_SEQ_MAX_DEPTH && depth < SMGI_SEQ_PATH_CAP; ++d) {
+    const smgi_node* n = &g->data.lower_nodes[st.node];
+    if (st.f >= c->T || n->edge_count == 0 || c->budget == 0) break;
+    uint32_t nat = dv->natural_next[st.node];
+    if (n->edge_count > 1u) {
+      if (branches == 0) break;
+      /* children cheapest first: good bounds early prune the most */
+      smgi_seq_state kids[SMGI_SEQ_MAX_KIDS];
+      uint32_t kid_edge[SMGI_SEQ_MAX_KIDS], nk = 0;
+      uint32_t cnt = n->edge_count < SMGI_SEQ_MAX_KIDS ? n->edge_count : SMGI_SEQ_MAX_KIDS;
+      const float cw = cosf(st.W.h), sw = sinf(st.W.h);
+      for (uint32_t k = 0; k < cnt && c->budget > 0; ++k) {
+        uint32_t ei = n->first_edge + k;
+        smgi_seq_state nx;
+        float md;
+        c->budget--;
+        smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
+        if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
+        uint32_t i = nk++;
+        while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >
+                            nx.cost + nx.pen) {
+          kids[i] = kids[i - 1u];
+          kid_edge[i] = kid_edge[i - 1u];
+          --i;
+        }
+        kids[i] = nx;
+        kid_edge[i] = ei;
+      }
+      for (uint32_t i = 0; i < nk; ++i) {
+        if (kids[i].cost + kids[i].pen >= *best) break;
+        c->path[depth] = kid_edge[i];
+        smgi_seq_dfs(c, kids[i], branches - 1u, depth + 1u, best);
+      }
+      (void)nat;
+      return;
+    }
+    /* a single exit: no choice */
+    smgi_seq_state nx;
+    float md;
+    c->budget--;
+    smgi_seq_step(c, &st, cosf(st.W.h), sinf(st.W.h), n->first_edge, 0.5f,
+             *best, &nx, &md);
+    st = nx;
+    c->path[depth++] = n->first_edge;
+    if (st.cost + st.pen >= *best) return;
+  }
+  float v = smgi_seq_leaf(c, st, *best);
+  if (v < *best) {
+    *best = v;
+    c->best_err = c->leaf_err;
+    memcpy(c->best_path, c->path, sizeof(uint32_t) * depth);
+    c->best_len = depth;
+  }
+}
+
+void smgi_seq_init(smgi_seq_ctx* c, const smg_character* ch, smgi_xform2 W,
+                     float s, uint32_t seg) {
+  c->ch = ch;
+  c->s0 = s;
+  c->T = SMGI_SEQ_SECONDS * ch->fps;
+  c->following = ch->path.count >= 2u && s < ch->path.length - SMGI_END_EPS;
+  c->lost = c->following && smgi_plan_start_error(ch, W, s, seg) > SMGI_LOST_DISTANCE;
+  c->yield = 0;
+  c->leaf_err = c->best_err = 0.0f;
+  end_target(ch, &c->tx, &c->tz);
+  c->style0 = smgi_style_at(&ch->cons, s);
+  c->style_end = smgi_next_constraint_arc(&ch->cons, s);
+  c->budget = SMGI_SEQ_BUDGET;
+}
+

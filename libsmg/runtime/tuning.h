@@ -1,0 +1,103 @@
+/*
+ * tuning.h - every tuning constant of the runtime in one place, grouped by
+ * the stage that uses it. Distances are metres, times seconds, angles
+ * radians, unless a name says otherwise. None of these are user settings:
+ * what a user may change per character is in smg_character_desc (smg.h),
+ * whose defaults are settled in one function, resolve_desc (character.c),
+ * from the SMGI_DEFAULT_* values below.
+ */
+#ifndef SMG_TUNING_H
+#define SMG_TUNING_H
+
+/* ---- character defaults and limits (character.c, resolve_desc) ---- */
+/* 512 points (6 KB) keep a default character within 16 KiB in all; a
+ * mouse-drawn path resampled every few centimetres fits, and longer paths
+ * set path_capacity (12 bytes per point). */
+#define SMGI_DEFAULT_PATH_CAPACITY 512u
+#define SMGI_DEFAULT_CONSTRAINT_CAPACITY 32u
+#define SMGI_MAX_PATH_CAPACITY (1u << 26)
+#define SMGI_MAX_CONSTRAINT_CAPACITY (1u << 16)
+#define SMGI_DEFAULT_HORIZON 2.0f     /* seconds planned ahead */
+#define SMGI_MAX_HORIZON 30.0f
+#define SMGI_DEFAULT_THRESHOLD 0.25f  /* the paper's distance error bound */
+#define SMGI_DEFAULT_WINDOW 0.25f     /* crossfade when the blob has none */
+
+/* ---- path queries (path.c) ---- */
+#define SMGI_PATH_WALK_LIMIT 4u      /* segments walked from a hint before
+                                        the galloping search */
+#define SMGI_PATH_PROJECT_LIMIT 256u /* descent steps of a local projection */
+#define SMGI_PATH_PROJECT_TIE 0.02f  /* metres: a later pass of the path
+                                        must be nearer by this to win */
+
+/* ---- lower-body queue (lower.h) ---- */
+#define SMGI_QUEUE_CAP 64u /* committed + planned lower edges (power of 2) */
+
+/* ---- planner (planner.c: ranking, backtracking, committing) ---- */
+#define SMGI_MAX_CANDIDATES 64u  /* out-edges ranked per planning step */
+#define SMGI_PLAN_BUDGET 256u    /* edge evaluations per step (~25 us at
+                                    most) beyond what the step needs */
+#define SMGI_MAX_RANK 3u         /* backtracking tries per node */
+#define SMGI_MAX_BACKTRACKS 8u   /* backtracks before accepting the best */
+#define SMGI_END_EPS 0.3f        /* metres before the path's end that count
+                                    as there (nothing more to follow) */
+#define SMGI_YIELD_ERROR 0.8f    /* mean sequence error beyond which the
+                                    wanted style yields to the agile one */
+#define SMGI_SEQ_COMMIT_FRAMES 12.0f /* frames of the best sequence
+                                        committed at once */
+
+/* ---- sequence search (plan_search.c) ---- */
+#define SMGI_SEQ_SECONDS 2.0f    /* motion a candidate sequence covers */
+#define SMGI_SEQ_BUDGET 256u     /* edge evaluations per ranking */
+#define SMGI_SEQ_BRANCHES 6u     /* choices searched below a candidate */
+#define SMGI_SEQ_MAX_DEPTH 48u   /* edges followed without a choice */
+#define SMGI_SEQ_MAX_KIDS 8u     /* out-edges tried at one branch */
+#define SMGI_SEQ_PATH_CAP 64u    /* edges of one sequence */
+#define SMGI_HEADING_WEIGHT 0.4f /* metres of error per radian */
+#define SMGI_STYLE_WEIGHT 3.0f   /* metres of penalty per hop to the wanted
+                                    style: style constraints dominate path
+                                    error */
+#define SMGI_END_SPEED_WEIGHT 0.5f /* at the end prefer motion that travels
+                                      less (metres per m/s) */
+#define SMGI_LOST_DISTANCE 1.5f  /* off the path by more: "lost" */
+#define SMGI_HEADING_WEIGHT_LOST 2.0f   /* metres per radian when lost */
+#define SMGI_LOST_DISTANCE_WEIGHT 0.25f /* and distance counts less */
+#define SMGI_TRAVEL_WEIGHT 0.3f  /* metres per radian of travel vs facing */
+#define SMGI_PURSUIT_M 1.0f      /* heading aims this far ahead on the path */
+#define SMGI_TURN_WEIGHT 1.0f    /* metres per radian of turn out of reach */
+
+/* ---- derived tables (graph_derived.c) ---- */
+#define SMGI_TRAIL_SAMPLES 4u    /* samples of a node's natural future */
+#define SMGI_TRAIL_STEP_SECONDS 0.5f
+#define SMGI_TURN_SECONDS 3.0f   /* horizon of node_turn */
+
+/* ---- progress along the path (playback.c) ---- */
+#define SMGI_END_NEAR 1.0f /* metres from the last point that count as
+                              arrived */
+
+/* ---- upper body (upper.c) ---- */
+#define SMGI_SPLICE_WINDOW 20u   /* lower frames searched for a splice */
+#define SMGI_SPLICE_LEAD 0.3f    /* metres before the point to start looking */
+#define SMGI_FORCE_DISTANCE 1.0f /* metres past the point before forcing */
+#define SMGI_FORCE_SECONDS 1.0f  /* or seconds of waiting (no progress) */
+
+/* ---- synchronization (sync.c) ---- */
+#define SMGI_SYNC_LOWER 8u     /* DTW window, lower frames */
+#define SMGI_SYNC_UPPER 16u    /* DTW window, upper frames */
+#define SMGI_SYNC_RATE_MIN 0.5f
+#define SMGI_SYNC_RATE_MAX 2.0f
+#define SMGI_SYNC_SMOOTH 0.3f  /* rate follows its target by this per frame */
+#define SMGI_SYNC_PHASE_LOCK 0.5f /* rate change per cycle of phase error */
+
+/* ---- pose (pose.c) ---- */
+#define SMGI_POSE_STACK_JOINTS 64u /* pose scratch on the stack up to here
+                                      (1 KiB) */
+
+/* ---- foot IK (ik.c) ---- */
+#define SMGI_IK_BLEND 0.1f      /* seconds to blend a foot in or out */
+#define SMGI_IK_ITERATIONS 8u   /* CCD sweeps at most */
+#define SMGI_IK_RELEASE 0.35f   /* anchor drift, in leg lengths, that lets
+                                   a contact go */
+#define SMGI_IK_TOLERANCE 2e-3f /* metres beyond the closest the leg can
+                                   reach */
+
+#endif /* SMG_TUNING_H */
