@@ -16,6 +16,7 @@ libcglm-dev       # C math used by runtime and baker (header-only)
 libassimp-dev     # baker: glTF/FBX import (offline only, never the runtime)
 libcmocka-dev     # unit tests
 valgrind          # make test-valgrind, fuzz smoke under valgrind
+abigail-tools     # make test-abi: abidw/abidiff against tests/abi/libsmg.abi
 libsdl2-dev       # demo: window, input, GL context
 libglm-dev        # demo (C++ side)
 libimgui-dev      # demo UI
