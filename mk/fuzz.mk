@@ -83,6 +83,7 @@ fuzz-%: $(BUILD)/libfuzzer/fuzz_% $(BUILD)/fuzz/fuzz_%
 	$(BUILD)/fuzz/fuzz_$* --write-seed $(BUILD)/libfuzzer/corpus-$*/seed
 	$(if $(call fuzz_inputs,$*),cp $(call fuzz_inputs,$*) $(BUILD)/libfuzzer/corpus-$*/)
 	$(FUZZ_LSAN_$*) $(BUILD)/libfuzzer/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	  -artifact_prefix=$(BUILD)/libfuzzer/$*- \
 	  $(if $(FUZZ_MAX_LEN_$*),-max_len=$(FUZZ_MAX_LEN_$*)) $(FUZZ_ARGS) $(BUILD)/libfuzzer/corpus-$*
 
 # keep the libFuzzer binary between runs (it is an intermediate of fuzz-%)
