@@ -171,7 +171,10 @@ typedef struct smg_bake_result {
  * byte-identical blob. */
 smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out);
 
-/* Write result->blob to `path` (atomically: temp file + rename). */
+/* Write result->blob to `path` atomically: into a fresh hidden temporary
+ * file in the same directory (.NAME.XXXXXX), flushed to disk, then renamed
+ * over `path`. A failed or interrupted write never leaves a partial file
+ * at `path`: the old file, if any, stays as it was. */
 smg_result smg_bake_write_file(const smg_bake_result* result,
                                const char* path, char* error,
                                size_t error_size);
