@@ -8,7 +8,7 @@
 #   make test-demo         headless smoke test (part of `make test`)
 #   make demo-pictures     regenerate docs/img/demo-*.png from the CMU set
 
-SMG_SHARED ?= $(abspath ../shared)
+SMG_SHARED ?= ../shared
 DEMO_SRC := $(sort $(wildcard demo/*.cpp))
 DEMO_OBJ := $(DEMO_SRC:%.cpp=$(BUILD)/obj/%.o)
 DEMO_BIN := $(BUILD)/smg-demo
