@@ -61,7 +61,7 @@ bench: all
 clean:
 	rm -rf $(BUILD)
 
-# Installs every Debian package the project needs (as root), else prints the
-# exact command and fails.
+# Installs every Debian package the project needs (as root, or through sudo
+# when not root), else prints the exact command and fails.
 deps:
 	@sh tools/deps.sh

@@ -23,8 +23,13 @@
 #include <cstring>
 #include <string>
 
+#include <unistd.h>
+
+// The default graph's file name (mk/demo.mk passes the one it bakes); no
+// directory is compiled in, so the binary works wherever the tree or the
+// binary is moved.
 #ifndef SMG_DEMO_DEFAULT_GRAPH
-#define SMG_DEMO_DEFAULT_GRAPH "build/default.smg"
+#define SMG_DEMO_DEFAULT_GRAPH "default.smg"
 #endif
 
 using namespace demo_gl;
@@ -45,6 +50,30 @@ int App::viewport_height() const {
 
 namespace {
 
+bool file_exists(const std::string& path) {
+  return access(path.c_str(), R_OK) == 0;
+}
+
+// The default graph: beside the executable (build/ holds both), else in
+// build/ under the working directory (the repository root). When neither
+// exists, the path beside the executable, for the error message.
+const std::string& default_graph() {
+  static std::string path;
+  if (!path.empty()) return path;
+  char exe[4096];
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  std::string beside = SMG_DEMO_DEFAULT_GRAPH;
+  if (n > 0) {
+    exe[n] = '\0';
+    std::string dir(exe);
+    size_t slash = dir.rfind('/');
+    if (slash != std::string::npos) beside = dir.substr(0, slash + 1) + SMG_DEMO_DEFAULT_GRAPH;
+  }
+  std::string in_build = std::string("build/") + SMG_DEMO_DEFAULT_GRAPH;
+  path = file_exists(beside) || !file_exists(in_build) ? beside : in_build;
+  return path;
+}
+
 void usage(FILE* f) {
   std::fprintf(f,
                "usage: smg-demo [options]\n"
@@ -57,12 +86,12 @@ void usage(FILE* f) {
                "  --dt SECONDS        fixed simulation step (default 1/60)\n"
                "  --no-hud            hide the ImGui panel\n"
                "  --help\n",
-               SMG_DEMO_DEFAULT_GRAPH);
+               default_graph().c_str());
 }
 
 // Returns 0 to continue, else an exit code (2 for usage errors).
 int parse_options(int argc, char** argv, Options* o) {
-  o->graph = SMG_DEMO_DEFAULT_GRAPH;
+  o->graph = default_graph();
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto value = [&](const char* what) -> const char* {
@@ -385,7 +414,7 @@ int main(int argc, char** argv) {
   // Load the data before opening a window: a bad file should not flash one.
   if (!app.world.load(app.options.graph, &error)) {
     std::fprintf(stderr, "smg-demo: %s\n", error.c_str());
-    if (app.options.graph == SMG_DEMO_DEFAULT_GRAPH)
+    if (app.options.graph == default_graph())
       std::fprintf(stderr, "smg-demo: build the default graph with `make`, or pass --graph FILE\n");
     return 1;
   }

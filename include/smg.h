@@ -287,7 +287,12 @@ SMG_API smg_result smg_character_memory_size(const smg_graph* graph,
                                              const smg_character_desc* desc,
                                              size_t* out_bytes);
 
-/* --- The path: a polyline on the ground, given as interleaved (x, z). --- */
+/* --- The path: a polyline on the ground, given as interleaved (x, z). ---
+ * Ground coordinates (path points, the start position) must be finite and
+ * smaller than SMG_MAX_COORDINATE in magnitude (beyond 2^20 m a float's
+ * spacing exceeds 6 cm and lengths lose their meaning); others give
+ * SMG_ERROR_INVALID_ARGUMENT. */
+#define SMG_MAX_COORDINATE 1048576.0f
 
 /* Replace the path. The character keeps its committed motion and rejoins
  * the new path from where it is (distance along the new path restarts at

@@ -18,7 +18,10 @@
  *
  * Conventions are smg.h's: descriptor structs are zero-initialised, the
  * caller sets struct_size and only the fields it cares about (zero = the
- * documented default); every call returns an smg_result; on failure a
+ * documented default); struct_size may be that of an older, smaller
+ * version of the struct (all clip descs of one array share one size; an
+ * all-zero options struct means defaults); every call returns an
+ * smg_result; on failure a
  * one-line message naming the file, line (when there is one) and problem
  * is written to the result's `error` buffer.
  *
@@ -188,7 +191,10 @@ typedef struct smg_bake_result {
  * byte-identical blob. */
 smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out);
 
-/* Write result->blob to `path` (atomically: temp file + rename). */
+/* Write result->blob to `path` atomically: into a fresh hidden temporary
+ * file in the same directory (.NAME.XXXXXX), flushed to disk, then renamed
+ * over `path`. A failed or interrupted write never leaves a partial file
+ * at `path`: the old file, if any, stays as it was. */
 smg_result smg_bake_write_file(const smg_bake_result* result,
                                const char* path, char* error,
                                size_t error_size);

@@ -13,7 +13,7 @@
 #   make test-demo         headless smoke test (part of `make test`)
 #   make demo-pictures     regenerate docs/img/demo-*.png from the CMU set
 
-SMG_SHARED ?= $(abspath ../shared)
+SMG_SHARED ?= ../shared
 DEMO_SRC := $(sort $(wildcard demo/*.cpp))
 DEMO_OBJ := $(DEMO_SRC:%.cpp=$(BUILD)/obj/%.o)
 DEMO_BIN := $(BUILD)/smg-demo
@@ -42,7 +42,7 @@ DEMO_SDL_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags sdl2 2>
 DEMO_SDL_LIBS := $(shell pkg-config --libs sdl2 2>/dev/null || echo -lSDL2)
 DEMO_CXXFLAGS := -std=c++17 -Wall -Wextra -Werror $(OPT) -Iinclude $(DEMO_SDL_CFLAGS) \
   -isystem $(DEMO_IMGUI_INC) -isystem $(DEMO_IMGUI_INC)/backends -isystem /usr/include/stb \
-  -DSMG_DEMO_DEFAULT_GRAPH='"$(abspath $(DEMO_DEFAULT_BLOB))"'
+  -DSMG_DEMO_DEFAULT_GRAPH='"$(notdir $(DEMO_DEFAULT_BLOB))"'
 DEMO_LDLIBS := -limgui -lstb $(DEMO_SDL_LIBS) -ldl -lm
 
 # Xvfb with Mesa's software rasteriser: deterministic pictures, no GPU.

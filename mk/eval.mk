@@ -11,7 +11,7 @@
 # tools/eval/*.c except the driver form libsmg_eval.a (SVG plotting and the
 # metrics), which the unit tests in tests/eval/ link as well.
 
-SMG_SHARED ?= $(abspath ../shared)
+SMG_SHARED ?= ../shared
 
 EVAL_MAIN_SRC := tools/eval/smg_eval.c
 EVAL_LIB_SRC := $(filter-out $(EVAL_MAIN_SRC),$(sort $(wildcard tools/eval/*.c)))
@@ -43,7 +43,7 @@ $(SMG_EVAL): $(EVAL_MAIN_SRC) $(LIBSMG_EVAL_A) $(LIBSMG_A) $(LIBSMG_BAKE_A) $(EV
 # over the generic tests/%.c rule in mk/tests.mk for exactly these binaries.
 $(EVAL_TEST_BIN): $(BUILD)/tests/eval/%: tests/eval/%.c $(LIBSMG_EVAL_A) $(LIBSMG_A) $(LIBSMG_BAKE_A) $(EVAL_HDR) $(wildcard tests/*.h)
 	@mkdir -p $(dir $@)
-	$(CC) $(EVAL_CFLAGS) -Itests -DSMG_SHARED_DIR='"$(SMG_SHARED)"' -DSMG_BUILD_DIR='"$(abspath $(BUILD))"' $< -o $@ $(LIBSMG_EVAL_A) $(LIBSMG_BAKE_A) $(LIBSMG_A) -lcmocka $(BAKE_LDLIBS) -lpthread -lm
+	$(CC) $(EVAL_CFLAGS) -Itests -DSMG_SHARED_DIR='"$(SMG_SHARED)"' -DSMG_BUILD_DIR='"$(BUILD)"' $< -o $@ $(LIBSMG_EVAL_A) $(LIBSMG_BAKE_A) $(LIBSMG_A) -lcmocka $(BAKE_LDLIBS) -lpthread -lm
 
 .PHONY: eval test-eval
 eval: $(SMG_EVAL)

@@ -24,7 +24,7 @@ $(SMG_SYNTH): tools/smg_synth.c $(LIBSMG_A) include/smg.h
 # and also measures build/default.smg when it exists.
 $(BENCH_RUNTIME): bench/bench_runtime.c $(LIBSMG_A) $(LIB_HDR) tests/fixture_graph.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_TOOL) -O2 -Itests -DSMG_BUILD_DIR='"$(abspath $(BUILD))"' $< -o $@ $(LIBSMG_A) -lpthread $(LDLIBS_M)
+	$(CC) $(CFLAGS_TOOL) -O2 -Itests -DSMG_BUILD_DIR='"$(BUILD)"' $< -o $@ $(LIBSMG_A) -lpthread $(LDLIBS_M)
 
 .PHONY: bench-runtime synth-example
 bench-runtime: $(BENCH_RUNTIME)

@@ -12,7 +12,9 @@
 # Not part of `make test` (slower, rebuilds everything):
 #   make sanitize  unit tests built and run with -fsanitize=address,undefined
 
-SMG_SHARED ?= $(abspath ../shared)
+# Relative paths (no machine paths compiled in): make runs the tests from
+# the repository root.
+SMG_SHARED ?= ../shared
 TEST_SRC := $(sort $(wildcard tests/*/test_*.c))
 TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 # the baker library uses the blob writer in libsmg.a: list it first
@@ -25,7 +27,7 @@ ALL_TARGETS +=
 
 $(BUILD)/tests/%: tests/%.c $(TEST_LIBS) $(LIB_HDR) $(wildcard tests/*.h tests/*/*.h)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_TOOL) -Itests -DSMG_SHARED_DIR='"$(SMG_SHARED)"' -DSMG_BUILD_DIR='"$(abspath $(BUILD))"' $< -o $@ $(TEST_LIBS) $(TEST_LDLIBS)
+	$(CC) $(CFLAGS_TOOL) -Itests -DSMG_SHARED_DIR='"$(SMG_SHARED)"' -DSMG_BUILD_DIR='"$(BUILD)"' $< -o $@ $(TEST_LIBS) $(TEST_LDLIBS)
 
 .PHONY: test-unit test-valgrind tests-build test-symbols test-header test-install sanitize
 tests-build: $(TEST_BIN)

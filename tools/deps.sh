@@ -1,9 +1,10 @@
 #!/bin/sh
 # tools/deps.sh - install every Debian package libsmg needs (`make deps`).
 #
-# As root: apt-get update + install whatever is missing (quiet, idempotent:
-# nothing is downloaded when everything is already there). Not root: print
-# the exact command to run and exit 1.
+# Installs whatever is missing (apt-get update + install; quiet, idempotent:
+# nothing is downloaded when everything is already there): directly as root
+# (a fresh container has no sudo), through sudo otherwise. Not root and no
+# sudo: print the exact command to run and exit 1.
 #
 # THE package list: add a line here when a part of the project needs a new
 # package (and say which part, after the #).
@@ -15,6 +16,7 @@ libcglm-dev       # C math used by runtime and baker (header-only)
 libassimp-dev     # baker: glTF/FBX import (offline only, never the runtime)
 libcmocka-dev     # unit tests
 valgrind          # make test-valgrind, fuzz smoke under valgrind
+abigail-tools     # make test-abi: abidw/abidiff against tests/abi/libsmg.abi
 libsdl2-dev       # demo: window, input, GL context
 libglm-dev        # demo (C++ side)
 libimgui-dev      # demo UI
@@ -45,16 +47,21 @@ if [ -z "$missing" ]; then
   exit 0
 fi
 
+as_root=""
 if [ "$(id -u)" != 0 ]; then
-  echo "deps: missing:$missing" >&2
-  echo "deps: run this as root (or 'sudo make deps'):" >&2
-  echo "  sudo apt-get install -y --no-install-recommends$missing" >&2
-  exit 1
+  if ! command -v sudo >/dev/null 2>&1; then
+    echo "deps: missing:$missing" >&2
+    echo "deps: not root and no sudo; as root, run:" >&2
+    echo "  apt-get install -y --no-install-recommends$missing" >&2
+    exit 1
+  fi
+  as_root=sudo
 fi
 
-echo "deps: installing:$missing"
-export DEBIAN_FRONTEND=noninteractive
-apt-get update -qq
+echo "deps: installing:$missing${as_root:+ (through sudo)}"
 # shellcheck disable=SC2086
-apt-get install -y -qq --no-install-recommends $missing >/dev/null
+$as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+# shellcheck disable=SC2086
+$as_root env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y -qq --no-install-recommends $missing >/dev/null
 echo "deps: done"

@@ -63,11 +63,15 @@ smg_result smgb_manifest_add(smgb_manifest* m, const smgb_manifest_clip* clip,
   char at[SMGB_PATH_MAX + 32];
   smgb_manifest_clip c;
   int n;
-  if (!m || !clip || !file || !*file) {
+  if (!m || !clip || !file) {
     smgb_imp_errorf(err, "smgb_manifest_add: invalid argument");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   where(m, clip->line, at, sizeof at);
+  if (!*file) { /* a manifest's "" (found by the manifest fuzzer) */
+    smgb_imp_errorf(err, "%sempty clip file name", at);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
   if (clip->role != SMG_BAKE_ROLE_LOWER && clip->role != SMG_BAKE_ROLE_UPPER) {
     smgb_imp_errorf(err, "%sclip role must be lower or upper", at);
     return SMG_ERROR_INVALID_ARGUMENT;

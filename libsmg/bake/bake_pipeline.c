@@ -12,13 +12,18 @@
  *   splice search  splice candidates + Horn corrections
  *   internodal     transition frames, displacements, arc lengths, blob
  */
+#include <errno.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
+#include "abi.h"
+#include "bake_desc.h"
 #include "bake_graph.h"
 #include "bake_math.h"
 #include "bake_retarget.h"
@@ -314,10 +319,6 @@ static smg_result import_clips(smgb_bake* b, const smg_bake_desc* desc) {
     memset(&mir, 0, sizeof mir);
     err.message[0] = '\0';
     where(d, i, at, sizeof at);
-    if (d->struct_size == 0 || d->struct_size > sizeof *d) {
-      smgb_fail(b, "%s: struct_size must be sizeof(smg_bake_clip_desc)", at);
-      return SMG_ERROR_INVALID_ARGUMENT;
-    }
     if (d->role != SMG_BAKE_ROLE_LOWER && d->role != SMG_BAKE_ROLE_UPPER) {
       smgb_fail(b, "%s: role must be lower or upper", at);
       return SMG_ERROR_INVALID_ARGUMENT;
@@ -491,31 +492,12 @@ static void stage_end(smgb_bake* b, smg_bake_result* out, double t0) {
   smgb_progress(b, 1.0f);
 }
 
-smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
+/* The bake proper, on resolved full-size structs (smg_bake_run). */
+static smg_result bake(const smg_bake_desc* desc, smg_bake_result* out) {
   smgb_bake* b;
   smg_result r;
   double t0, tstart = now_seconds();
   int attempt;
-  if (!out || out->struct_size != sizeof *out) return SMG_ERROR_INVALID_ARGUMENT;
-  memset(out, 0, sizeof *out);
-  out->struct_size = sizeof *out;
-  if (!desc ||
-      (desc->struct_size != sizeof *desc &&
-       desc->struct_size != offsetof(smg_bake_desc, target_path)) ||
-      !desc->clips ||
-      desc->clip_count == 0) {
-    snprintf(out->error, sizeof out->error,
-             "smg_bake_run: desc with struct_size = sizeof(smg_bake_desc) "
-             "and at least one clip is required");
-    return SMG_ERROR_INVALID_ARGUMENT;
-  }
-  if (desc->options.struct_size != 0 &&
-      desc->options.struct_size != sizeof desc->options) {
-    snprintf(out->error, sizeof out->error,
-             "smg_bake_run: options.struct_size must be 0 or "
-             "sizeof(smg_bake_options)");
-    return SMG_ERROR_INVALID_ARGUMENT;
-  }
   b = calloc(1, sizeof *b);
   if (!b) {
     snprintf(out->error, sizeof out->error, "out of memory");
@@ -623,38 +605,91 @@ done:
   return r;
 }
 
+smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out) {
+  smg_bake_result full; /* the caller gets the prefix it knows about */
+  smg_bake_desc resolved;
+  smg_bake_clip_desc* clips;
+  smg_result r;
+  uint32_t size;
+  if (!out || !smgi_struct_size_ok(out->struct_size, sizeof *out))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  size = out->struct_size;
+  memset(&full, 0, sizeof full);
+  r = smgb_desc_resolve(desc, &resolved, &clips, full.error,
+                        sizeof full.error);
+  if (r == SMG_OK) r = bake(&resolved, &full);
+  free(clips);
+  /* a caller whose struct cannot hold the blob cannot free it either */
+  if (!smgb_result_holds_blob(size) && full.blob) {
+    smgi_blob_free(full.blob, NULL);
+    full.blob = NULL;
+  }
+  full.struct_size = size;
+  memcpy(out, &full, size);
+  return r;
+}
+
 void smg_bake_result_free(smg_bake_result* result) {
-  if (!result) return;
+  if (!result || !smgb_result_holds_blob(result->struct_size)) return;
   if (result->blob) smgi_blob_free(result->blob, NULL);
   result->blob = NULL;
   result->blob_size = 0;
 }
 
+/* The blob goes to a fresh temporary file beside `path` (same directory,
+ * so the rename cannot cross file systems), is flushed to the disk, and
+ * only then renamed over `path`: readers see the old file or the whole new
+ * one, never a part, even if the bake fails or is killed half-way (an
+ * interrupted write leaves only a hidden .NAME.XXXXXX beside it). */
 smg_result smg_bake_write_file(const smg_bake_result* result,
                                const char* path, char* error,
                                size_t error_size) {
   char tmp[4096];
+  const char* base;
+  struct stat st;
   FILE* f;
   size_t n;
+  int fd, ok;
   if (error && error_size) error[0] = '\0';
-  if (!result || !result->blob || !path || !path[0]) {
+  if (!result || !smgb_result_holds_blob(result->struct_size) ||
+      !result->blob || !path || !path[0]) {
     if (error && error_size)
       snprintf(error, error_size, "smg_bake_write_file: no blob or no path");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  /* temp file + rename: a failed write never leaves a half blob behind */
-  snprintf(tmp, sizeof tmp, "%s.tmp", path);
-  f = fopen(tmp, "wb");
+  base = strrchr(path, '/');
+  base = base ? base + 1 : path;
+  if (snprintf(tmp, sizeof tmp, "%.*s.%s.XXXXXX", (int)(base - path), path,
+               base) >= (int)sizeof tmp) {
+    if (error && error_size)
+      snprintf(error, error_size, "%s: path too long", path);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  fd = mkstemp(tmp);
+  if (fd < 0) {
+    if (error && error_size)
+      snprintf(error, error_size, "%s: cannot create a file beside it (%s)",
+               path, strerror(errno));
+    return SMG_ERROR_IO;
+  }
+  /* mkstemp makes it private (0600): keep the old file's mode, else the
+   * usual 0644 */
+  fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644);
+  f = fdopen(fd, "wb");
   if (!f) {
+    close(fd);
+    remove(tmp);
     if (error && error_size)
       snprintf(error, error_size, "%s: cannot open for writing", tmp);
     return SMG_ERROR_IO;
   }
   n = fwrite(result->blob, 1, result->blob_size, f);
-  if (fclose(f) != 0 || n != result->blob_size) {
+  ok = n == result->blob_size && fflush(f) == 0 && fsync(fd) == 0;
+  if (fclose(f) != 0 || !ok) {
     remove(tmp);
     if (error && error_size)
-      snprintf(error, error_size, "%s: write failed (disk full?)", tmp);
+      snprintf(error, error_size, "%s: write failed (disk full?); %s is "
+               "unchanged", tmp, path);
     return SMG_ERROR_IO;
   }
   if (rename(tmp, path) != 0) {

@@ -1,7 +1,8 @@
 /*
- * abi.h - the one rule for struct_size in public structs (smg.h): a caller
- * may pass an older, smaller struct, but it must at least hold the
- * struct_size field itself and never claim more than this build knows.
+ * abi.h - the one rule for struct_size in public structs (smg.h, and
+ * smg_bake.h through libsmg/bake/bake_desc.c): a caller may pass an older,
+ * smaller struct, but it must at least hold the struct_size field itself
+ * and never claim more than this build knows.
  * Input descriptors are copied over zeroed defaults; output structs get
  * only the prefix the caller knows about.
  */

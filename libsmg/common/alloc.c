@@ -1,12 +1,9 @@
 /*
- * alloc.c - resolve optional allocator hooks to malloc-based defaults, and
- * the one-line logger used for load errors.
+ * alloc.c - resolve optional allocator hooks to malloc-based defaults.
  */
 #include "alloc.h"
 
-#include <stdarg.h>
 #include <stdint.h>
-#include <stdio.h>
 #include <stdlib.h>
 #ifdef _WIN32
 #include <malloc.h> /* _aligned_malloc: Windows has no posix_memalign */
@@ -73,15 +70,4 @@ void smgi_free(const smg_allocator* a, void* ptr) {
     return;
   }
   a->free(ptr, a->user);
-}
-
-void smgi_log(const smg_logger* logger, unsigned level, const char* fmt,
-              ...) {
-  char line[512];
-  va_list ap;
-  if (!logger || !logger->func || !fmt) return;
-  va_start(ap, fmt);
-  vsnprintf(line, sizeof line, fmt, ap);
-  va_end(ap);
-  logger->func((uint32_t)level, line, logger->user);
 }

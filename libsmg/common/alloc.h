@@ -17,11 +17,4 @@ smg_result smgi_allocator_resolve(const smg_allocator* in, smg_allocator* out);
 void* smgi_alloc(const smg_allocator* a, size_t size, size_t align);
 void smgi_free(const smg_allocator* a, void* ptr);
 
-/* Logging through an optional logger; printf-style, one line. */
-void smgi_log(const smg_logger* logger, unsigned level, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
-
 #endif /* SMG_ALLOC_H */

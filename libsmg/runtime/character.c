@@ -70,8 +70,9 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
   if (d->initial_style >= g->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
   if (d->initial_action >= g->data.action_count)
     return SMG_ERROR_UNKNOWN_ACTION;
-  if (!isfinite(d->position[0]) || !isfinite(d->position[1]) ||
-      !isfinite(d->position[2]) || !isfinite(d->heading) ||
+  const float ground[2] = {d->position[0], d->position[2]};
+  if (!smgi_coords_ok(ground, 2) || !isfinite(d->position[1]) ||
+      !isfinite(d->heading) ||
       !isfinite(d->horizon) || !isfinite(d->error_threshold) ||
       d->horizon < 0.0f || d->horizon > SMGI_MAX_HORIZON ||
       d->error_threshold < 0.0f ||
@@ -213,7 +214,7 @@ SMG_API smg_result smg_character_set_path(smg_character* ch, const float* xz,
   if (count == 0) return smg_character_clear_path(ch);
   if (!xz) return SMG_ERROR_INVALID_ARGUMENT;
   if (count > ch->path.capacity) return SMG_ERROR_CAPACITY;
-  if (!smgi_all_finite(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!smgi_coords_ok(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
   float dist = 0.0f;
   ch->seg = 0;
   ch->progress = smgi_path_load(&ch->path, xz, 0, count, 1, ch->pose.ground[0],
@@ -233,7 +234,7 @@ SMG_API smg_result smg_character_append_path(smg_character* ch,
   if (count == 0) return SMG_OK;
   if (!xz) return SMG_ERROR_INVALID_ARGUMENT;
   if (count > ch->path.capacity - ch->path.count) return SMG_ERROR_CAPACITY;
-  if (!smgi_all_finite(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!smgi_coords_ok(xz, 2u * count)) return SMG_ERROR_INVALID_ARGUMENT;
   uint32_t old = ch->path.count;
   float dist = 0.0f;
   /* O(appended): only a path that was empty needs the projection */

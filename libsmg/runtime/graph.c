@@ -16,6 +16,7 @@
 #include "alloc.h"
 #include "blob.h"
 #include "graph_internal.h"
+#include "log.h"
 
 /* Files larger than this are refused before any allocation: a real baked
  * graph is a few MB, so 1 GiB means a wrong path, not a graph. */

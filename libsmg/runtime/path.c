@@ -180,11 +180,14 @@ float smgi_path_project_local(const smgi_path* p, float x, float z,
   return s_best;
 }
 
-/* Any inf or NaN among n floats, branch-free so it runs at memory speed:
- * adding one to an all-ones exponent carries into the word's top bit.
- * Blocks of 16 words with size_t indices are a shape GCC's -O2 vectorizer
- * takes (four or more words per instruction). */
-int smgi_all_finite(const float* v, uint32_t count) {
+/* Every one of n floats finite and below SMG_MAX_COORDINATE (2^20) in
+ * magnitude, branch-free so it runs at memory speed: adding 109 to the
+ * 8-bit exponent carries into the word's top bit exactly when the
+ * exponent is 127 + 20 or more (|v| >= 2^20, inf, NaN). Blocks of 16
+ * words with size_t indices are a shape GCC's -O2 vectorizer takes (four
+ * or more words per instruction). */
+#define SMGI_COORD_CARRY (109u << 23)
+int smgi_coords_ok(const float* v, uint32_t count) {
   const size_t n = count;
   size_t i = 0;
   uint32_t bad = 0;
@@ -192,12 +195,12 @@ int smgi_all_finite(const float* v, uint32_t count) {
     uint32_t w[16];
     memcpy(w, v + i, sizeof w);
     for (size_t k = 0; k < 16u; ++k)
-      bad |= (w[k] & 0x7f800000u) + 0x00800000u;
+      bad |= (w[k] & 0x7f800000u) + SMGI_COORD_CARRY;
   }
   for (; i < n; ++i) {
     uint32_t w;
     memcpy(&w, v + i, sizeof w);
-    bad |= (w & 0x7f800000u) + 0x00800000u;
+    bad |= (w & 0x7f800000u) + SMGI_COORD_CARRY;
   }
   return (bad & 0x80000000u) == 0;
 }

@@ -38,6 +38,7 @@ float smgi_path_load(smgi_path* p, const float* xz, uint32_t from,
 /* Global nearest point (O(n)). */
 float smgi_path_project_global(const smgi_path* p, float x, float z,
                                uint32_t* seg, float* out_dist);
-int smgi_all_finite(const float* v, uint32_t n);
+/* All n floats finite with magnitude below SMG_MAX_COORDINATE. */
+int smgi_coords_ok(const float* v, uint32_t n);
 
 #endif /* SMG_PATH_H */

@@ -225,6 +225,59 @@ static void test_deterministic(void** state) {
   smgi_blob_free(c.blob, NULL);
 }
 
+/* The struct_size rule (abi.h) on smg_bake.h: a caller built against an
+ * older, smaller header - clip descs without the last fields, a desc
+ * without the progress callback, all-zero options, a result without the
+ * stats - bakes the same blob, and nothing past its result prefix is
+ * written. Clip descs of one array must agree on their size. */
+static void test_older_struct_sizes(void** state) {
+  enum { OLD_CLIP = offsetof(smg_bake_clip_desc, source_line),
+         OLD_RESULT = offsetof(smg_bake_result, stats) };
+  unsigned char old_clips[BG_MAX_CLIPS * OLD_CLIP];
+  smg_bake_result res, full;
+  smg_bake_desc d;
+  uint32_t i;
+  size_t k;
+  (void)state;
+  for (i = 0; i < g_set.count; ++i) {
+    smg_bake_clip_desc c = g_set.descs[i];
+    c.struct_size = OLD_CLIP;
+    memcpy(old_clips + i * OLD_CLIP, &c, OLD_CLIP);
+  }
+  memset(&d, 0, sizeof d);
+  d.struct_size = offsetof(smg_bake_desc, progress);
+  d.clips = (const smg_bake_clip_desc*)(const void*)old_clips;
+  d.clip_count = g_set.count;
+  memset(&res, 0xab, sizeof res);
+  res.struct_size = OLD_RESULT;
+  assert_int_equal(smg_bake_run(&d, &res), SMG_OK);
+  assert_int_equal(res.struct_size, OLD_RESULT);
+  assert_int_equal(res.blob_size, g_res.blob_size);
+  assert_memory_equal(res.blob, g_res.blob, res.blob_size);
+  for (k = OLD_RESULT; k < sizeof res; ++k)
+    assert_int_equal(((const unsigned char*)&res)[k], 0xab);
+  smgi_blob_free(res.blob, NULL);
+  /* clip 1 claims another size than clip 0: refused, named */
+  ((smg_bake_clip_desc*)(void*)(old_clips + OLD_CLIP))->struct_size =
+      OLD_CLIP - 8;
+  memset(&full, 0, sizeof full);
+  full.struct_size = sizeof full;
+  assert_int_equal(smg_bake_run(&d, &full), SMG_ERROR_INVALID_ARGUMENT);
+  assert_non_null(strstr(full.error, "clip 1"));
+  assert_null(full.blob);
+  /* sizes outside [4, sizeof] are refused for every struct */
+  d.struct_size = sizeof d + 4;
+  assert_int_equal(smg_bake_run(&d, &full), SMG_ERROR_INVALID_ARGUMENT);
+  assert_non_null(strstr(full.error, "desc.struct_size"));
+  d.struct_size = sizeof d;
+  d.clips = g_set.descs;
+  d.options.struct_size = 2;
+  assert_int_equal(smg_bake_run(&d, &full), SMG_ERROR_INVALID_ARGUMENT);
+  assert_non_null(strstr(full.error, "options.struct_size"));
+  full.struct_size = sizeof full + 1;
+  assert_int_equal(smg_bake_run(&d, &full), SMG_ERROR_INVALID_ARGUMENT);
+}
+
 /* Contacts against the generator's exact planted intervals. */
 static void test_contacts_match_truth(void** state) {
   bg_set s;
@@ -480,6 +533,7 @@ int main(void) {
       cmocka_unit_test(test_graphs_strongly_connected),
       cmocka_unit_test(test_internodal_data_matches_frames),
       cmocka_unit_test(test_deterministic),
+      cmocka_unit_test(test_older_struct_sizes),
       cmocka_unit_test(test_contacts_match_truth),
   };
   const struct CMUnitTest misuse[] = {

@@ -3,7 +3,8 @@
  * clip arguments (synthetic BVH files written here), the one-line-per-stage
  * progress and timing table when stderr is not a terminal, --info on the
  * result, and clear failures (missing clip file, garbage blob, bad option)
- * with exit status 1 or 2. Skips when build/smg-bake has not been built.
+ * with exit status 1 or 2; a bake that fails or is killed half-way through
+ * writing leaves the old output file intact. Skips when build/smg-bake has not been built.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -108,6 +109,53 @@ static void test_cli(void** state) {
   snprintf(args, sizeof args, "--info '%s/bake.txt'", g_dir);
   assert_int_equal(run(args, "garbage.txt"), 1);
   expect_in("garbage.txt", "not a valid graph blob");
+
+  /* atomic output: bakes that fail - before writing, or half-way through
+   * the write (the file-size limit makes write() fail), or killed half-way
+   * (the limit's signal) - leave the old out.smg byte for byte */
+  {
+    char* old_blob = slurp("out.smg");
+    char *now, cmd[4096];
+    long old_size;
+    int st;
+    FILE* fp;
+    snprintf(path, sizeof path, "%s/out.smg", g_dir);
+    fp = fopen(path, "rb");
+    assert_non_null(fp);
+    fseek(fp, 0, SEEK_END);
+    old_size = ftell(fp);
+    fclose(fp);
+    assert_true(old_size > 64 * 512); /* more than the limit below */
+    snprintf(args, sizeof args,
+             "--data-dir '%s' --lower walk missing.bvh -o '%s/out.smg'",
+             g_dir, g_dir);
+    assert_int_equal(run(args, "fail-early.txt"), 1);
+    snprintf(args, sizeof args,
+             "--data-dir '%s' --lower walk w.bvh --lower run r.bvh "
+             "--upper punch p.bvh --unit 1 -o '%s/out.smg'",
+             g_dir, g_dir);
+    snprintf(cmd, sizeof cmd,
+             "trap '' XFSZ; ulimit -f 64; '%s' %s > '%s/fail-write.txt' 2>&1",
+             g_tool, args, g_dir);
+    st = system(cmd);
+    assert_true(WIFEXITED(st) && WEXITSTATUS(st) == 1);
+    expect_in("fail-write.txt", "out.smg is unchanged");
+    snprintf(cmd, sizeof cmd,
+             "ulimit -f 64; exec '%s' %s > '%s/killed.txt' 2>&1", g_tool,
+             args, g_dir);
+    st = system(cmd);
+    assert_false(WIFEXITED(st) && WEXITSTATUS(st) == 0);
+    now = slurp("out.smg");
+    assert_non_null(now);
+    assert_memory_equal(now, old_blob, (size_t)old_size);
+    free(now);
+    free(old_blob);
+    /* the failed write cleaned up after itself; the killed one could not,
+     * and left only a hidden temporary (never out.smg) */
+    snprintf(cmd, sizeof cmd, "test $(ls -A '%s' | grep -c '^\\.out\\.smg\\.') = 1",
+             g_dir);
+    assert_int_equal(system(cmd), 0);
+  }
 
   assert_int_equal(run("--frame-rate abc -m x -o y", "opt.txt"), 2);
   expect_in("opt.txt", "not a number");

@@ -149,6 +149,9 @@ static void test_errors(void** state) {
        SMG_ERROR_INVALID_ARGUMENT, 3, "none"},
       {"root clips\nlower walk missing.bvh\n", SMG_ERROR_IO, 2, "missing.bvh"},
       {"root clips\nlower walk .\n", SMG_ERROR_IO, 2, "regular file"},
+      /* found by the manifest fuzzer: named no file and no line */
+      {"root clips\nlower walk \"\"\n", SMG_ERROR_INVALID_ARGUMENT, 2,
+       "empty clip file name"},
       {"root clips\nlower walk walk.bvh\nroot other\n", SMG_ERROR_PARSE, 3, "root"},
       {"frame_rate fast\n", SMG_ERROR_PARSE, 1, "frame_rate"},
       {"frame_rate -30\n", SMG_ERROR_PARSE, 1, "frame_rate"},

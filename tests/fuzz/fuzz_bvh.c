@@ -7,55 +7,54 @@
  * the processing functions accept without crashing or leaking.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "bake_clip.h"
 #include "bake_roles.h"
+#include "bake_synthetic.h"
 #include "fuzz.h"
 
-/* Small but varied: a static root above a translating pelvis (folded
- * away by the importer), left/right names, several channel orders, a
- * channel subset, constant non-root translation, End Sites, 3 frames. */
-static const char k_seed[] =
-    "HIERARCHY\n"
-    "ROOT joint_Root\n{\n\tOFFSET 0 0 0\n"
-    "\tCHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation "
-    "Yrotation\n"
-    "\tJOINT Hips\n\t{\n\tOFFSET 0 0 0\n"
-    "\tCHANNELS 6 Xposition Yposition Zposition Zrotation Yrotation "
-    "Xrotation\n"
-    "\tJOINT LeftUpLeg\n\t{\n\t\tOFFSET 9 -6 0\n"
-    "\t\tCHANNELS 3 Zrotation Xrotation Yrotation\n"
-    "\t\tJOINT LeftFoot\n\t\t{\n\t\t\tOFFSET 0 -80 0\n"
-    "\t\t\tCHANNELS 1 Xrotation\n"
-    "\t\t\tEnd Site\n\t\t\t{\n\t\t\t\tOFFSET 0 -5 12\n\t\t\t}\n\t\t}\n\t}\n"
-    "\tJOINT RightUpLeg\n\t{\n\t\tOFFSET -9 -6 0\n"
-    "\t\tCHANNELS 3 Yrotation Xrotation Zrotation\n"
-    "\t\tJOINT RightFoot\n\t\t{\n\t\t\tOFFSET 0 -80 0\n"
-    "\t\t\tCHANNELS 1 Xrotation\n"
-    "\t\t\tEnd Site\n\t\t\t{\n\t\t\t\tOFFSET 0 -5 12\n\t\t\t}\n\t\t}\n\t}\n"
-    "\tJOINT Spine\n\t{\n\t\tOFFSET 0 10 0\n"
-    "\t\tCHANNELS 6 Xposition Yposition Zposition Xrotation Yrotation "
-    "Zrotation\n"
-    "\t\tEnd Site\n\t\t{\n\t\t\tOFFSET 0 50 0\n\t\t}\n\t}\n"
-    "\t}\n"
-    "}\n"
-    "MOTION\nFrames: 3\nFrame Time: 0.0333333\n"
-    "5 0 -2 0 0 90 "
-    "0 90 0 0 0 0 0 0 0 0 0 0 0 0 0 10 0 0 0 0\n"
-    "5 0 -2 0 0 90 "
-    "1.5 91 2 10 -20 30 5 -6 7 8 9 -10 11 12 0 10 0 -14 15 -16\n"
-    "5 0 -2 0 0 90 "
-    "3 90.5 4.25 -170 179 -1e2 0.5 6 -7e0 8 9 10 -11 12 0 10 0 14 -15 "
-    "16\n";
-
+/* A real-shaped file: the 31-joint CMU hierarchy of a generated
+ * (synthetic) walk, 1 s at 120 frames/s like the CMU captures, written by
+ * the baker's own BVH writer; real clips are this shape, only longer
+ * (the libFuzzer run allows inputs of real clip sizes: mk/fuzz.mk). */
 int fuzz_seed(uint8_t** data, size_t* size) {
-  *size = sizeof k_seed - 1;
-  *data = (uint8_t*)malloc(*size);
-  if (!*data) return 1;
-  memcpy(*data, k_seed, *size);
-  return 0;
+  char dir[64], path[96];
+  smgb_synth_params p;
+  smgb_clip clip;
+  smgb_error err;
+  smg_result r;
+  FILE* f;
+  long n = -1;
+  snprintf(dir, sizeof dir, "/tmp/smg-fuzz-bvh-XXXXXX");
+  if (!mkdtemp(dir)) return 1;
+  snprintf(path, sizeof path, "%s/seed.bvh", dir);
+  memset(&p, 0, sizeof p);
+  p.kind = SMGB_SYNTH_WALK;
+  p.duration = 1.0f;
+  p.frame_rate = 120.0f;
+  p.turn_rate = 0.3f;
+  r = smgb_synth_generate(&p, &clip, NULL);
+  if (r == SMG_OK) {
+    r = smgb_bvh_save(path, &clip, &err);
+    smgb_clip_free(&clip);
+  }
+  f = r == SMG_OK ? fopen(path, "rb") : NULL;
+  if (f && fseek(f, 0, SEEK_END) == 0) n = ftell(f);
+  *data = n > 0 ? (uint8_t*)malloc((size_t)n) : NULL;
+  if (*data && (fseek(f, 0, SEEK_SET) != 0 ||
+                fread(*data, 1, (size_t)n, f) != (size_t)n)) {
+    free(*data);
+    *data = NULL;
+  }
+  *size = (size_t)n;
+  if (f) fclose(f);
+  remove(path);
+  rmdir(dir);
+  return *data ? 0 : 1;
 }
 
 static volatile float g_sink;

@@ -3,7 +3,9 @@
  * every target runs in `make test` without clang or libFuzzer.
  *
  *   fuzz_x FILE...             run each file once (reproduce a crash)
- *   fuzz_x [-n N] [-s SEED]    run the seed input, then N mutants of it
+ *   fuzz_x [-n N] [-s SEED] [-i FILE]
+ *                              run the seed input (the target's, or FILE),
+ *                              then N mutants of it
  *   fuzz_x --write-seed FILE   write the target's seed input (corpus)
  *   fuzz_x [-s SEED] --dump K FILE
  *                              write mutant K (0-based) of that run to FILE
@@ -155,7 +157,8 @@ static int run_exact(const uint8_t* data, size_t size) {
   return 0;
 }
 
-static int run_file(const char* path) {
+/* The whole file, malloc'ed (freed by the caller). */
+static int read_file(const char* path, uint8_t** out, size_t* out_size) {
   FILE* f = fopen(path, "rb");
   uint8_t* buf = NULL;
   size_t size = 0, cap = 0, got;
@@ -179,6 +182,15 @@ static int run_file(const char* path) {
     size += got;
   } while (got > 0);
   fclose(f);
+  *out = buf;
+  *out_size = size;
+  return 0;
+}
+
+static int run_file(const char* path) {
+  uint8_t* buf;
+  size_t size;
+  if (read_file(path, &buf, &size) != 0) return 1;
   run_exact(buf, size);
   free(buf);
   printf("fuzz: ran %s (%zu bytes)\n", path, size);
@@ -212,6 +224,7 @@ static int write_seed(const char* path) {
 int main(int argc, char** argv) {
   unsigned long n = 1000, s = 1, i, dump_index = 0, timeout = 20;
   const char* dump_path = NULL;
+  const char* seed_path = NULL;
   uint8_t *seed = NULL, *buf;
   size_t seed_size = 0, cap;
   int argi, files = 0, rc = 0;
@@ -225,6 +238,8 @@ int main(int argc, char** argv) {
       n = strtoul(argv[++argi], NULL, 10);
     } else if (strcmp(argv[argi], "-s") == 0 && argi + 1 < argc) {
       s = strtoul(argv[++argi], NULL, 10);
+    } else if (strcmp(argv[argi], "-i") == 0 && argi + 1 < argc) {
+      seed_path = argv[++argi];
     } else if (strcmp(argv[argi], "-t") == 0 && argi + 1 < argc) {
       timeout = strtoul(argv[++argi], NULL, 10);
     } else if (strcmp(argv[argi], "--write-seed") == 0 && argi + 1 < argc) {
@@ -235,7 +250,8 @@ int main(int argc, char** argv) {
       n = dump_index + 1;
     } else if (argv[argi][0] == '-') {
       fprintf(stderr,
-              "usage: %s [-n MUTATIONS] [-s SEED] [-t SECONDS] | FILE... | "
+              "usage: %s [-n MUTATIONS] [-s SEED] [-i SEED_FILE] [-t SECONDS] "
+              "| FILE... | "
               "--write-seed FILE | [-s SEED] --dump K FILE\n",
               argv[0]);
       return 2;
@@ -248,8 +264,10 @@ int main(int argc, char** argv) {
   }
   if (files) return rc;
 
-  if (fuzz_seed(&seed, &seed_size) != 0) {
-    fprintf(stderr, "fuzz: the target could not make its seed\n");
+  if (seed_path ? read_file(seed_path, &seed, &seed_size) != 0
+                : fuzz_seed(&seed, &seed_size) != 0) {
+    fprintf(stderr, "fuzz: no seed (%s)\n",
+            seed_path ? seed_path : "the target could not make one");
     return 1;
   }
   g_rng = 0x5eed0000ull + s;

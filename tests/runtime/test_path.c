@@ -217,32 +217,39 @@ static void test_local_projection(void** state) {
   }
 }
 
-static void test_finite(void** state) {
+/* Path coordinates: finite and below SMG_MAX_COORDINATE in magnitude (the
+ * runtime fuzzer found a path with 3e38 coordinates: its length overflowed
+ * to inf and every arc length after it was meaningless). */
+static void test_coords_ok(void** state) {
   (void)state;
-  float v[7] = {0, 1, -2, 3e38f, -1e-40f, 5, 6};
-  assert_true(smgi_all_finite(v, 7));
+  float v[7] = {0, 1, -2, 1048575.9f, -1e-40f, 5, -1048575.9f};
+  assert_true(smgi_coords_ok(v, 7));
   for (int i = 0; i < 7; ++i) {
     float keep = v[i];
     v[i] = NAN;
-    assert_false(smgi_all_finite(v, 7));
+    assert_false(smgi_coords_ok(v, 7));
     v[i] = -INFINITY;
-    assert_false(smgi_all_finite(v, 7));
+    assert_false(smgi_coords_ok(v, 7));
+    v[i] = SMG_MAX_COORDINATE;
+    assert_false(smgi_coords_ok(v, 7));
+    v[i] = -3e38f;
+    assert_false(smgi_coords_ok(v, 7));
     v[i] = keep;
   }
-  assert_true(smgi_all_finite(v, 0));
+  assert_true(smgi_coords_ok(v, 0));
   /* every length and position through the unrolled body and the tail */
   float w[41];
   for (uint32_t n = 0; n <= 41; ++n) {
     for (uint32_t i = 0; i < 41; ++i) w[i] = (float)i - 20.0f;
-    assert_true(smgi_all_finite(w, n));
+    assert_true(smgi_coords_ok(w, n));
     for (uint32_t i = 0; i < n; ++i) {
-      w[i] = (i & 1u) ? INFINITY : NAN;
-      assert_false(smgi_all_finite(w, n));
+      w[i] = (i % 3u == 0) ? INFINITY : (i % 3u == 1) ? NAN : 2e6f;
+      assert_false(smgi_coords_ok(w, n));
       w[i] = 1.0f;
     }
     if (n < 41) { /* a bad value just past the end is not looked at */
       w[n] = NAN;
-      assert_true(smgi_all_finite(w, n));
+      assert_true(smgi_coords_ok(w, n));
     }
   }
 }
@@ -279,7 +286,7 @@ int main(void) {
       cmocka_unit_test(test_projection_is_the_rule),
       cmocka_unit_test(test_eval_from_any_hint),
       cmocka_unit_test(test_local_projection),
-      cmocka_unit_test(test_finite),
+      cmocka_unit_test(test_coords_ok),
       cmocka_unit_test(test_wrap_angle),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -13,6 +13,8 @@
  *       bound is violated. Without the CMU clips only the synthetic default
  *       blob is exercised (the CMU parts are skipped with a message).
  */
+/* realpath() (POSIX, declared by glibc only for X/Open) */
+#define _XOPEN_SOURCE 700
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -97,12 +99,41 @@ static void delete_stale_figures(const char* dir) {
   if (removed) eval_log("deleted %d figure(s) of an earlier run", removed);
 }
 
+/* `path` relative to the repository (the report must not carry machine
+ * paths): "../shared/mocap/cmu" for the usual layout. Unchanged when it
+ * cannot be resolved. */
+static void repo_relative(const char* path, char* out, size_t size) {
+  char root[4096], abs[4096], rel[4096] = "";
+  size_t common = 0, i;
+  command_line("git rev-parse --show-toplevel 2>/dev/null", root,
+               sizeof(root));
+  if ((!root[0] && !getcwd(root, sizeof(root))) || !realpath(path, abs)) {
+    snprintf(out, size, "%s", path);
+    return;
+  }
+  /* longest common prefix that ends at a component boundary */
+  for (i = 0;; ++i) {
+    int end_r = root[i] == '\0' || root[i] == '/';
+    int end_a = abs[i] == '\0' || abs[i] == '/';
+    if (end_r && end_a) common = i;
+    if (root[i] != abs[i] || root[i] == '\0') break;
+  }
+  /* one "../" per root component below the common prefix */
+  for (i = common; root[i]; ++i)
+    if (root[i] == '/' && strlen(rel) + 4 < sizeof(rel)) strcat(rel, "../");
+  snprintf(out, size, "%s%s", rel,
+           abs[common] == '/' ? abs + common + 1 : abs + common);
+  if (!out[0]) snprintf(out, size, ".");
+}
+
 static void write_header(eval_ctx* ctx, const char* shared) {
   char cpu[256], commit[64], dirty[8], date[64], kernel[256], load[128];
+  char data[1024];
   time_t now = time(NULL);
   struct tm tmv;
   long cores = sysconf(_SC_NPROCESSORS_ONLN), mem = mem_total_mib();
   cpu_model(cpu, sizeof(cpu));
+  repo_relative(ctx->cmu_dir, data, sizeof(data));
   command_line("git rev-parse --short HEAD 2>/dev/null", commit,
                sizeof(commit));
   /* Dirty = tracked changes other than this report and its figures. */
@@ -130,8 +161,7 @@ static void write_header(eval_ctx* ctx, const char* shared) {
           "| Data | `%s` (%s) |\n\n",
           cpu, cores, mem, kernel[0] ? kernel : "unknown OS",
           commit[0] ? commit : "unknown", dirty[0] ? "-dirty" : "", date,
-          load[0] ? load : "unknown",
-          ctx->cmu_dir,
+          load[0] ? load : "unknown", data,
           ctx->have_cmu ? "CMU clips found" : "CMU clips NOT found");
   (void)shared;
 }

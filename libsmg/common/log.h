@@ -1,0 +1,16 @@
+/*
+ * log.h - logging through the caller's optional smg_logger (graph load).
+ */
+#ifndef SMG_LOG_H
+#define SMG_LOG_H
+
+#include "smg.h"
+
+/* Logging through an optional logger; printf-style, one line. */
+void smgi_log(const smg_logger* logger, unsigned level, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+#endif /* SMG_LOG_H */

@@ -1,0 +1,29 @@
+# Soak (tests/soak/soak.c): many characters, many frames, random use, with
+# checks on every character-frame (finite, no root jump beyond the data's
+# fastest motion, bounded path error, no allocation after create).
+#
+#   make soak       100 characters x 10^4 steps on build/default.smg and,
+#                   when ../shared holds the CMU clips, build/cmu.smg
+#                   (10^6 character-frames each), with the step-time
+#                   flatness check (--timing). Minutes; not in make test.
+#   make test-soak  (part of `make test`) 10 characters x 10^3 steps
+#                   (10^4 character-frames) on build/default.smg, no
+#                   timing check (unit tests are never timed).
+
+# (blobs named directly: tools.mk, which names them, is read later)
+SOAK_BIN := $(BUILD)/soak/soak
+SOAK_DEFAULT := $(BUILD)/default.smg
+SOAK_GRAPHS := $(SOAK_DEFAULT) $(if $(wildcard $(SMG_SHARED)/mocap/cmu/09_12.bvh),$(BUILD)/cmu.smg)
+
+TEST_TARGETS += test-soak
+
+$(SOAK_BIN): tests/soak/soak.c $(LIBSMG_A) $(LIB_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_TOOL) $< -o $@ $(LIBSMG_A) $(LDLIBS_M)
+
+.PHONY: soak test-soak
+soak: $(SOAK_BIN) $(SOAK_GRAPHS)
+	$(SOAK_BIN) --timing --characters 100 --steps 10000 $(SOAK_GRAPHS)
+
+test-soak: $(SOAK_BIN) $(SOAK_DEFAULT)
+	$(SOAK_BIN) --characters 10 --steps 1000 $(SOAK_DEFAULT)
