@@ -698,6 +698,25 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
   }
 }
 
+/* Which styles have a pose to come to rest on (graph_derived.h). */
+static void build_can_stop(const smgi_graph_data* d, uint8_t* can_stop) {
+  const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
+  memset(can_stop, 0, d->style_count);
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    if (E->label >= d->style_count || can_stop[E->label]) continue;
+    uint32_t prev = 0;
+    for (uint32_t k = 0; k < E->frame_count; ++k) {
+      const uint32_t fl = d->frames[E->first_frame + k].flags & both;
+      if (fl == both || (k > 0 && fl != 0 && prev != 0 && fl != prev)) {
+        can_stop[E->label] = 1;
+        break;
+      }
+      prev = fl;
+    }
+  }
+}
+
 smg_result smgi_graph_derived_build(smg_graph* g) {
   if (!g) return SMG_ERROR_INVALID_ARGUMENT;
   const smgi_graph_data* d = &g->data;
@@ -716,8 +735,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_te = off_tf + align16(sizeof(float) * TK);
   size_t off_nt = off_te + align16(sizeof(uint32_t) * TK);
   size_t off_em = off_nt + align16(sizeof(float) * 2u * (size_t)LN);
-  size_t total =
+  size_t off_cs =
       off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
+  size_t total = off_cs + align16((size_t)S);
   size_t block = align16(sizeof(smgi_derived));
 
   /* One scratch block for the phases below, sized for the largest. */
@@ -754,8 +774,10 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* trail_edge = (uint32_t*)(base + off_te);
   float* node_turn = (float*)(base + off_nt);
   float* edge_mid = (float*)(base + off_em);
+  uint8_t* can_stop = base + off_cs;
 
   build_edge_mid(d, edge_mid);
+  build_can_stop(d, can_stop);
 
   /* BFS scratch: reverse adjacency of either graph and the queue. */
   uint32_t* in_first = (uint32_t*)scratch;
@@ -826,6 +848,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
     }
   }
   dv->natural_next = natural;
+  dv->style_can_stop = can_stop;
   g->derived = dv;
   return SMG_OK;
 }

@@ -62,6 +62,11 @@ typedef struct smgi_derived {
    * its nodes' natural continuations, node_trail): where a character that got far
    * off its path goes to get back (CMU runs, for one, barely turn). */
   uint32_t agile_style;
+  /* style_can_stop[style]: 1 when some lower edge of the style has a
+   * frame with both feet down, or a frame where support passes straight
+   * from one foot to the other - a pose a character can come to rest on
+   * (walks have them, runs with their flight phases do not). */
+  const uint8_t* style_can_stop;
 } smgi_derived;
 
 /* Build g->derived through g->allocator. The graph must be validated. */

@@ -99,9 +99,11 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
   smgi_seq_ctx sc;
   smgi_seq_init(&sc, ch, W, s, seg);
   sc.best_len = 0;
-  /* coming to rest at the end: the graph's most agile style (walking) is
-   * wanted for the last metres (steer.c) */
-  sc.yield = yield || smgi_steer_settling(ch, s);
+  /* coming to rest at the end in a style with no pose to rest on (a
+   * run): the graph's most agile style (walking) is wanted for the last
+   * metres (steer.c) */
+  sc.yield = yield || (smgi_steer_settling(ch, s) &&
+                       !smgi_derived_of(g)->style_can_stop[sc.style0]);
   *following = sc.following && !sc.lost;
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];

@@ -107,9 +107,10 @@ static inline void smgi_steer_plan_view(const smgi_steer* s, float u,
 
 /* Whether planning from arc s belongs to coming to rest at the path's end:
  * the end lies within what the current speed covers in the braking time
- * plus SMGI_STEER_SETTLE_SECONDS. The planner then wants the graph's most
- * agile style (walking, in any graph that has it), whose frames with both
- * feet down make a stop; a run has none. */
+ * plus SMGI_STEER_SETTLE_SECONDS. Where the wanted style has no pose to
+ * rest on (derived style_can_stop: a run), the planner then wants the
+ * graph's most agile style (walking, in any graph that has it), whose
+ * frames with both feet down make a stop. */
 int smgi_steer_settling(const smg_character* ch, float s);
 
 #endif /* SMG_STEER_H */

@@ -65,6 +65,7 @@ typedef struct ref_tables {
   uint32_t* trail_hops;
   float* trail_dist;
   uint32_t agile_style;
+  uint8_t* can_stop;
 } ref_tables;
 
 static float ref_fps(const smgi_graph_data* d) {
@@ -255,6 +256,18 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
   ref_trail(d, r->natural, r);
   ref_turn(d, r->turn);
   ref_edge_mid(d, r->edge_mid);
+  /* a style can stop: some frame of its edges has both feet down, or
+   * support passes from one foot straight to the other */
+  r->can_stop = (uint8_t*)calloc((size_t)S + 1u, 1);
+  assert_non_null(r->can_stop);
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    for (uint32_t k = 0; E->label < S && k < E->frame_count; ++k) {
+      uint32_t fl = d->frames[E->first_frame + k].flags & 3u;
+      uint32_t pv = k > 0 ? d->frames[E->first_frame + k - 1u].flags & 3u : 0u;
+      if (fl == 3u || (fl && pv && fl != pv)) r->can_stop[E->label] = 1;
+    }
+  }
   float best = -1.0f;
   for (uint32_t st = 0; st < S; ++st) {
     double turn = 0.0, arc = 0.0;
@@ -283,6 +296,7 @@ static void ref_free(ref_tables* r) {
   free(r->splice_first);
   free(r->action_first);
   free(r->natural);
+  free(r->can_stop);
   free(r->trail);
   free(r->trail_frames);
   free(r->trail_edge);
@@ -364,6 +378,7 @@ static void compare(const char* name, const smgi_graph_data* d,
   EXPECT_SAME("edge_mid", dv->edge_mid, r->edge_mid,
               16u * (size_t)d->lower_edge_count);
   assert_int_equal(dv->agile_style, r->agile_style);
+  EXPECT_SAME("style_can_stop", dv->style_can_stop, r->can_stop, (size_t)S);
   for (uint32_t n = 0; n < LN; ++n) {
     for (uint32_t k = 0; k < K; ++k) {
       const size_t i = (size_t)n * K + k;
