@@ -13,6 +13,7 @@
  * ("Retargeting, measured"): (c) CMU onto the rig, (a) Bandai Namco on its
  * own skeleton, (b) CMU + Bandai Namco on the CMU skeleton.
  */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -33,6 +34,9 @@
 
 static char g_dir[256];
 static char g_rig[320];
+/* The build folder as an absolute path: the manifests this test writes
+ * live in g_dir, and a relative root would resolve against it. */
+static char g_build[512];
 static const char* g_self;
 
 static int setup(void** state) {
@@ -40,6 +44,12 @@ static int setup(void** state) {
   (void)state;
   snprintf(g_dir, sizeof g_dir, "/tmp/smg_retarget_XXXXXX");
   if (!mkdtemp(g_dir)) return -1;
+  {
+    char abs[4096]; /* realpath needs PATH_MAX bytes */
+    if (!realpath(SMG_BUILD_DIR, abs) || strlen(abs) >= sizeof g_build)
+      return -1;
+    memcpy(g_build, abs, strlen(abs) + 1);
+  }
   snprintf(g_rig, sizeof g_rig, "%s/rig.bvh", g_dir);
   return smgb_synth_write_rig(g_rig, &err) == SMG_OK ? 0 : -1;
 }
@@ -392,7 +402,7 @@ static void test_manifest_target(void** state) {
           "lower walk synthetic_walk_straight.bvh\n"
           "lower walk synthetic_walk_left.bvh\n"
           "upper wave synthetic_wave.bvh\n",
-          SMG_BUILD_DIR);
+          g_build);
   fclose(f);
   snprintf(cmd, sizeof cmd, "%s/smg-bake -q -m '%s' -o '%s' && %s/smg-bake "
            "--info '%s' > '%s'", SMG_BUILD_DIR, man, out, SMG_BUILD_DIR, out,
@@ -405,7 +415,7 @@ static void test_manifest_target(void** state) {
   f = fopen(man, "w");
   assert_non_null(f);
   fprintf(f, "root %s/synthetic\nunit 1\ntarget no_such_rig.bvh\n"
-          "lower walk synthetic_walk_straight.bvh\n", SMG_BUILD_DIR);
+          "lower walk synthetic_walk_straight.bvh\n", g_build);
   fclose(f);
   remove(out);
   snprintf(cmd, sizeof cmd, "%s/smg-bake -q -m '%s' -o '%s' 2> '%s'",
@@ -417,7 +427,7 @@ static void test_manifest_target(void** state) {
   f = fopen(man, "w");
   assert_non_null(f);
   fprintf(f, "root %s/synthetic\ntarget rig.bvh\ntarget rig.bvh\n"
-          "lower walk synthetic_walk_straight.bvh\n", SMG_BUILD_DIR);
+          "lower walk synthetic_walk_straight.bvh\n", g_build);
   fclose(f);
   assert_int_not_equal(system(cmd), 0);
   assert_true(contains(txt, "onto_rig.manifest:3: 'target' may appear only once"));
@@ -547,7 +557,10 @@ static const char* bandai_dir(void) {
   static char dir[1024];
   char probe[1200];
   FILE* fp;
-  snprintf(dir, sizeof dir, "%s/mocap/bandai-namco", smgt_shared_dir());
+  snprintf(probe, sizeof probe, "%s/mocap/bandai-namco", smgt_shared_dir());
+  /* absolute: it is written into manifests that live elsewhere */
+  if (!realpath(probe, dir))
+    snprintf(dir, sizeof dir, "%s/mocap/bandai-namco", smgt_shared_dir());
   snprintf(probe, sizeof probe, "%s/dataset-2_walk_normal_001.bvh", dir);
   fp = fopen(probe, "rb");
   if (!fp) {
@@ -586,6 +599,7 @@ static void bandai_lines(FILE* f, const char* dir) {
  * retargeted: other names, hierarchy, proportions and units). */
 static void test_bandai_sets(void** state) {
   const char* cmu = smgt_cmu_dir();
+  char cmu_abs[4096];
   const char* bn = bandai_dir();
   char a_path[400], b_path[400], line[512];
   FILE *f, *src;
@@ -596,6 +610,8 @@ static void test_bandai_sets(void** state) {
     if (cmu && bn) printf("SKIP: quick mode\n");
     return;
   }
+  /* absolute: written into manifests that live in g_dir */
+  if (!realpath(cmu, cmu_abs)) snprintf(cmu_abs, sizeof cmu_abs, "%s", cmu);
   snprintf(a_path, sizeof a_path, "%s/bandai.manifest", g_dir);
   snprintf(b_path, sizeof b_path, "%s/mixed.manifest", g_dir);
   f = fopen(a_path, "w");
@@ -610,7 +626,7 @@ static void test_bandai_sets(void** state) {
   assert_non_null(src);
   while (fgets(line, sizeof line, src))
     if (strncmp(line, "root ", 5) == 0)
-      fprintf(f, "root %s\n", cmu);
+      fprintf(f, "root %s\n", cmu_abs);
     else
       fputs(line, f);
   fclose(src);
