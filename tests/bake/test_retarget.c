@@ -641,13 +641,13 @@ static void test_bandai_sets(void** state) {
    * counts as on it. The Bandai Namco clips skate more than 20 cm/s by this
    * measure on their own skeleton already (see docs/baker.md), so the
    * mixed set is held to its sources instead. Mixing the two performers
-   * raises it further (transitions between them: 53 vs 34 cm/s without
-   * IK, 37 vs 29 with it, measured with root steering on), a known gap
+   * raises it further (transitions between them: 43 vs 34 cm/s without
+   * IK, 33 vs 30 with it, measured with root steering on), a known gap
    * this bound keeps from growing. */
   assert_true(own.bone_error_m < 1e-3 && mixed.bone_error_m < 1e-3);
   assert_true(mixed.toe_floor_cm[0] >= -0.5 && mixed.toe_floor_cm[0] <= 5.0);
   assert_true(mixed.toe_floor_cm[1] >= -0.5 && mixed.toe_floor_cm[1] <= 5.0);
-  assert_true(mixed.planted_cms <= 1.7 * own.planted_cms + 2.0);
+  assert_true(mixed.planted_cms <= 1.4 * own.planted_cms + 2.0);
   assert_true(mixed_mean <= 1.5 * own_mean + 0.05);
 }
 
