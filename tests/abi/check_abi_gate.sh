@@ -55,8 +55,8 @@ abidw --no-corpus-path --no-comp-dir-path --short-locs --headers-dir base/includ
 expect pass base
 
 variant appended
-edit appended/include/smg.h '  smg_allocator allocator;   \/\* 0 = malloc\/free \*\/' \
-  '&\n  float appended_a;\n  uint32_t appended_b;'
+edit appended/include/smg.h '^} smg_character_desc;' \
+  '  float appended_a;\n  uint32_t appended_b;\n&'
 edit appended/include/smg.h '^} smg_character_state;' '  float appended_c;\n&'
 edit appended/include/smg.h '^SMG_API const char\* smg_result_string' \
   'SMG_API smg_result smg_abi_gate_added(uint32_t x);\n&'
