@@ -26,6 +26,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <errno.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#define SMGB_ASSIMP_PROBE 1
+#else
+#define SMGB_ASSIMP_PROBE 0
+#endif
+
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -291,6 +301,36 @@ static double guess_unit(const smgb_skeleton* s, double hips_height) {
   return best;
 }
 
+/* assimp is a large parser of untrusted files, and some malformed ones
+ * crash it (fuzzing found a NULL dereference in assimp 5.2's glTF 2 reader;
+ * docs/reliability.md). Where processes can be forked, each file is first
+ * read by a child process: if the child dies of a signal, the import fails
+ * with an error naming the file instead of taking the baker down. The
+ * child only parses and exits; the real import follows in this process.
+ * Returns 1 when the file can be read here (or no probe is possible). */
+static int assimp_survives(const char* path, const struct aiPropertyStore* props) {
+#if SMGB_ASSIMP_PROBE
+  int status = 0;
+  pid_t pid;
+  fflush(NULL); /* nothing buffered is written twice */
+  pid = fork();
+  if (pid < 0) return 1; /* no probe: import directly */
+  if (pid == 0) {
+    const struct aiScene* s = aiImportFileExWithProperties(
+        path, aiProcess_ValidateDataStructure, NULL, props);
+    if (s) aiReleaseImport(s);
+    _exit(0);
+  }
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return 1;
+  return !WIFSIGNALED(status);
+#else
+  (void)path;
+  (void)props;
+  return 1;
+#endif
+}
+
 smg_result smgb_assimp_load(const char* path, float unit_scale,
                             uint32_t animation_index, smgb_clip* out,
                             smgb_error* err) {
@@ -330,6 +370,12 @@ smg_result smgb_assimp_load(const char* path, float unit_scale,
   props = aiCreatePropertyStore();
   if (props)
     aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, 0);
+  if (!assimp_survives(path, props)) {
+    if (props) aiReleasePropertyStore(props);
+    smgb_imp_errorf(err, "%s: assimp crashed reading the file (a malformed "
+                    "glTF/GLB/FBX file); nothing was imported", path);
+    return SMG_ERROR_PARSE;
+  }
   scene = aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure,
                                        NULL, props);
   if (props) aiReleasePropertyStore(props);
