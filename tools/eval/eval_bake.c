@@ -32,9 +32,8 @@ static void progress_quiet(const char* stage, float fraction, void* user) {
   (void)user;
 }
 
-/* Bakes the manifest's clips with the given thread count. */
-static smg_result bake_manifest(const smgb_manifest* m, uint32_t threads,
-                                smg_bake_result* res) {
+smg_result eval_bake_manifest(const smgb_manifest* m, uint32_t threads,
+                              smg_bake_result* res) {
   smg_bake_clip_desc* clips;
   smg_bake_desc desc;
   smg_result r;
@@ -224,7 +223,7 @@ void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size) {
     return;
   }
   eval_log("baking the paper-size CMU set (1 thread)...");
-  rc = bake_manifest(&man, 1, &r1);
+  rc = eval_bake_manifest(&man, 1, &r1);
   if (rc != SMG_OK) {
     eval_log("bake failed: %s: %s", smg_result_string(rc), r1.error);
     eval_summary(ctx, "**Preprocessing**: the bake FAILED in this run (see "
@@ -249,7 +248,7 @@ void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size) {
                r1.stats.splice_count, r1.stats.style_count);
   } else {
     eval_log("baking again with the default thread count...");
-    rc = bake_manifest(&man, 0, &r2);
+    rc = eval_bake_manifest(&man, 0, &r2);
     have_r2 = rc == SMG_OK;
     if (!have_r2) smg_bake_result_free(&r2);
     write_report(ctx, &man, &r1, have_r2 ? &r2 : NULL, 2);

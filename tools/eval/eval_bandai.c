@@ -15,36 +15,6 @@
 #include "eval_ctx.h"
 #include "smg_bake.h"
 
-static void progress_quiet(const char* stage, float fraction, void* user) {
-  (void)stage;
-  (void)fraction;
-  (void)user;
-}
-
-static smg_result bake(const smgb_manifest* m, smg_bake_result* res) {
-  smg_bake_clip_desc* clips;
-  smg_bake_desc desc;
-  smg_result r;
-  memset(res, 0, sizeof(*res));
-  res->struct_size = sizeof(*res);
-  clips = (smg_bake_clip_desc*)calloc(m->clip_count ? m->clip_count : 1,
-                                      sizeof(*clips));
-  if (!clips) return SMG_ERROR_OUT_OF_MEMORY;
-  r = smgb_manifest_descs(m, clips, m->clip_count);
-  if (r == SMG_OK) {
-    memset(&desc, 0, sizeof(desc));
-    desc.struct_size = sizeof(desc);
-    desc.clip_count = m->clip_count;
-    desc.clips = clips;
-    desc.options.struct_size = sizeof(desc.options);
-    desc.options.frame_rate = m->frame_rate;
-    desc.progress = progress_quiet;
-    r = smg_bake_run(&desc, res);
-  }
-  free(clips);
-  return r;
-}
-
 /* Clip count per label, as "walk 9, run 4, ..." */
 static void label_counts(const smgb_manifest* m, char* buf, size_t size) {
   uint32_t i, k;
@@ -96,7 +66,7 @@ void eval_section_bandai(eval_ctx* ctx) {
     return;
   }
   eval_log("baking the Bandai Namco set...");
-  rc = bake(&man, &res);
+  rc = eval_bake_manifest(&man, 0, &res);
   if (!eval_check(ctx, rc == SMG_OK, "Bandai Namco bake: %s%s%s",
                   smg_result_string(rc), rc == SMG_OK ? "" : ": ",
                   rc == SMG_OK ? "" : res.error)) {

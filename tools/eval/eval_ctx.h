@@ -87,6 +87,13 @@ const char* eval_fmt(char* buf, size_t size, const char* fmt, double v);
  * *out_blob/out_size hold the baked blob (malloc'd, 16-byte aligned, the
  * caller frees it with free()); NULL when the bake could not run. */
 void eval_section_bake(eval_ctx* ctx, void** out_blob, size_t* out_size);
+/* Bakes a loaded manifest's clips at its frame rate with `threads` worker
+ * threads (0: the baker's default), quietly; *res as smg_bake_run leaves
+ * it (free with smg_bake_result_free). Every section that bakes uses it. */
+struct smgb_manifest;
+struct smg_bake_result;
+smg_result eval_bake_manifest(const struct smgb_manifest* m, uint32_t threads,
+                              struct smg_bake_result* res);
 /* Path following on five paths with transition and splice points. */
 void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
 /* Feet from geometry: planted-toe speed with IK on and off on every path

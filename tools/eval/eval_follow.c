@@ -339,48 +339,26 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
   }
 }
 
-static void progress_quiet(const char* stage, float fraction, void* user) {
-  (void)stage;
-  (void)fraction;
-  (void)user;
-}
-
 /* Bakes a manifest in-process into a 16-byte aligned copy (free()). */
 static void* bake(eval_ctx* ctx, const char* manifest, size_t* out_size) {
   smgb_manifest man;
   smgb_error merr;
-  smg_bake_clip_desc* clips = NULL;
-  smg_bake_desc desc;
   smg_bake_result res;
   void* copy = NULL;
   memset(&man, 0, sizeof(man));
   memset(&merr, 0, sizeof(merr));
-  memset(&res, 0, sizeof(res));
-  res.struct_size = sizeof(res);
   if (smgb_manifest_load(manifest, ctx->cmu_dir, &man, &merr) != SMG_OK) {
     eval_log("%s: %s", manifest, merr.message);
     return NULL;
   }
-  clips = (smg_bake_clip_desc*)calloc(man.clip_count ? man.clip_count : 1,
-                                      sizeof(*clips));
-  if (clips && smgb_manifest_descs(&man, clips, man.clip_count) == SMG_OK) {
-    memset(&desc, 0, sizeof(desc));
-    desc.struct_size = sizeof(desc);
-    desc.clip_count = man.clip_count;
-    desc.clips = clips;
-    desc.options.struct_size = sizeof(desc.options);
-    desc.options.frame_rate = man.frame_rate;
-    desc.progress = progress_quiet;
-    if (smg_bake_run(&desc, &res) == SMG_OK &&
-        posix_memalign(&copy, 16, res.blob_size) == 0) {
-      memcpy(copy, res.blob, res.blob_size);
-      *out_size = res.blob_size;
-    } else {
-      eval_log("%s: bake failed: %s", manifest, res.error);
-    }
+  if (eval_bake_manifest(&man, 0, &res) == SMG_OK &&
+      posix_memalign(&copy, 16, res.blob_size) == 0) {
+    memcpy(copy, res.blob, res.blob_size);
+    *out_size = res.blob_size;
+  } else {
+    eval_log("%s: bake failed: %s", manifest, res.error);
   }
   smg_bake_result_free(&res);
-  free(clips);
   smgb_manifest_free(&man);
   return copy;
 }
