@@ -100,8 +100,10 @@ void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
  * of the CMU graph and of a two-performer graph, and the source clips'. */
 void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size);
 /* Staying on drawn paths (issue 12): data/paths on the CMU blob (may be
- * NULL) and the sparse set, root steering on and off; in check mode the
- * tight paths on the default and CMU blobs with steering on. */
+ * NULL), the sparse set and the Bandai Namco set (in its `walk` and
+ * `exhausted` styles; skipped when its clips are absent), root steering on
+ * and off; in check mode the tight paths on the default, CMU and Bandai
+ * Namco blobs with steering on. */
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
                          size_t cmu_size);
 /* Splicing accuracy (Fig. 5) and the synchronization check. */

@@ -1,9 +1,13 @@
 /*
  * eval_follow.c - section "Staying on drawn paths" (issue 12): characters
- * follow the paths of data/paths/ on two graphs - the paper-size CMU set
- * (data/cmu.manifest) and a sparse set of two nearly straight walks and
- * three straight runs (data/cmu-sparse.manifest) - once with the root
- * steering on (the default) and once with it off (the motion graph alone).
+ * follow the paths of data/paths/ on three graphs - the paper-size CMU set
+ * (data/cmu.manifest), a sparse set of two nearly straight walks and three
+ * straight runs (data/cmu-sparse.manifest), and the Bandai Namco set
+ * (data/bandai.manifest: another studio and skeleton, turning walks; run
+ * in its `walk` style and again in its second style `exhausted`; read from
+ * the shared folder at run time, nothing baked from it is written) - once
+ * with the root steering on (the default) and once with it off (the
+ * motion graph alone).
  *
  * Everything is measured from the poses the public API exports (world
  * model matrices), never from the runtime's own flags:
@@ -25,6 +29,7 @@
 #include "bake_manifest.h"
 #include "eval_ctx.h"
 #include "eval_feet_geom.h"
+#include "eval_joints.h"
 #include "eval_metrics.h"
 #include "smg_bake.h"
 #include "svg_plot.h"
@@ -67,6 +72,8 @@ typedef struct follow_result {
   double turn_deg_s;        /* mean |heading correction|, deg/s */
   double slide_cm_s;        /* mean |translation correction|, cm/s */
   double feet_cm_s;         /* planted-toe speed (eval_feet_geom), mean */
+  double style_share;       /* frames the runtime reports in the initial
+                             * style (a label, not a quality measure) */
   size_t frames;
   double* hips;             /* 2 per frame (ground x, z), for figures */
 } follow_result;
@@ -95,19 +102,21 @@ static size_t read_path(const char* file, double* xz, size_t cap) {
   return n;
 }
 
-static void follow_run(smg_graph* g, const uint32_t* joint, const double* path,
-                       size_t n, int steering, follow_result* out) {
+/* One run from the path's first point; `style`: the initial style. */
+static void follow_run(smg_graph* g, const eval_joints* joint,
+                       const double* path, size_t n, int steering,
+                       uint32_t style, follow_result* out) {
   smg_character_desc cd;
   smg_character* ch = NULL;
   smg_graph_info info;
   float* xz = NULL;
   float* mats = NULL;
   double* toes = NULL; /* per frame: left toe x, y, z, right toe x, y, z */
-  const uint32_t hips = joint[0];
+  const uint32_t hips = joint->hips, toe[2] = {joint->ltoe, joint->rtoe};
   double length = em_polyline_length(path, n), arc = 0.0;
   double sum_d = 0.0, max_d = 0.0, turn = 0.0, slide = 0.0;
   double ex = path[2 * n - 2], ez = path[2 * n - 1];
-  size_t i, F, measured = 0;
+  size_t i, F, measured = 0, in_style = 0;
   const double dt = 1.0 / FOLLOW_RATE;
 
   memset(out, 0, sizeof(*out));
@@ -125,6 +134,7 @@ static void follow_run(smg_graph* g, const uint32_t* joint, const double* path,
   memset(&cd, 0, sizeof(cd));
   cd.struct_size = sizeof(cd);
   cd.flags = steering ? 0u : SMG_CHARACTER_NO_STEERING;
+  cd.initial_style = style;
   cd.path_capacity = (uint32_t)n + 16u;
   cd.position[0] = xz[0];
   cd.position[2] = xz[1];
@@ -143,13 +153,14 @@ static void follow_run(smg_graph* g, const uint32_t* joint, const double* path,
     memset(&st, 0, sizeof(st));
     st.struct_size = sizeof(st);
     if (smg_character_get_state(ch, &st) != SMG_OK) goto done;
+    in_style += st.style == style;
     hx = mats[16 * hips + 12];
     hz = mats[16 * hips + 14];
     out->hips[2 * i] = hx;
     out->hips[2 * i + 1] = hz;
     for (int f = 0; f < 2; ++f)
       for (int c = 0; c < 3; ++c)
-        toes[6 * i + 3 * f + c] = mats[16 * joint[1 + f] + 12 + c];
+        toes[6 * i + 3 * f + c] = mats[16 * toe[f] + 12 + c];
     if (i > 0) {
       turn += fabs((double)st.steer_turn_rate);
       slide += fabs((double)st.steer_slide_speed);
@@ -168,6 +179,7 @@ static void follow_run(smg_graph* g, const uint32_t* joint, const double* path,
     }
   }
   out->frames = F + 1;
+  out->style_share = (double)in_style / (double)(F + 1);
   out->mean_cm = measured ? 100.0 * sum_d / (double)measured : NAN;
   out->max_cm = 100.0 * max_d;
   out->turn_deg_s = F ? turn / (double)F * 180.0 / PI : 0.0;
@@ -207,9 +219,31 @@ done:
   }
 }
 
+/* The graphs of the section: which blob (0 CMU, 1 sparse, 2 Bandai
+ * Namco) and which style the character starts in (NULL: the first). */
+typedef struct follow_graph_spec {
+  const char* key;   /* figure names: eval-follow-<key>-<path>.svg */
+  const char* name;  /* table heading */
+  const char* title; /* figure titles (short: the figures are narrow) */
+  int blob;
+  const char* style;
+} follow_graph_spec;
+
+static const follow_graph_spec k_graphs[] = {
+    {"cmu", "CMU graph (data/cmu.manifest)", "CMU graph", 0, NULL},
+    {"sparse", "Sparse graph (data/cmu-sparse.manifest)", "Sparse graph", 1,
+     NULL},
+    {"bandai", "Bandai Namco graph (data/bandai.manifest)",
+     "Bandai Namco graph", 2, NULL},
+    {"bandai-exhausted",
+     "Bandai Namco graph (data/bandai.manifest), style `exhausted`",
+     "Bandai Namco graph, exhausted", 2, "exhausted"},
+};
+#define GRAPH_COUNT (sizeof(k_graphs) / sizeof(k_graphs[0]))
+
 /* Top-down figure of one path: the drawn path and the hips with steering
  * off and on. */
-static void draw(eval_ctx* ctx, const char* graph_key, const char* graph_name,
+static void draw(eval_ctx* ctx, const follow_graph_spec* gs,
                  const follow_path* p, const double* path, size_t n,
                  const follow_result* off, const follow_result* on) {
   char name[128], full[1400], title[200];
@@ -218,8 +252,7 @@ static void draw(eval_ctx* ctx, const char* graph_key, const char* graph_name,
   svp_figure* fig;
   if (off->ok && off->frames > cap) cap = off->frames;
   if (on->ok && on->frames > cap) cap = on->frames;
-  snprintf(title, sizeof(title), "%s graph: %s (hips seen from above)",
-           graph_name, p->title);
+  snprintf(title, sizeof(title), "%s: %s", gs->title, p->title);
   fig = svp_create(520, 520, title);
   x = (double*)malloc(cap * sizeof(double));
   z = (double*)malloc(cap * sizeof(double));
@@ -241,7 +274,7 @@ static void draw(eval_ctx* ctx, const char* graph_key, const char* graph_name,
   }
   svp_marker(fig, path[2 * n - 2], path[2 * n - 1], SVP_SQUARE, "#333333",
              5.0, "end");
-  snprintf(name, sizeof(name), "eval-follow-%s-%s.svg", graph_key, p->key);
+  snprintf(name, sizeof(name), "eval-follow-%s-%s.svg", gs->key, p->key);
   eval_img_path(ctx, name, full, sizeof(full));
   if (svp_write(fig, full) != 0) eval_log("cannot write %s", full);
 done:
@@ -252,29 +285,30 @@ done:
 
 static const char* yes_no(int v) { return v ? "yes" : "**no**"; }
 
-/* One graph: every path, steering off and on, table rows and figures. */
-/* met[0]: runs meeting the path, end and rest targets; met[1]: the
- * planted-toe target; met[2]: runs (steering on). */
-static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
-                         const char* name, int* met) {
+/* One graph and initial style: every path, steering off and on, table
+ * rows and figures. met[0]: runs meeting the path, end and rest targets;
+ * met[1]: the planted-toe target; met[2]: runs (steering on). */
+static void follow_graph(eval_ctx* ctx, smg_graph* g,
+                         const follow_graph_spec* gs, uint32_t style,
+                         int* met) {
   static double path[2 * MAX_POINTS];
-  uint32_t joint[3]; /* hips, left toe, right toe */
+  eval_joints joint;
   size_t k;
   char b[8][32];
-  if (smg_graph_find_joint(g, "Hips", &joint[0]) != SMG_OK ||
-      smg_graph_find_joint(g, "LeftToeBase", &joint[1]) != SMG_OK ||
-      smg_graph_find_joint(g, "RightToeBase", &joint[2]) != SMG_OK) {
-    eval_md(ctx, "The %s graph lacks the CMU joints Hips, LeftToeBase, "
-                 "RightToeBase: not measured.\n\n", name);
+  double style_min = 1.0;
+  if (!eval_find_joints(g, &joint)) {
+    eval_md(ctx, "**%s**: its pelvis, feet or toes are not recognised: "
+                 "not measured.\n\n", gs->name);
+    met[2] += (int)PATH_COUNT;
     return;
   }
   eval_md(ctx,
-          "**%s graph**\n\n"
+          "**%s**\n\n"
           "| path | steering | mean cm | max cm | end reached (s) | "
           "last 1 s: speed m/s | last 1 s: max distance to end m | "
           "correction deg/s | correction cm/s | planted toes cm/s |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n",
-          name);
+          gs->name);
   for (k = 0; k < PATH_COUNT; ++k) {
     const follow_path* p = &k_paths[k];
     char file[256];
@@ -291,7 +325,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
     }
     for (s = 0; s < 2; ++s) {
       follow_result* x = &r[s];
-      follow_run(g, joint, path, n, s, x);
+      follow_run(g, &joint, path, n, s, style, x);
       if (!x->ok) {
         eval_md(ctx, "| %s | %s | run failed | | | | | | | |\n", p->title,
                 s ? "on" : "off");
@@ -300,7 +334,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
       }
       eval_log("follow %s %-12s steering %-3s: %5.1f / %5.1f cm, end %s, "
                "rest %.2f m/s %.2f m, corr %.1f deg/s %.1f cm/s, feet %.1f cm/s",
-               key, p->key, s ? "on" : "off", x->mean_cm, x->max_cm,
+               gs->key, p->key, s ? "on" : "off", x->mean_cm, x->max_cm,
                x->reached ? "yes" : "no", x->rest_speed, x->rest_dist,
                x->turn_deg_s, x->slide_cm_s, x->feet_cm_s);
       if (x->reached)
@@ -316,6 +350,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
               eval_fmt(b[5], sizeof(b[5]), "%.1f", x->turn_deg_s),
               eval_fmt(b[6], sizeof(b[6]), "%.1f", x->slide_cm_s),
               eval_fmt(b[7], sizeof(b[7]), "%.1f", x->feet_cm_s));
+      if (x->style_share < style_min) style_min = x->style_share;
       if (s) {
         double mean_max = p->tight ? 10.0 : 5.0, max_max = p->tight ? 45.0 : 25.0;
         met[0] += x->mean_cm <= mean_max && x->max_cm <= max_max &&
@@ -325,29 +360,38 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g, const char* key,
         met[2]++;
       }
     }
-    if (ctx->img_dir) draw(ctx, key, name, p, path, n, &r[0], &r[1]);
+    if (ctx->img_dir) draw(ctx, gs, p, path, n, &r[0], &r[1]);
     free(r[0].hips);
     free(r[1].hips);
   }
   eval_md(ctx, "\n");
+  if (gs->style && style_min >= 1.0)
+    eval_md(ctx, "The runtime reported the style `%s` on every frame of "
+                 "every run.\n\n", gs->style);
+  else if (gs->style)
+    eval_md(ctx, "The runtime reported the style `%s` on at least %.1f %% "
+                 "of the frames of every run.\n\n", gs->style,
+            100.0 * style_min);
   if (ctx->img_dir) {
     eval_md(ctx, "Hips seen from above, steering off (dashed) and on:\n\n");
     for (k = 0; k < PATH_COUNT; ++k)
-      eval_md(ctx, "![%s, %s](%s/eval-follow-%s-%s.svg)\n", name,
-              k_paths[k].title, ctx->img_rel, key, k_paths[k].key);
+      eval_md(ctx, "![%s, %s](%s/eval-follow-%s-%s.svg)\n", gs->name,
+              k_paths[k].title, ctx->img_rel, gs->key, k_paths[k].key);
     eval_md(ctx, "\n");
   }
 }
 
-/* Bakes a manifest in-process into a 16-byte aligned copy (free()). */
-static void* bake(eval_ctx* ctx, const char* manifest, size_t* out_size) {
+/* Bakes a manifest (clips in `data_dir`) in-process into a 16-byte
+ * aligned copy (free()); the copy lives in memory only. */
+static void* bake(const char* manifest, const char* data_dir,
+                  size_t* out_size) {
   smgb_manifest man;
   smgb_error merr;
   smg_bake_result res;
   void* copy = NULL;
   memset(&man, 0, sizeof(man));
   memset(&merr, 0, sizeof(merr));
-  if (smgb_manifest_load(manifest, ctx->cmu_dir, &man, &merr) != SMG_OK) {
+  if (smgb_manifest_load(manifest, data_dir, &man, &merr) != SMG_OK) {
     eval_log("%s: %s", manifest, merr.message);
     return NULL;
   }
@@ -368,11 +412,9 @@ static void* bake(eval_ctx* ctx, const char* manifest, size_t* out_size) {
  * character cutting corners or walking on past the end fails). */
 static void check_graph(eval_ctx* ctx, smg_graph* g, const char* name) {
   static double path[2 * MAX_POINTS];
-  uint32_t joint[3];
-  if (smg_graph_find_joint(g, "Hips", &joint[0]) != SMG_OK ||
-      smg_graph_find_joint(g, "LeftToeBase", &joint[1]) != SMG_OK ||
-      smg_graph_find_joint(g, "RightToeBase", &joint[2]) != SMG_OK) {
-    eval_check(ctx, 0, "%s: no Hips/LeftToeBase/RightToeBase joints", name);
+  eval_joints joint;
+  if (!eval_find_joints(g, &joint)) {
+    eval_check(ctx, 0, "%s: pelvis, feet or toes not recognised", name);
     return;
   }
   for (size_t k = 0; k < PATH_COUNT; ++k) {
@@ -386,7 +428,7 @@ static void check_graph(eval_ctx* ctx, smg_graph* g, const char* name) {
       eval_check(ctx, 0, "cannot read %s", file);
       continue;
     }
-    follow_run(g, joint, path, n, 1, &r);
+    follow_run(g, &joint, path, n, 1, 0, &r);
     eval_check(ctx, r.ok && r.mean_cm <= 10.0 && r.max_cm <= 45.0 &&
                         r.reached && r.rest_speed <= 0.1 && r.rest_dist <= 0.3,
                "%s, %s, steering on: hips %.1f / %.1f cm from the path "
@@ -397,6 +439,91 @@ static void check_graph(eval_ctx* ctx, smg_graph* g, const char* name) {
                r.rest_dist);
     free(r.hips);
   }
+}
+
+/* Check mode: the tight paths on the Bandai Namco graph (another studio,
+ * skeleton and frame rate), baked in memory when its clips are there. */
+static void check_bandai(eval_ctx* ctx) {
+  void* blob;
+  size_t size = 0;
+  smg_graph* g = NULL;
+  if (!ctx->have_bandai) {
+    printf("SKIP follow, Bandai Namco graph: clips not at %s\n",
+           ctx->bandai_dir);
+    return;
+  }
+  blob = bake(ctx->bandai_manifest, ctx->bandai_dir, &size);
+  if (!eval_check(ctx, blob && smg_graph_load_memory(blob, size, NULL, &g) ==
+                                   SMG_OK,
+                  "follow: Bandai Namco graph baked and loaded")) {
+    free(blob);
+    return;
+  }
+  check_graph(ctx, g, "Bandai Namco blob");
+  smg_graph_destroy(g);
+  free(blob);
+}
+
+/* Bakes the sparse and Bandai Namco sets, runs every graph, and writes
+ * the summary line. */
+static void follow_graphs(eval_ctx* ctx, const void* cmu_blob,
+                          size_t cmu_size) {
+  static const char* const k_sparse = "data/cmu-sparse.manifest";
+  void* blob[3] = {NULL, NULL, NULL};
+  size_t size[3] = {cmu_size, 0, 0};
+  int met[3] = {0, 0, 0}, measured = 0;
+  size_t k;
+  if (ctx->have_cmu) {
+    eval_log("baking %s...", k_sparse);
+    blob[1] = bake(k_sparse, ctx->cmu_dir, &size[1]);
+  }
+  if (ctx->have_bandai) {
+    eval_log("baking %s...", ctx->bandai_manifest);
+    blob[2] = bake(ctx->bandai_manifest, ctx->bandai_dir, &size[2]);
+  } else {
+    eval_log("Bandai Namco clips not found at %s: skipping that graph",
+             ctx->bandai_dir);
+  }
+  for (k = 0; k < GRAPH_COUNT; ++k) {
+    const follow_graph_spec* gs = &k_graphs[k];
+    const void* b = gs->blob == 0 ? cmu_blob : blob[gs->blob];
+    uint32_t style = 0;
+    smg_graph* g = NULL;
+    if (gs->blob == 2 && !ctx->have_bandai) {
+      eval_md(ctx, "**%s**: not measured, the Bandai Namco clips are "
+                   "not at `%s`.\n\n", gs->name, ctx->bandai_dir);
+      continue;
+    }
+    if (gs->blob < 2 && !ctx->have_cmu) {
+      eval_md(ctx, "**%s**: not measured, the CMU clips are not at "
+                   "`%s`.\n\n", gs->name, ctx->cmu_dir);
+      continue;
+    }
+    if (!b || smg_graph_load_memory(b, size[gs->blob], NULL, &g) != SMG_OK) {
+      eval_md(ctx, "**%s**: not available in this run (bake or load "
+                   "failed).\n\n", gs->name);
+      continue;
+    }
+    if (gs->style && smg_graph_find_style(g, gs->style, &style) != SMG_OK) {
+      eval_md(ctx, "**%s**: the graph has no style `%s`.\n\n",
+              gs->name, gs->style);
+      smg_graph_destroy(g);
+      continue;
+    }
+    follow_graph(ctx, g, gs, style, met);
+    smg_graph_destroy(g);
+    ++measured;
+  }
+  free(blob[1]);
+  free(blob[2]);
+  eval_summary(ctx,
+               "**Staying on drawn paths** (section 2c, %d of %d graphs and "
+               "styles, %d paths, steering on): the distance, end-reached "
+               "and at-rest targets are met on %d of %d runs, the "
+               "planted-toe target (<= 20 cm/s and not above steering off) "
+               "on %d of %d.",
+               measured, (int)GRAPH_COUNT, (int)PATH_COUNT, met[0], met[2],
+               met[1], met[2]);
 }
 
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
@@ -414,17 +541,9 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
       check_graph(ctx, g, "CMU blob");
       smg_graph_destroy(g);
     }
+    check_bandai(ctx);
     return;
   }
-  static const char* const k_sparse = "data/cmu-sparse.manifest";
-  void* sparse = NULL;
-  size_t sparse_size = 0;
-  int met[3] = {0, 0, 0}, measured = 0;
-  const struct {
-    const char* key;
-    const char* name;
-  } graphs[2] = {{"cmu", "CMU (data/cmu.manifest)"},
-                 {"sparse", "Sparse (data/cmu-sparse.manifest)"}};
   eval_md(ctx,
           "## 2c. Staying on drawn paths (root steering)\n\n"
           "Characters follow the paths in `data/paths/` (one `x z` point "
@@ -432,6 +551,14 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
           "%.0f Hz through the public API for (path length / %.1f m/s + "
           "%.0f s), once with the root steering on (the default) and once "
           "with `SMG_CHARACTER_NO_STEERING` (the motion graph alone). "
+          "Graphs: the paper-size CMU set of section 1; "
+          "`data/cmu-sparse.manifest` (the 02_01 and 06_01 walks and the "
+          "09_01-09_03 runs, mirrored: the few nearly straight clips a user "
+          "has first); and the Bandai Namco set of section 6 "
+          "(`data/bandai.manifest`, another studio and skeleton with walks "
+          "turning 90 deg, clips read at run time), started once in its "
+          "first style `walk` and once in its second performer's style "
+          "`exhausted` (`smg_character_desc.initial_style`). "
           "Measured from the exported world matrices only: the hips' "
           "distance on the ground from the path (to the part of it near "
           "where the hips are along it) until they first come within "
@@ -439,7 +566,7 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
           "last second of the run their mean speed and largest distance "
           "from the last point; and the mean correction the steering "
           "reported (`smg_character_state.steer_turn_rate`, "
-          "`steer_slide_speed`). Targets with steering on, on both graphs: "
+          "`steer_slide_speed`). Targets with steering on, on every graph: "
           "smooth paths (straight, S-curve, r = 5 m circle) mean <= 5 cm "
           "and max <= 25 cm; tight paths (corners, U-turn, r = 2 m circle, "
           "scribble) mean <= 10 cm and max <= 45 cm; every end reached; at "
@@ -448,31 +575,5 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
           "`tools/eval/eval_feet_geom.c`) <= 20 cm/s and not above the "
           "same run with steering off.\n\n",
           FOLLOW_RATE, FOLLOW_SPEED, FOLLOW_EXTRA, END_RADIUS);
-  if (!ctx->have_cmu) {
-    eval_md(ctx, "Not measured: the CMU clips are not at `%s`.\n\n",
-            ctx->cmu_dir);
-    return;
-  }
-  eval_log("baking %s...", k_sparse);
-  sparse = bake(ctx, k_sparse, &sparse_size);
-  for (int k = 0; k < 2; ++k) {
-    const void* blob = k ? sparse : cmu_blob;
-    size_t size = k ? sparse_size : cmu_size;
-    smg_graph* g = NULL;
-    if (!blob || smg_graph_load_memory(blob, size, NULL, &g) != SMG_OK) {
-      eval_md(ctx, "**%s graph**: not available in this run (bake or load "
-                   "failed).\n\n", graphs[k].name);
-      continue;
-    }
-    follow_graph(ctx, g, graphs[k].key, graphs[k].name, met);
-    smg_graph_destroy(g);
-    ++measured;
-  }
-  free(sparse);
-  eval_summary(ctx,
-               "**Staying on drawn paths** (section 2c, %d of 2 graphs, 8 "
-               "paths, steering on): the distance, end-reached and at-rest "
-               "targets are met on %d of %d runs, the planted-toe target "
-               "(<= 20 cm/s and not above steering off) on %d of %d.",
-               measured, met[0], met[2], met[1], met[2]);
+  follow_graphs(ctx, cmu_blob, cmu_size);
 }

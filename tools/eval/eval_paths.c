@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_roles.h"
 #include "eval_ctx.h"
+#include "eval_joints.h"
 #include "eval_metrics.h"
 #include "eval_run.h"
 #include "svg_plot.h"
@@ -39,58 +39,6 @@ static const path_spec k_paths[] = {
     {"circle", "Full circle (r = 5 m)", 3, 0.0},
 };
 #define PATH_COUNT (sizeof(k_paths) / sizeof(k_paths[0]))
-
-/* Joints the metrics need, found by their body roles (bake_roles.h), so
- * any rig the baker accepts works. */
-typedef struct joints {
-  uint32_t hips, lfoot, ltoe, rfoot, rtoe;
-} joints;
-
-static int find_joints(smg_graph* g, joints* j) {
-  smg_graph_info info;
-  smgb_skeleton s;
-  smgb_roles r;
-  uint32_t k;
-  int ok = 0;
-  memset(&info, 0, sizeof(info));
-  info.struct_size = sizeof(info);
-  if (smg_graph_get_info(g, &info) != SMG_OK || info.joint_count == 0)
-    return 0;
-  memset(&s, 0, sizeof(s));
-  s.joint_count = info.joint_count;
-  s.names = calloc(info.joint_count, sizeof(*s.names));
-  s.parents = calloc(info.joint_count, sizeof(*s.parents));
-  s.offsets = calloc(info.joint_count, sizeof(*s.offsets));
-  if (s.names && s.parents && s.offsets) {
-    for (k = 0; k < info.joint_count; ++k) {
-      smg_joint_info ji;
-      memset(&ji, 0, sizeof(ji));
-      ji.struct_size = sizeof(ji);
-      if (smg_graph_get_joint(g, k, &ji) != SMG_OK) break;
-      snprintf(s.names[k], SMGB_NAME_MAX, "%s", ji.name);
-      s.parents[k] = ji.parent;
-      memcpy(s.offsets[k], ji.rest_offset, sizeof(s.offsets[k]));
-    }
-    if (k == info.joint_count) {
-      smgb_roles_guess(&s, &r);
-      ok = r.joint[SMGB_ROLE_PELVIS] >= 0 && r.joint[SMGB_ROLE_LEFT_FOOT] >= 0 &&
-           r.joint[SMGB_ROLE_LEFT_TOES] >= 0 &&
-           r.joint[SMGB_ROLE_RIGHT_FOOT] >= 0 &&
-           r.joint[SMGB_ROLE_RIGHT_TOES] >= 0;
-      if (ok) {
-        j->hips = (uint32_t)r.joint[SMGB_ROLE_PELVIS];
-        j->lfoot = (uint32_t)r.joint[SMGB_ROLE_LEFT_FOOT];
-        j->ltoe = (uint32_t)r.joint[SMGB_ROLE_LEFT_TOES];
-        j->rfoot = (uint32_t)r.joint[SMGB_ROLE_RIGHT_FOOT];
-        j->rtoe = (uint32_t)r.joint[SMGB_ROLE_RIGHT_TOES];
-      }
-    }
-  }
-  free(s.names);
-  free(s.parents);
-  free(s.offsets);
-  return ok;
-}
 
 static size_t build_path(const path_spec* p, double* xz, size_t cap) {
   switch (p->kind) {
@@ -159,7 +107,7 @@ static void lowest_of(const double* a, const double* b, size_t n,
   }
 }
 
-static int series_make(const eval_trace* t, const joints* j,
+static int series_make(const eval_trace* t, const eval_joints* j,
                        const double* path, size_t n, series* s) {
   size_t i, F = t->frames;
   double prev_arc = 0.0;
@@ -425,13 +373,13 @@ static void run_path(eval_ctx* ctx, smg_graph* g, const path_spec* p,
   eval_run_desc rd;
   eval_trace t;
   series s;
-  joints j;
+  eval_joints j;
   size_t n, i, F;
   double* tmp;
   smg_result r;
 
   memset(pr, 0, sizeof(*pr));
-  if (!find_joints(g, &j)) {
+  if (!eval_find_joints(g, &j)) {
     snprintf(pr->error, sizeof(pr->error),
              "skeleton lacks recognisable pelvis, feet or toes");
     return;
