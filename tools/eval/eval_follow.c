@@ -472,7 +472,8 @@ static void follow_graphs(eval_ctx* ctx, const void* cmu_blob,
   void* blob[3] = {NULL, NULL, NULL};
   size_t size[3] = {cmu_size, 0, 0};
   int met[3] = {0, 0, 0}, measured = 0;
-  size_t k;
+  char per_graph[512] = "";
+  size_t k, used = 0;
   if (ctx->have_cmu) {
     eval_log("baking %s...", k_sparse);
     blob[1] = bake(k_sparse, ctx->cmu_dir, &size[1]);
@@ -510,7 +511,15 @@ static void follow_graphs(eval_ctx* ctx, const void* cmu_blob,
       smg_graph_destroy(g);
       continue;
     }
-    follow_graph(ctx, g, gs, style, met);
+    {
+      int before[3] = {met[0], met[1], met[2]};
+      follow_graph(ctx, g, gs, style, met);
+      used += (size_t)snprintf(
+          per_graph + used, used < sizeof(per_graph) ? sizeof(per_graph) - used
+                                                     : 0,
+          "%s%s %d / %d of %d", used ? "; " : "", gs->title,
+          met[0] - before[0], met[1] - before[1], met[2] - before[2]);
+    }
     smg_graph_destroy(g);
     ++measured;
   }
@@ -521,9 +530,9 @@ static void follow_graphs(eval_ctx* ctx, const void* cmu_blob,
                "styles, %d paths, steering on): the distance, end-reached "
                "and at-rest targets are met on %d of %d runs, the "
                "planted-toe target (<= 20 cm/s and not above steering off) "
-               "on %d of %d.",
+               "on %d of %d (per graph, path targets / planted toes: %s).",
                measured, (int)GRAPH_COUNT, (int)PATH_COUNT, met[0], met[2],
-               met[1], met[2]);
+               met[1], met[2], per_graph);
 }
 
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
