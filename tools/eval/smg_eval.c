@@ -128,12 +128,13 @@ static void repo_relative(const char* path, char* out, size_t size) {
 
 static void write_header(eval_ctx* ctx, const char* shared) {
   char cpu[256], commit[64], dirty[8], date[64], kernel[256], load[128];
-  char data[1024];
+  char data[1024], bandai[1024];
   time_t now = time(NULL);
   struct tm tmv;
   long cores = sysconf(_SC_NPROCESSORS_ONLN), mem = mem_total_mib();
   cpu_model(cpu, sizeof(cpu));
   repo_relative(ctx->cmu_dir, data, sizeof(data));
+  repo_relative(ctx->bandai_dir, bandai, sizeof(bandai));
   command_line("git rev-parse --short HEAD 2>/dev/null", commit,
                sizeof(commit));
   /* Dirty = tracked changes other than this report and its figures. */
@@ -158,11 +159,13 @@ static void write_header(eval_ctx* ctx, const char* shared) {
           "| Commit | `%s%s` |\n"
           "| Date | %s |\n"
           "| Load average (1/5/15 min) at start | %s |\n"
-          "| Data | `%s` (%s) |\n\n",
+          "| Data | `%s` (%s); `%s` (%s) |\n\n",
           cpu, cores, mem, kernel[0] ? kernel : "unknown OS",
           commit[0] ? commit : "unknown", dirty[0] ? "-dirty" : "", date,
           load[0] ? load : "unknown", data,
-          ctx->have_cmu ? "CMU clips found" : "CMU clips NOT found");
+          ctx->have_cmu ? "CMU clips found" : "CMU clips NOT found", bandai,
+          ctx->have_bandai ? "Bandai Namco clips found"
+                           : "Bandai Namco clips NOT found");
   (void)shared;
 }
 
