@@ -220,24 +220,28 @@ done:
 }
 
 /* The graphs of the section: which blob (0 CMU, 1 sparse, 2 Bandai
- * Namco) and which style the character starts in (NULL: the first). */
+ * Namco), which style the character starts in (NULL: the first), and
+ * whether figures are drawn. The Bandai Namco clips are CC BY-NC-ND: a
+ * plot of motion made from them is an adaptation the repository must not
+ * carry, so those graphs get tables (measurements) only. */
 typedef struct follow_graph_spec {
   const char* key;   /* figure names: eval-follow-<key>-<path>.svg */
   const char* name;  /* table heading */
   const char* title; /* figure titles (short: the figures are narrow) */
   int blob;
   const char* style;
+  int figures;
 } follow_graph_spec;
 
 static const follow_graph_spec k_graphs[] = {
-    {"cmu", "CMU graph (data/cmu.manifest)", "CMU graph", 0, NULL},
+    {"cmu", "CMU graph (data/cmu.manifest)", "CMU graph", 0, NULL, 1},
     {"sparse", "Sparse graph (data/cmu-sparse.manifest)", "Sparse graph", 1,
-     NULL},
+     NULL, 1},
     {"bandai", "Bandai Namco graph (data/bandai.manifest)",
-     "Bandai Namco graph", 2, NULL},
+     "Bandai Namco graph", 2, NULL, 0},
     {"bandai-exhausted",
      "Bandai Namco graph (data/bandai.manifest), style `exhausted`",
-     "Bandai Namco graph, exhausted", 2, "exhausted"},
+     "Bandai Namco graph, exhausted", 2, "exhausted", 0},
 };
 #define GRAPH_COUNT (sizeof(k_graphs) / sizeof(k_graphs[0]))
 
@@ -360,7 +364,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
         met[2]++;
       }
     }
-    if (ctx->img_dir) draw(ctx, gs, p, path, n, &r[0], &r[1]);
+    if (ctx->img_dir && gs->figures) draw(ctx, gs, p, path, n, &r[0], &r[1]);
     free(r[0].hips);
     free(r[1].hips);
   }
@@ -372,7 +376,10 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
     eval_md(ctx, "The runtime reported the style `%s` on at least %.1f %% "
                  "of the frames of every run.\n\n", gs->style,
             100.0 * style_min);
-  if (ctx->img_dir) {
+  if (ctx->img_dir && !gs->figures)
+    eval_md(ctx, "No figures: the clips' license (CC BY-NC-ND) does not "
+                 "allow sharing motion made from them.\n\n");
+  if (ctx->img_dir && gs->figures) {
     eval_md(ctx, "Hips seen from above, steering off (dashed) and on:\n\n");
     for (k = 0; k < PATH_COUNT; ++k)
       eval_md(ctx, "![%s, %s](%s/eval-follow-%s-%s.svg)\n", gs->name,
