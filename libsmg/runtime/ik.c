@@ -343,11 +343,19 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     if (foot->weight <= 0.0f) foot->let_go = 0;
     if (contact && !foot->planted && !foot->let_go) {
       foot->planted = 1;
-      foot->landing = 1;
-      /* the animation has the foot exactly there now: whatever correction
-       * a blend-out toward the previous anchor left is no guess for it */
-      memcpy(foot->fix[0], k_identity, sizeof k_identity);
-      memcpy(foot->fix[1], k_identity, sizeof k_identity);
+      /* A contact that starts while the last one's correction is still
+       * shown (a label flickering off for a step) holds the same anchor
+       * again: a new anchor at the animated toe would move the pose by
+       * that whole correction in one step (17 cm on the sparse graph's
+       * U-turn). If the old anchor is too far, the drift check below lets
+       * it go, and the foot is planted anew once the weight is 0. */
+      if (foot->weight <= 0.0f) {
+        foot->landing = 1;
+        /* the animation has the foot exactly there now: no correction
+         * to start the solve from */
+        memcpy(foot->fix[0], k_identity, sizeof k_identity);
+        memcpy(foot->fix[1], k_identity, sizeof k_identity);
+      }
     } else if (!contact) {
       foot->planted = 0;
       foot->let_go = 0;
