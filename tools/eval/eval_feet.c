@@ -7,8 +7,8 @@
  * clips come from two performers: 02_01 + 06_01 walks on 02_01's skeleton,
  * the dribble graph of section 3, and with the Bandai Namco clips, their
  * graph on its own skeleton and the CMU set followed by them on the CMU
- * skeleton) and every path of section 2, one character runs with foot IK on and one
- * with it off; both get the geometric planted-toe speed (mean, p95, p99),
+ * skeleton) and every path of section 2, one character runs with foot IK
+ * on and one with it off; both get the geometric planted-toe speed (mean, p95, p99),
  * the lowest toe height, and, beside them, the flag-based skate of section
  * 2. The reference is the same measure on the graph's own source clips
  * (unmirrored lower clips as stored in the blob, i.e. after retargeting):
@@ -375,10 +375,15 @@ static smg_result bake_bandai(const eval_ctx* ctx, int after_cmu,
                               smg_bake_result* out, char* err,
                               size_t err_size) {
   smgb_manifest mix;
-  smg_result r = smgb_manifest_init(&mix, NULL);
+  smg_result r;
   memset(out, 0, sizeof(*out));
   out->struct_size = sizeof(*out);
-  if (r == SMG_OK && after_cmu)
+  r = smgb_manifest_init(&mix, NULL);
+  if (r != SMG_OK) {
+    snprintf(err, err_size, "out of memory");
+    return r;
+  }
+  if (after_cmu)
     r = add_manifest(&mix, ctx->manifest, ctx->cmu_dir, err, err_size);
   if (r == SMG_OK)
     r = add_manifest(&mix, ctx->bandai_manifest, ctx->bandai_dir, err,
