@@ -380,7 +380,7 @@ static smg_result bake_bandai(const eval_ctx* ctx, int after_cmu,
   out->struct_size = sizeof(*out);
   r = smgb_manifest_init(&mix, NULL);
   if (r != SMG_OK) {
-    snprintf(err, err_size, "out of memory");
+    snprintf(err, err_size, "manifest: %s", smg_result_string(r));
     return r;
   }
   if (after_cmu)
