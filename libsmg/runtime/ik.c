@@ -1,7 +1,8 @@
 /*
  * ik.c - foot cleanup. When a foot's contact label (FRMI) begins, the
  * toe's world position is recorded, and again each step while the animated
- * toe still descends (it lands after the heel); while the contact lasts,
+ * toe still descends (it lands after the heel) and is above the floor the
+ * foot was last held on; while the contact lasts,
  * cyclic coordinate descent on hip and knee moves the ankle to where the
  * animation has it relative to the toe, placed at that anchor horizontally
  * and at the animation's height - so a flat foot stays put and a rolling
@@ -9,10 +10,11 @@
  * on the floor the data has. The ankle keeps its animated world
  * orientation, which puts the toe on the anchor. The correction blends in
  * over SMGI_IK_BLEND seconds and, once released, out as the toe rises off
- * the floor (within SMGI_IK_RELEASE_BLEND seconds), eased at both ends, so
- * contact changes never pop. A contact whose anchor
- * drifted implausibly far (a re-plan moved the body) is released rather
- * than stretched. Each solve starts from the foot's previous correction
+ * the floor (or, for a foot that shuffles on, over a short distance of the
+ * toe's own travel), eased at both ends, so contact changes never pop. A
+ * contact whose anchor drifted implausibly far (a re-plan moved the body)
+ * is released rather than stretched, and planted anew only once that
+ * correction is gone. Each solve starts from the foot's previous correction
  * (see solve_leg), and IK refreshes the world transform cache of the joints
  * it moved itself.
  */
@@ -312,7 +314,10 @@ void smgi_ik_reset(smgi_ik* ik) {
     ik->feet[f].planted = 0;
     ik->feet[f].weight = 0.0f;
     ik->feet[f].landing = 0;
-    ik->feet[f].toe_y = INFINITY;
+    ik->feet[f].let_go = 0;
+    ik->feet[f].toe[0] = ik->feet[f].toe[2] = 0.0f;
+    ik->feet[f].toe[1] = INFINITY;
+    ik->feet[f].floor_y = -INFINITY;
     memcpy(ik->feet[f].fix[0], k_identity, sizeof k_identity);
     memcpy(ik->feet[f].fix[1], k_identity, sizeof k_identity);
   }
@@ -335,47 +340,79 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     uint32_t toe = legs[f][3] < ch->joint_count ? legs[f][3] : ankle;
     const float* ap = ch->pose.wpos + 3u * toe;
     int contact = (ch->pose.contacts & bits[f]) != 0;
-    if (contact && !foot->planted) {
+    if (foot->weight <= 0.0f) foot->let_go = 0;
+    if (contact && !foot->planted && !foot->let_go) {
       foot->planted = 1;
-      foot->landing = 1;
-      /* the animation has the foot exactly there now: whatever correction
-       * a blend-out toward the previous anchor left is no guess for it */
-      memcpy(foot->fix[0], k_identity, sizeof k_identity);
-      memcpy(foot->fix[1], k_identity, sizeof k_identity);
+      /* A contact that starts while the last one's correction is still
+       * shown (a label flickering off for a step) holds the same anchor
+       * again: a new anchor at the animated toe would move the pose by
+       * that whole correction in one step (17 cm on the sparse graph's
+       * U-turn). If the old anchor is too far, the drift check below lets
+       * it go, and the foot is planted anew once the weight is 0. */
+      if (foot->weight <= 0.0f) {
+        foot->landing = 1;
+        /* the animation has the foot exactly there now: no correction
+         * to start the solve from */
+        memcpy(foot->fix[0], k_identity, sizeof k_identity);
+        memcpy(foot->fix[1], k_identity, sizeof k_identity);
+      }
     } else if (!contact) {
       foot->planted = 0;
+      foot->let_go = 0;
     }
     /* A contact label starts when the heel OR the toe is down: at a heel
      * strike the toe is still coming down and forward. The anchor follows
      * the animated toe while it descends and holds from the first step on
      * which it does not (or once the correction has blended in fully: a
      * toe that keeps sinking a little through a stance is down), so the
-     * toe is held where it lands, not in the air (on a graph of two performers the old anchor at the heel strike
-     * held toes 6 cm up). */
+     * toe is held where it lands, not in the air (on a graph of two
+     * performers the old anchor at the heel strike held toes 6 cm up).
+     * It also holds once the toe is within SMGI_IK_CLEAR of the height
+     * the foot was last held at: the last centimetre of a landing rolls
+     * the toe forward along the floor (20-50 cm/s on the CMU walks), and
+     * following it there was a slide. */
     if (foot->planted && foot->landing) {
       memcpy(foot->anchor, ap, sizeof foot->anchor);
-      if (!(ap[1] < foot->toe_y) || foot->weight >= 1.0f) foot->landing = 0;
+      if (!(ap[1] < foot->toe[1]) || foot->weight >= 1.0f ||
+          ap[1] <= foot->floor_y + SMGI_IK_CLEAR * info->leg_length) {
+        foot->landing = 0;
+        foot->floor_y = ap[1];
+      }
     }
-    foot->toe_y = ap[1];
+    float travel = 0.0f; /* the animated toe's ground step since the last */
+    if (foot->toe[1] < INFINITY) {
+      const float sx = ap[0] - foot->toe[0], sz = ap[2] - foot->toe[2];
+      travel = sqrtf(sx * sx + sz * sz);
+    }
+    memcpy(foot->toe, ap, sizeof foot->toe);
     if (foot->planted) {
       float dx = foot->anchor[0] - ap[0], dz = foot->anchor[2] - ap[2];
       float lim = SMGI_IK_RELEASE * info->leg_length;
       if (dx * dx + dz * dz > lim * lim) {
-        foot->planted = 0; /* implausible: let go smoothly */
+        /* implausible: let go smoothly; planted anew only once the
+         * old correction is gone (at once, the pose would jump to the new
+         * anchor) */
+        foot->planted = 0;
+        foot->let_go = 1;
       }
     }
     if (foot->planted) {
       foot->weight += step_in;
     } else {
       /* A released foot lets its correction go as the animated toe rises
-       * off the floor (by SMGI_IK_LIFT leg lengths above where it was
-       * held), so the correction returns in the air, not as a slide while
-       * the toe pushes off; and within SMGI_IK_RELEASE_BLEND seconds at
-       * most, for a foot that shuffles on without lifting. */
-      float by_time = foot->weight - dt / SMGI_IK_RELEASE_BLEND;
-      float by_lift = 1.0f - (ap[1] - foot->anchor[1]) /
+       * off the floor (over SMGI_IK_LIFT leg lengths once it is
+       * SMGI_IK_CLEAR above where it was held), so the correction returns
+       * in the air, not as a slide while the toe rolls and pushes off; and
+       * over SMGI_IK_LET_GO leg lengths of the toe's own travel at most,
+       * for a foot that shuffles on without lifting (a fixed 0.3 s there
+       * dragged toes still on the floor: the release then went on at the
+       * same rate whether the foot moved or not). */
+      float by_travel =
+          foot->weight - travel / (SMGI_IK_LET_GO * info->leg_length);
+      float by_lift = 1.0f - (ap[1] - foot->anchor[1] -
+                              SMGI_IK_CLEAR * info->leg_length) /
                                  (SMGI_IK_LIFT * info->leg_length);
-      foot->weight = by_time < by_lift ? by_time : by_lift;
+      foot->weight = by_travel < by_lift ? by_travel : by_lift;
     }
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
     if (foot->weight > 0.0f) {

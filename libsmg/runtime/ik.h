@@ -14,9 +14,15 @@ typedef struct smgi_foot {
   uint32_t planted;    /* contact currently anchored */
   float anchor[3];     /* world toe position held while planted (x and z
                           are held; the height is always the animation's) */
-  float toe_y;         /* the animated toe's height at the previous step */
+  float toe[3];        /* the animated toe at the previous step (y
+                          INFINITY: none yet) */
+  float floor_y;       /* height the toe was last held at (-INFINITY:
+                          none yet) */
   uint32_t landing;    /* planted, but the animated toe still descends:
                           the anchor follows it until it stops */
+  uint32_t let_go;     /* released during a contact (its anchor drifted
+                          too far): not planted again before the weight
+                          is back to 0 or the contact ends */
   float weight;        /* IK blend weight 0..1 */
   float fix[2][4];     /* world-space hip and knee rotations the last solve
                           added (identity when the foot was not solved): the

@@ -96,10 +96,8 @@
 
 /* ---- foot IK (ik.c) ---- */
 #define SMGI_IK_BLEND 0.1f      /* seconds to blend a planted foot in */
-#define SMGI_IK_RELEASE_BLEND 0.3f /* seconds at most to blend a
-                                      released foot out */
-#define SMGI_IK_LIFT 0.05f      /* leg lengths the animated toe rises above
-                                   where it was held while a released
+#define SMGI_IK_LIFT 0.05f      /* leg lengths the animated toe rises,
+                                   beyond SMGI_IK_CLEAR, while a released
                                    foot's correction returns (about 4 cm):
                                    it returns in the air, not while the toe
                                    pushes off. A fixed 0.1 s return added
@@ -107,11 +105,22 @@
                                    floor (02_01 + 06_01); a fixed 0.2 s
                                    one ran into the low swing of the
                                    synthetic walk on a Mixamo rig. */
+#define SMGI_IK_CLEAR 0.03f     /* leg lengths (about 2.5 cm) of toe roll
+                                   near the floor: a released toe below
+                                   this above where it was held, or a
+                                   landing toe below this above where the
+                                   foot was held last, is still on the
+                                   floor */
+#define SMGI_IK_LET_GO 0.15f    /* leg lengths of the animated toe's own
+                                   travel over which a released foot lets
+                                   its correction go at most (a foot that
+                                   shuffles on without lifting) */
 #define SMGI_IK_ITERATIONS 8u   /* CCD sweeps at most */
 #define SMGI_IK_RELEASE 0.35f   /* anchor drift, in leg lengths, that lets
                                    a contact go */
-#define SMGI_IK_TOLERANCE 2e-3f /* metres beyond the closest the leg can
-                                   reach */
+#define SMGI_IK_TOLERANCE 2e-4f /* metres beyond the closest the leg can
+                                   reach (2 mm let a held toe jitter by
+                                   up to 6 cm/s at 30 Hz) */
 
 /* ---- root steering (steer.c) ---- */
 /* Defaults of the public limits (smg_character_desc). */

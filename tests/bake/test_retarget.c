@@ -475,10 +475,12 @@ static void test_clip_without_legs(void** state) {
 /* Bakes `manifest` (clips in `data_dir`) onto `rig` (NULL: the first
  * clip's skeleton), walks the paths with the runtime's foot IK off and on
  * and prints one row of the measurement table in docs/baker.md. `worst`
- * gets the IK-off walk: what the baked motion itself does. */
+ * gets the IK-off walk (what the baked motion itself does), `with_ik` the
+ * walk with the runtime's foot IK (the default). */
 static void measure_set(const char* label, const char* manifest,
                         const char* data_dir, const char* rig,
-                        rm_result* worst, double* path_mean) {
+                        rm_result* worst, double* path_mean,
+                        rm_result* with_ik) {
   smgb_manifest m;
   smgb_error err;
   smg_bake_clip_desc descs[64];
@@ -486,7 +488,6 @@ static void measure_set(const char* label, const char* manifest,
   smg_bake_result res;
   smgi_graph_data gd;
   smg_graph* g = NULL;
-  rm_result with_ik;
   double len[256], ik_mean;
   uint32_t toes[2], j;
   if (smgb_manifest_load(manifest, data_dir, &m, &err) != SMG_OK)
@@ -515,13 +516,13 @@ static void measure_set(const char* label, const char* manifest,
   assert_int_equal(smg_graph_load_memory(res.blob, res.blob_size, NULL, &g),
                    SMG_OK);
   walk_all(g, SMG_CHARACTER_NO_IK, len, toes, worst, path_mean);
-  walk_all(g, 0, len, toes, &with_ik, &ik_mean);
+  walk_all(g, 0, len, toes, with_ik, &ik_mean);
   printf("| %-30s | %2u | %4.2f | %3.1f / %3.1f | %4.1f | %4.1f | "
          "%5.3f / %4.2f | %5.3f / %4.2f |\n",
          label, gd.joint_count, 1e3 * worst->bone_error_m,
          worst->toe_floor_cm[0], worst->toe_floor_cm[1], worst->planted_cms,
-         with_ik.planted_cms, *path_mean, worst->path_error_max_m, ik_mean,
-         with_ik.path_error_max_m);
+         with_ik->planted_cms, *path_mean, worst->path_error_max_m, ik_mean,
+         with_ik->path_error_max_m);
   smg_graph_destroy(g);
   smg_bake_result_free(&res);
   smgb_manifest_free(&m);
@@ -531,7 +532,7 @@ static void measure_set(const char* label, const char* manifest,
  * on its own skeleton and on the generated rig. Skips without ../shared. */
 static void test_cmu_onto_rig(void** state) {
   const char* dir = smgt_cmu_dir();
-  rm_result own, on_rig;
+  rm_result own, on_rig, own_ik, rig_ik;
   double own_mean, rig_mean;
   (void)state;
   if (!dir || smgt_quick()) {
@@ -542,13 +543,16 @@ static void test_cmu_onto_rig(void** state) {
          "| planted toe cm/s, IK off | IK on | path error mean / max m, IK "
          "off | IK on |\n");
   measure_set("(c) CMU cmu.manifest -> own", "data/cmu.manifest", dir, NULL,
-              &own, &own_mean);
+              &own, &own_mean, &own_ik);
   measure_set("(c) CMU cmu.manifest -> rig", "data/cmu.manifest", dir,
-              g_rig, &on_rig, &rig_mean);
+              g_rig, &on_rig, &rig_mean, &rig_ik);
   assert_true(on_rig.bone_error_m < 1e-3);
   assert_true(on_rig.toe_floor_cm[0] >= 0.0 && on_rig.toe_floor_cm[0] <= 5.0);
   assert_true(on_rig.toe_floor_cm[1] >= 0.0 && on_rig.toe_floor_cm[1] <= 5.0);
   assert_true(on_rig.planted_cms <= 20.0);
+  /* the issue's 20 cm/s with the runtime's foot IK on (the default), on
+   * the rig and on the CMU skeleton itself */
+  assert_true(rig_ik.planted_cms <= 20.0 && own_ik.planted_cms <= 20.0);
   assert_true(rig_mean <= 1.5 * own_mean + 0.05);
 }
 
@@ -603,7 +607,7 @@ static void test_bandai_sets(void** state) {
   const char* bn = bandai_dir();
   char a_path[400], b_path[400], line[512];
   FILE *f, *src;
-  rm_result own, mixed;
+  rm_result own, mixed, own_ik, mixed_ik;
   double own_mean, mixed_mean;
   (void)state;
   if (!cmu || !bn || smgt_quick()) {
@@ -633,21 +637,25 @@ static void test_bandai_sets(void** state) {
   bandai_lines(f, bn);
   fclose(f);
   measure_set("(a) Bandai Namco -> own", a_path, NULL, NULL, &own,
-              &own_mean);
+              &own_mean, &own_ik);
   measure_set("(b) CMU + Bandai Namco -> CMU", b_path, NULL, NULL, &mixed,
-              &mixed_mean);
+              &mixed_mean, &mixed_ik);
   /* Checks on what retargeting owns. The toe floor is a 5th percentile of
    * what the runtime exports (blends included): within 5 mm of the floor
    * counts as on it. The Bandai Namco clips skate more than 20 cm/s by this
-   * measure on their own skeleton already (see docs/baker.md), so the
-   * mixed set is held to its sources instead. Mixing the two performers
-   * raises it further (transitions between them: 43 vs 34 cm/s without
-   * IK, 33 vs 30 with it, measured with root steering on), a known gap
-   * this bound keeps from growing. */
+   * measure on their own skeleton already (see docs/baker.md: about 85 %
+   * of it is swing toes passing 1-2.5 cm above the floor at 2-4 m/s, the
+   * data's own low clearance, which foot IK does not touch), so the sets
+   * are held to what the runtime adds: with foot IK the planted toes must
+   * be slower than the baked motion's own (27 vs 34 cm/s on (a), 31 vs 43
+   * on (b)), and the mixed set within 1.4x its sources. */
   assert_true(own.bone_error_m < 1e-3 && mixed.bone_error_m < 1e-3);
   assert_true(mixed.toe_floor_cm[0] >= -0.5 && mixed.toe_floor_cm[0] <= 5.0);
   assert_true(mixed.toe_floor_cm[1] >= -0.5 && mixed.toe_floor_cm[1] <= 5.0);
   assert_true(mixed.planted_cms <= 1.4 * own.planted_cms + 2.0);
+  assert_true(own_ik.planted_cms < own.planted_cms);
+  assert_true(mixed_ik.planted_cms < mixed.planted_cms);
+  assert_true(mixed_ik.planted_cms <= 1.4 * own_ik.planted_cms + 2.0);
   assert_true(mixed_mean <= 1.5 * own_mean + 0.05);
 }
 

@@ -3,10 +3,12 @@
  * they are on the floor, judged from the exported toe positions alone
  * (tools/eval/eval_feet_geom.h), never from the runtime's contact flags.
  *
- * For every graph (the paper-size CMU blob of section 1, and a graph whose
- * clips come from two performers: 02_01 + 06_01 walks on 02_01's skeleton)
- * and every path of section 2, one character runs with foot IK on and one
- * with it off; both get the geometric planted-toe speed (mean, p95, p99),
+ * For every graph (the paper-size CMU blob of section 1, a graph whose
+ * clips come from two performers: 02_01 + 06_01 walks on 02_01's skeleton,
+ * the dribble graph of section 3, and with the Bandai Namco clips, their
+ * graph on its own skeleton and the CMU set followed by them on the CMU
+ * skeleton) and every path of section 2, one character runs with foot IK
+ * on and one with it off; both get the geometric planted-toe speed (mean, p95, p99),
  * the lowest toe height, and, beside them, the flag-based skate of section
  * 2. The reference is the same measure on the graph's own source clips
  * (unmirrored lower clips as stored in the blob, i.e. after retargeting):
@@ -17,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_manifest.h"
 #include "blob.h"
 #include "eval_ctx.h"
 #include "eval_feet_geom.h"
@@ -75,11 +78,18 @@ typedef struct feet_joints {
   uint32_t lfoot, ltoe, rfoot, rtoe;
 } feet_joints;
 
-static int find_feet(smg_graph* g, feet_joints* j) {
-  return smg_graph_find_joint(g, "LeftFoot", &j->lfoot) == SMG_OK &&
-         smg_graph_find_joint(g, "LeftToeBase", &j->ltoe) == SMG_OK &&
-         smg_graph_find_joint(g, "RightFoot", &j->rfoot) == SMG_OK &&
-         smg_graph_find_joint(g, "RightToeBase", &j->rtoe) == SMG_OK;
+/* Ankles and toes as the baker found them (body roles, any naming). */
+static int find_feet(const void* blob, size_t size, feet_joints* j) {
+  smgi_graph_data gd;
+  char why[256];
+  if (smgi_blob_read(blob, size, 0, &gd, why, sizeof(why)) != SMG_OK)
+    return 0;
+  j->lfoot = gd.info->left_leg[2];
+  j->ltoe = gd.info->left_leg[3];
+  j->rfoot = gd.info->right_leg[2];
+  j->rtoe = gd.info->right_leg[3];
+  return j->lfoot < gd.joint_count && j->ltoe < gd.joint_count &&
+         j->rfoot < gd.joint_count && j->rtoe < gd.joint_count;
 }
 
 /* One run's feet. */
@@ -198,7 +208,7 @@ static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
   double *pos = NULL, *toe = NULL, *speed = NULL, *all = NULL;
   double lowest = INFINITY, sum = 0.0;
   size_t m = 0, total = 0;
-  uint32_t c, i, J, lt = 0, rt = 0, have = 0;
+  uint32_t c, i, J, lt, rt;
   int ok = 0;
   memset(out, 0, sizeof(*out));
   out->mean_cms = out->p95_cms = out->p99_cms = out->max_cms = NAN;
@@ -208,12 +218,9 @@ static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
   if (smgi_blob_read(blob, size, 0, &gd, why, sizeof(why)) != SMG_OK)
     return 0;
   J = gd.joint_count;
-  for (i = 0; i < J; ++i) {
-    const char* name = gd.strings + gd.joints[i].name;
-    if (!strcmp(name, "LeftToeBase")) lt = i, have |= 1;
-    if (!strcmp(name, "RightToeBase")) rt = i, have |= 2;
-  }
-  if (have != 3) return 0;
+  lt = gd.info->left_leg[3];
+  rt = gd.info->right_leg[3];
+  if (lt >= J || rt >= J) return 0;
   for (c = 0; c < gd.clip_count; ++c) total += gd.clips[c].frame_count;
   parents = (int32_t*)malloc(J * sizeof(int32_t));
   offsets = (float*)malloc(3 * J * sizeof(float));
@@ -342,6 +349,55 @@ static smg_result bake_pair(const eval_ctx* ctx, const char* lower,
   return r;
 }
 
+/* Appends every clip of the manifest at `path` (clips in `dir`) to `mix`
+ * (whose root is the current folder, where those clip paths resolve). */
+static smg_result add_manifest(smgb_manifest* mix, const char* path,
+                               const char* dir, char* err, size_t err_size) {
+  smgb_manifest m;
+  smgb_error e;
+  smg_result r;
+  uint32_t i;
+  memset(&e, 0, sizeof(e));
+  r = smgb_manifest_load(path, dir, &m, &e);
+  if (r == SMG_OK) {
+    if (mix->clip_count == 0) mix->frame_rate = m.frame_rate;
+    for (i = 0; i < m.clip_count && r == SMG_OK; ++i)
+      r = smgb_manifest_add(mix, &m.clips[i], m.clips[i].path, 0, &e);
+    smgb_manifest_free(&m);
+  }
+  if (r != SMG_OK) snprintf(err, err_size, "%s: %.400s", path, e.message);
+  return r;
+}
+
+/* The Bandai Namco set (the Bandai manifest) on its own skeleton, or after
+ * the CMU paper set, all on the CMU skeleton (its first clip's). */
+static smg_result bake_bandai(const eval_ctx* ctx, int after_cmu,
+                              smg_bake_result* out, char* err,
+                              size_t err_size) {
+  smgb_manifest mix;
+  smg_result r;
+  memset(out, 0, sizeof(*out));
+  out->struct_size = sizeof(*out);
+  r = smgb_manifest_init(&mix, NULL);
+  if (r != SMG_OK) {
+    snprintf(err, err_size, "manifest: %s", smg_result_string(r));
+    return r;
+  }
+  if (after_cmu)
+    r = add_manifest(&mix, ctx->manifest, ctx->cmu_dir, err, err_size);
+  if (r == SMG_OK)
+    r = add_manifest(&mix, ctx->bandai_manifest, ctx->bandai_dir, err,
+                     err_size);
+  if (r == SMG_OK) {
+    r = eval_bake_manifest(&mix, 0, out);
+    if (r != SMG_OK)
+      snprintf(err, err_size, "bake: %s: %.400s", smg_result_string(r),
+               out->error);
+  }
+  smgb_manifest_free(&mix);
+  return r;
+}
+
 typedef struct feet_graph {
   const char* name;
   const void* blob;
@@ -440,7 +496,7 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
   double mean_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
   double p99_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
   if (smg_graph_load_memory(fg->blob, fg->size, NULL, &g) != SMG_OK ||
-      !find_feet(g, &j)) {
+      !find_feet(fg->blob, fg->size, &j)) {
     eval_md(ctx, "| %s | Not produced: the blob does not load or lacks the "
                  "foot joints | | | | | |\n", fg->name);
     if (g) smg_graph_destroy(g);
@@ -541,7 +597,7 @@ static void draw_straight(eval_ctx* ctx, const void* blob, size_t size) {
   uint32_t walk = 0, nc;
   size_t n = build_path(&k_paths[0], xz, MAX_PATH_POINTS), i;
   if (smg_graph_load_memory(blob, size, NULL, &g) != SMG_OK) return;
-  if (find_feet(g, &j)) {
+  if (find_feet(blob, size, &j)) {
     smg_graph_find_style(g, "walk", &walk);
     for (i = 0; i < 2 * n; ++i) path[i] = (float)xz[i];
     nc = constraints(g, em_polyline_length(xz, n), cons);
@@ -623,6 +679,30 @@ void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
     feet_graph_run(ctx, &fg);
   } else if (!ctx->quick) {
     eval_md(ctx, "\nDribble graph not produced: %s\n", err);
+  }
+  /* issue 14's (a) and (b): another studio's performer and skeleton */
+  if (!ctx->quick && !ctx->have_bandai) {
+    eval_md(ctx, "\nBandai Namco graphs not produced: the clips are not "
+                 "at `%s`.\n", ctx->bandai_dir);
+  } else if (!ctx->quick) {
+    static const char* const names[2] = {
+        "Bandai Namco (own skeleton)",
+        "CMU paper set + Bandai Namco (CMU skeleton)"};
+    int k;
+    for (k = 0; k < 2; ++k) {
+      smg_bake_result bn;
+      if (bake_bandai(ctx, k, &bn, err, sizeof(err)) == SMG_OK) {
+        fg.name = names[k];
+        fg.blob = bn.blob;
+        fg.size = bn.blob_size;
+        fg.with_constraints = 0;
+        fg.splice = NULL;
+        feet_graph_run(ctx, &fg);
+      } else {
+        eval_md(ctx, "\n%s graph not produced: %s\n", names[k], err);
+      }
+      smg_bake_result_free(&bn);
+    }
   }
   eval_md(ctx, "\n");
   if (have_mixed) smg_bake_result_free(&mixed);
