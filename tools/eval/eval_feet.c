@@ -39,6 +39,7 @@
  * (IK does not change the plan, so frame i is the same lower frame in
  * both): a pair as fast without IK is the animation's own. */
 #define FAST_CMS 100.0
+#define FAST_LISTED 4u /* clips named in the "pairs over FAST_CMS" list */
 
 /* Planted pairs faster than FAST_CMS in a per-frame speed series (NaN =
  * not planted). */
@@ -208,7 +209,7 @@ static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
   double *pos = NULL, *toe = NULL, *speed = NULL, *all = NULL;
   double lowest = INFINITY, sum = 0.0;
   size_t m = 0, total = 0;
-  uint32_t c, i, J, lt, rt;
+  uint32_t c, i, J, lt, rt, listed = 0, unlisted = 0;
   int ok = 0;
   memset(out, 0, sizeof(*out));
   out->mean_cms = out->p95_cms = out->p99_cms = out->max_cms = NAN;
@@ -259,19 +260,29 @@ static int source_clips(const void* blob, size_t size, eval_feet_geom* out,
         all[m++] = speed[f];
         sum += speed[f];
       }
-    /* which clips have them: "N: clip n, clip n" */
+    /* which clips have them: "N: clip n, clip n", the first
+     * FAST_LISTED clips by name, the rest counted (a line stays short) */
     {
       size_t nf = count_fast(speed, 2 * (size_t)k->frame_count), len;
       len = strlen(fast);
-      if (nf && len + 1 < fast_size)
+      if (nf && listed < FAST_LISTED && len + 1 < fast_size) {
         snprintf(fast + len, fast_size - len, "%s%s %zu",
                  len ? ", " : "", gd.strings + k->name, nf);
+        ++listed;
+      } else if (nf) {
+        ++unlisted;
+      }
     }
     if (g.lowest_cm < lowest) lowest = g.lowest_cm;
     out->frames += k->frame_count;
     ++*clip_count;
   }
   out->planted_pairs = m;
+  if (unlisted) {
+    size_t len = strlen(fast);
+    snprintf(fast + len, fast_size - len, ", %u more clip%s", unlisted,
+             unlisted == 1 ? "" : "s");
+  }
   {
     /* the total first, then the clips listed above */
     char total[32];
@@ -491,7 +502,7 @@ static void feet_graph_run(eval_ctx* ctx, const feet_graph* fg) {
   eval_feet_geom src;
   uint32_t nsrc, walk = 0;
   size_t p, fast_on = 0, fast_both = 0;
-  char fast[192], src_fast[192] = "";
+  char fast[192], src_fast[320] = "";
   /* ranges over the paths for the summary: [IK on, IK off] x [lo, hi] */
   double mean_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
   double p99_r[2][2] = {{INFINITY, -INFINITY}, {INFINITY, -INFINITY}};
