@@ -108,7 +108,8 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
-  const float cw = cosf(W.h), sw = sinf(W.h);
+  float cw, sw;
+  smgi_sincosf(W.h, &sw, &cw);
   for (uint32_t k = 0; k < count; ++k) {
     cand* x = &c[k];
     uint32_t ei = n->first_edge + k;
