@@ -401,6 +401,6 @@ void smgi_seq_init(smgi_seq_ctx* c, const smg_character* ch, smgi_xform2 W,
   end_target(ch, &c->tx, &c->tz);
   c->style0 = smgi_style_at(&ch->cons, s);
   c->style_end = smgi_next_constraint_arc(&ch->cons, s);
-  c->budget = SMGI_SEQ_BUDGET;
+  c->budget = smgi_seq_budget(ch);
 }
 

@@ -179,7 +179,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
     c[k].work = 1u;
     if (!isfinite(c[k].score)) c[k].score = INFINITY;
   }
-  c[0].work = SMGI_SEQ_BUDGET - pool;
+  c[0].work = smgi_seq_budget(ch) - pool;
   if (seq_len) {
     /* the best sequence: the one the search found, or (when no search
      * beat an estimate) just the best candidate, decided below */
@@ -215,7 +215,7 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
   if (n > 0 && following && c[0].seq_err > SMGI_YIELD_ERROR &&
       smgi_derived_of(ch->graph)->agile_style != smgi_style_at(&ch->cons, s)) {
     n = rank_pass(ch, node, W, s, seg, c, seq, seq_len, 1, &following);
-    for (uint32_t i = 0; i < n; ++i) c[i].work = i == 0 ? 2u * SMGI_SEQ_BUDGET : 0u;
+    for (uint32_t i = 0; i < n; ++i) c[i].work = i == 0 ? 2u * smgi_seq_budget(ch) : 0u;
   }
   return n;
 }
