@@ -286,7 +286,7 @@ typedef struct delta {
   float c, s, da, px, pz, tx, tz;
 } delta;
 
-static void delta_xf(const delta* d, smgi_xform2* x) {
+static inline void delta_xf(const delta* d, smgi_xform2* x) {
   float vx = x->x - d->px, vz = x->z - d->pz;
   x->x = d->px + d->c * vx + d->s * vz + d->tx;
   x->z = d->pz - d->s * vx + d->c * vz + d->tz;
