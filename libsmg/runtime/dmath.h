@@ -1,7 +1,7 @@
 /*
  * dmath.h - the runtime's sine, cosine and atan2, computed from IEEE-754
- * basic operations only (+, -, *, /, floor, fmod), so they give the same
- * bits on every C library.
+ * basic operations only (+, -, *, /, fmod; round to nearest, the default
+ * mode), so they give the same bits on every C library.
  *
  * Why: libm's transcendental functions are not required to be correctly
  * rounded, and their last bit changes between implementations and
@@ -23,6 +23,8 @@
 #define SMG_DMATH_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 /* sin and cos of x (radians): within 1 ulp for |x| up to 1e9 (2 pi is
  * not a double, so beyond that the reduction drifts; still a point on the
@@ -37,9 +39,11 @@ static inline void smgi_sincosf(float x, float* s, float* c) {
     /* exact (fmod is), so the reduction below stays accurate */
     xd = fmod(xd, 6.283185307179586);
   }
-  /* nearest multiple of pi/2; pi/2 in two parts (the first has 33 bits,
-   * so k times it is exact for |k| < 2^20) */
-  const double k = floor(xd * 0.6366197723675814 + 0.5);
+  /* nearest multiple of pi/2 (adding and removing 1.5 * 2^52 rounds to
+   * an integer, which then sits in the low bits of kb); pi/2 in two parts
+   * (the first has 33 bits, so k times it is exact for |k| < 2^20) */
+  const double kb = xd * 0.6366197723675814 + 6755399441055744.0;
+  const double k = kb - 6755399441055744.0;
   const double r = (xd - k * 1.5707963267341256) - k * 6.077100506506192e-11;
   const double r2 = r * r;
   /* Taylor series on |r| <= pi/4, truncated below 2e-9 (sine, 1/30 of a
@@ -54,11 +58,14 @@ static inline void smgi_sincosf(float x, float* s, float* c) {
                   r2 * (1.0 / 24.0 +
                         r2 * (-1.0 / 720.0 +
                               r2 * (1.0 / 40320.0 + r2 * (-1.0 / 3628800.0)))));
-  /* quadrant 0..3 (two's complement: -1 & 3 = 3), without branches */
-  const long q = (long)k & 3L;
-  const double a = (q & 1L) ? cr : sr, b = (q & 1L) ? sr : cr;
-  *s = (float)((q & 2L) ? -a : a);
-  *c = (float)(((q + 1L) & 2L) ? -b : b);
+  /* quadrant 0..3: the low bits of k (two's complement in kb's
+   * mantissa), without branches */
+  uint64_t kbits;
+  memcpy(&kbits, &kb, sizeof kbits);
+  const unsigned q = (unsigned)kbits & 3u;
+  const double a = (q & 1u) ? cr : sr, b = (q & 1u) ? sr : cr;
+  *s = (float)((q & 2u) ? -a : a);
+  *c = (float)(((q + 1u) & 2u) ? -b : b);
 }
 
 static inline float smgi_sinf(float x) {
