@@ -22,7 +22,7 @@ CPPFLAGS_COMMON := -Iinclude -Ilibsmg/common -D_POSIX_C_SOURCE=200809L
 # The library never reads errno after a math call, so sqrtf compiles to
 # the bare instruction (no NaN check with a libm call behind it); results
 # are the same bits.
-MATHFLAGS := -fno-math-errno
+MATHFLAGS := -fno-math-errno -ffp-contract=off
 CFLAGS_LIB := $(CSTD) $(WARN) $(OPT) $(MATHFLAGS) -fPIC -fvisibility=hidden $(CPPFLAGS_COMMON)
 CFLAGS_TOOL := $(CSTD) $(WARN) $(OPT) $(CPPFLAGS_COMMON) -Ilibsmg/bake -Ilibsmg/runtime
 LDLIBS_M := -lm

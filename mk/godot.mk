@@ -122,7 +122,7 @@ GODOT_ASAN_SHIM := $(GODOT_ASAN)/nodeepbind.so
 $(GODOT_ASAN_EXT): $(GODOT_SRC) $(GODOT_HDR) $(GODOT_GEN) $(GODOT_IFACE) $(LIB_SRC) $(LIB_HDR)
 	@rm -rf $(GODOT_ASAN)/obj && mkdir -p $(GODOT_ASAN)/obj
 	@set -e; for f in $(LIB_SRC); do \
-		$(CC) $(CSTD) $(WARN) $(GODOT_ASAN_FLAGS) -fPIC $(CPPFLAGS_COMMON) -Ilibsmg/runtime \
+		$(CC) $(CSTD) $(WARN) $(GODOT_ASAN_FLAGS) $(MATHFLAGS) -fPIC $(CPPFLAGS_COMMON) -Ilibsmg/runtime \
 			-c $$f -o $(GODOT_ASAN)/obj/$$(echo $$f | tr / _).o; done
 	@set -e; for f in $(GODOT_SRC); do \
 		$(CC) $(GODOT_CFLAGS) $(GODOT_ASAN_FLAGS) -c $$f -o $(GODOT_ASAN)/obj/$$(echo $$f | tr / _).o; done

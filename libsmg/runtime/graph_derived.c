@@ -181,7 +181,8 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
       continue;
     }
     const smgi_edge* E = &d->lower_edges[natural[m]];
-    const float c = cosf(E->displacement[2]), s = sinf(E->displacement[2]);
+    float c, s;
+    smgi_sincosf(E->displacement[2], &s, &c);
     w->a[0] = E->displacement[0];
     w->a[1] = E->displacement[1];
     w->a[2] = c;
@@ -676,17 +677,13 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
         /* smgi_xf_inv: rotate (-x, -z) by -h, heading wrap(-h) */
         const float* g0 = d->frames[node->frame].root2d;
         const float nh = -g0[2];
-        c = cosf(nh);
-        s = sinf(nh);
+        smgi_sincosf(nh, &s, &c);
         ix = c * -g0[0] + s * -g0[1];
         iz = -s * -g0[0] + c * -g0[1];
         ih = smgi_wrap_angle(nh);
         /* smgi_xf_point rotates by the wrapped heading: the same angle
          * unless -h was outside (-pi, pi] */
-        if (ih != nh) {
-          c = cosf(ih);
-          s = sinf(ih);
-        }
+        if (ih != nh) smgi_sincosf(ih, &s, &c);
         have = 1;
       }
       const float* r = d->frames[E->first_frame + E->frame_count / 2u].root2d;

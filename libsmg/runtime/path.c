@@ -84,12 +84,12 @@ static float segment_heading(const smgi_path* p, uint32_t i) {
     uint32_t j = i + k <= last ? i + k : last;
     float dx = p->xz[2u * j + 2u] - p->xz[2u * j];
     float dz = p->xz[2u * j + 3u] - p->xz[2u * j + 1u];
-    if (dx * dx + dz * dz > 1e-12f) return atan2f(dx, dz);
+    if (dx * dx + dz * dz > 1e-12f) return smgi_atan2f(dx, dz);
     if (i >= k + 1u) {
       j = i - k - 1u;
       dx = p->xz[2u * j + 2u] - p->xz[2u * j];
       dz = p->xz[2u * j + 3u] - p->xz[2u * j + 1u];
-      if (dx * dx + dz * dz > 1e-12f) return atan2f(dx, dz);
+      if (dx * dx + dz * dz > 1e-12f) return smgi_atan2f(dx, dz);
     }
   }
   return 0.0f;

@@ -341,7 +341,8 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
       smgi_seq_state kids[SMGI_SEQ_MAX_KIDS];
       uint32_t kid_edge[SMGI_SEQ_MAX_KIDS], nk = 0;
       uint32_t cnt = n->edge_count < SMGI_SEQ_MAX_KIDS ? n->edge_count : SMGI_SEQ_MAX_KIDS;
-      const float cw = cosf(st.W.h), sw = sinf(st.W.h);
+      float cw, sw;
+      smgi_sincosf(st.W.h, &sw, &cw);
       for (uint32_t k = 0; k < cnt && c->budget > 0; ++k) {
         uint32_t ei = n->first_edge + k;
         smgi_seq_state nx;
@@ -371,7 +372,9 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
     smgi_seq_state nx;
     float md;
     c->budget--;
-    smgi_seq_step(c, &st, cosf(st.W.h), sinf(st.W.h), n->first_edge, 0.5f,
+    float cw, sw;
+    smgi_sincosf(st.W.h, &sw, &cw);
+    smgi_seq_step(c, &st, cw, sw, n->first_edge, 0.5f,
              *best, &nx, &md);
     st = nx;
     c->path[depth++] = n->first_edge;
@@ -398,6 +401,6 @@ void smgi_seq_init(smgi_seq_ctx* c, const smg_character* ch, smgi_xform2 W,
   end_target(ch, &c->tx, &c->tz);
   c->style0 = smgi_style_at(&ch->cons, s);
   c->style_end = smgi_next_constraint_arc(&ch->cons, s);
-  c->budget = SMGI_SEQ_BUDGET;
+  c->budget = smgi_seq_budget(ch);
 }
 

@@ -49,6 +49,15 @@ typedef struct smgi_seq_state {
   uint32_t seg;      /* path segment hint near s0 + u */
 } smgi_seq_state;
 
+/* Edge evaluations one ranking may spend. With root steering on, a
+ * ranking cost 1.5x the instructions (every root sample also values the
+ * steering's reach, and the whole budget was spent), while the residual
+ * error of a slightly worse sequence is corrected anyway: each ranking
+ * searches half as wide (docs/runtime.md, Root steering, measured). */
+static inline uint32_t smgi_seq_budget(const smg_character* ch) {
+  return ch->steer.enabled ? SMGI_SEQ_BUDGET_STEER : SMGI_SEQ_BUDGET;
+}
+
 /* Distance of a planned ground position W from the path point at s. */
 float smgi_plan_start_error(const smg_character* ch, smgi_xform2 W, float s,
                             uint32_t seg);

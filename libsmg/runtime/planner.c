@@ -108,7 +108,8 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
-  const float cw = cosf(W.h), sw = sinf(W.h);
+  float cw, sw;
+  smgi_sincosf(W.h, &sw, &cw);
   for (uint32_t k = 0; k < count; ++k) {
     cand* x = &c[k];
     uint32_t ei = n->first_edge + k;
@@ -178,7 +179,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
     c[k].work = 1u;
     if (!isfinite(c[k].score)) c[k].score = INFINITY;
   }
-  c[0].work = SMGI_SEQ_BUDGET - pool;
+  c[0].work = smgi_seq_budget(ch) - pool;
   if (seq_len) {
     /* the best sequence: the one the search found, or (when no search
      * beat an estimate) just the best candidate, decided below */
@@ -214,7 +215,7 @@ static uint32_t rank_node(const smg_character* ch, uint32_t node,
   if (n > 0 && following && c[0].seq_err > SMGI_YIELD_ERROR &&
       smgi_derived_of(ch->graph)->agile_style != smgi_style_at(&ch->cons, s)) {
     n = rank_pass(ch, node, W, s, seg, c, seq, seq_len, 1, &following);
-    for (uint32_t i = 0; i < n; ++i) c[i].work = i == 0 ? 2u * SMGI_SEQ_BUDGET : 0u;
+    for (uint32_t i = 0; i < n; ++i) c[i].work = i == 0 ? 2u * smgi_seq_budget(ch) : 0u;
   }
   return n;
 }

@@ -71,8 +71,7 @@ typedef struct placement {
 
 static void placement_init(smgi_xform2 M, placement* pl) {
   pl->M = M;
-  pl->c = cosf(M.h);
-  pl->s = sinf(M.h);
+  smgi_sincosf(M.h, &pl->s, &pl->c);
   smgi_q_yaw(M.h, pl->yaw);
 }
 

@@ -9,6 +9,8 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "dmath.h"
+
 #define SMGI_PI 3.14159265358979323846f
 
 /* A placement on the ground: translation (x, z) and heading about +Y. */
@@ -28,7 +30,8 @@ static inline float smgi_wrap_angle(float a) {
 
 /* Rotate a ground vector (x, z) by heading h: local +Z maps to forward. */
 static inline void smgi_rot2(float h, float x, float z, float* ox, float* oz) {
-  float c = cosf(h), s = sinf(h);
+  float c, s;
+  smgi_sincosf(h, &s, &c);
   *ox = c * x + s * z;
   *oz = -s * x + c * z;
 }
@@ -113,9 +116,8 @@ static inline void smgi_q_nlerp(const float* a, const float* b, float t,
 /* Rotation about +Y by angle h. */
 static inline void smgi_q_yaw(float h, float* o) {
   o[0] = 0.0f;
-  o[1] = sinf(0.5f * h);
+  smgi_sincosf(0.5f * h, &o[1], &o[3]);
   o[2] = 0.0f;
-  o[3] = cosf(0.5f * h);
 }
 
 static inline void smgi_q_rotate(const float* q, const float* v, float* o) {

@@ -84,8 +84,10 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
   smgi_path_eval(p, t, &seg, x, z, NULL);
   if (s > p->length) {
     float h = smgi_path_heading(p, seg);
-    *x += (s - p->length) * sinf(h);
-    *z += (s - p->length) * cosf(h);
+    float sh, ch;
+    smgi_sincosf(h, &sh, &ch);
+    *x += (s - p->length) * sh;
+    *z += (s - p->length) * ch;
   }
 }
 
@@ -284,7 +286,7 @@ typedef struct delta {
   float c, s, da, px, pz, tx, tz;
 } delta;
 
-static void delta_xf(const delta* d, smgi_xform2* x) {
+static inline void delta_xf(const delta* d, smgi_xform2* x) {
   float vx = x->x - d->px, vz = x->z - d->pz;
   x->x = d->px + d->c * vx + d->s * vz + d->tx;
   x->z = d->pz - d->s * vx + d->c * vz + d->tz;
@@ -315,12 +317,12 @@ void smgi_steer_apply(smg_character* ch, float dt) {
     if (frame_ground(ch, (uint32_t)(SMGI_STEER_FUTURE * ch->fps), &fx, &fz,
                      NULL) &&
         (fx - gx) * (fx - gx) + (fz - gz) * (fz - gz) > 1e-4f)
-      dir = atan2f(fx - gx, fz - gz);
+      dir = smgi_atan2f(fx - gx, fz - gz);
     look = smgi_clampf(s->own_speed * SMGI_STEER_LOOK_TIME, SMGI_STEER_LOOK_MIN,
                   SMGI_STEER_LOOK_MAX);
     point_ahead(p, ch->progress + look, ch->seg, &tx, &tz);
     if ((tx - gx) * (tx - gx) + (tz - gz) * (tz - gz) > 1e-4f)
-      want_turn = smgi_wrap_angle(atan2f(tx - gx, tz - gz) - dir) /
+      want_turn = smgi_wrap_angle(smgi_atan2f(tx - gx, tz - gz) - dir) /
                   SMGI_STEER_HEADING_TIME;
     /* position: towards the path, or towards the end while braking */
     float qx, qz;
@@ -381,8 +383,7 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   }
   delta d;
   d.da = s->turn * dt;
-  d.c = cosf(d.da);
-  d.s = sinf(d.da);
+  smgi_sincosf(d.da, &d.s, &d.c);
   d.px = gx;
   d.pz = gz;
   d.tx = s->slide[0] * dt;

@@ -30,8 +30,7 @@ static void features(const smg_graph* g, uint32_t frame, float* f) {
   f[0] = (fr->flags & SMGI_FRAME_LEFT_CONTACT) ? 1.0f : 0.0f;
   f[1] = (fr->flags & SMGI_FRAME_RIGHT_CONTACT) ? 1.0f : 0.0f;
   if (fr->phase >= 0.0f) {
-    f[2] = cosf(2.0f * SMGI_PI * fr->phase);
-    f[3] = sinf(2.0f * SMGI_PI * fr->phase);
+    smgi_sincosf(2.0f * SMGI_PI * fr->phase, &f[3], &f[2]);
   } else {
     f[2] = f[3] = 0.0f;
   }

@@ -48,6 +48,8 @@
 /* ---- sequence search (plan_search.c) ---- */
 #define SMGI_SEQ_SECONDS 2.0f    /* motion a candidate sequence covers */
 #define SMGI_SEQ_BUDGET 256u     /* edge evaluations per ranking */
+#define SMGI_SEQ_BUDGET_STEER 128u /* ... while root steering is on: what
+                                      the search leaves, steering absorbs */
 #define SMGI_SEQ_BRANCHES 6u     /* choices searched below a candidate */
 #define SMGI_SEQ_MAX_DEPTH 48u   /* edges followed without a choice */
 #define SMGI_SEQ_MAX_KIDS 8u     /* out-edges tried at one branch */

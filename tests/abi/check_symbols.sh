@@ -2,7 +2,10 @@
 # check_symbols.sh LIB.so HEADER
 # Every symbol libsmg.so exports must start with smg_ (internal code uses
 # smgi_/smgb_ and -fvisibility=hidden), and every function smg.h declares
-# must be exported (a missing one would be a link error for users).
+# must be exported (a missing one would be a link error for users). And
+# it imports no libm function whose last bit differs between C libraries
+# (sin, atan2, exp, ...: libsmg/runtime/dmath.h says why); only the exact
+# ones (floor, fmod, fmin, sqrt, ...) are allowed.
 set -eu
 so=$1
 hdr=$2
@@ -24,5 +27,12 @@ if [ -n "$missing" ]; then
   printf '  %s\n' $missing >&2
   exit 1
 fi
+inexact=$(nm -D --undefined-only "$so" | awk '{print $2}' | sed 's/@.*//' |
+  grep -E '^(a?(sin|cos|tan)h?|atan2|exp(2|10|m1)?|log(2|10|1p)?|pow|cbrt|hypot|erfc?|[lt]gamma|sincos)[fl]?$' || true)
+if [ -n "$inexact" ]; then
+  echo "test-symbols: FAILED: $so calls libm functions whose results differ between C libraries:" >&2
+  printf '  %s\n' $inexact >&2
+  exit 1
+fi
 ndecl=$(printf '%s\n' "$declared" | grep -c . || true)
-echo "test-symbols: ok ($count exported symbols, all smg_*; all $ndecl declared functions present)"
+echo "test-symbols: ok ($count exported symbols, all smg_*; all $ndecl declared functions present; no inexact libm calls)"
