@@ -4,21 +4,21 @@
  *
  * Both skeletons are looked at in their "identity pose" (every local
  * rotation identity): for the target that is its rest pose (world-aligned
- * rest, smgb_rig_load), for a BVH source its OFFSET pose. Only the bone
- * DIRECTIONS of those poses are used, never their local axes, so A-pose vs
- * T-pose, splayed CMU legs and other rest conventions all cancel.
- *
- * Per paired target joint A, one of three rules (chosen once per clip):
+ * rest, smgb_rig_load), for a source possibly no pose at all (Bandai
+ * Namco's bones all lie along their local x). The target's rest decides
+ * the rule of every target joint A (plan_rules); the alignments are then
+ * measured on the clip's motion (plan_align), so that the source joints'
+ * local axes cancel:
  *   FRAME   A branches into a central joint and a left/right pair (pelvis,
  *           chest): the constant rotation that maps the target's rest frame
  *           (central direction, left-right axis) onto the source's;
- *   SWING   A has one paired descendant B (limbs, neck): the rest
- *           alignment of the bone A->B, and per frame the shortest swing
- *           onto the source's actual A->B direction, which also folds in
- *           the rotations of source joints between them that the target
- *           lacks;
- *   INHERIT ends (hands, head, toes): the alignment of the nearest paired
- *           ancestor, so the end keeps its rest relation to its limb.
+ *   SWING   A has one paired descendant B (limbs, neck): the rotation of
+ *           the rest bone A->B onto the source's, with the source's twist
+ *           about it, and per frame the shortest swing onto the source's
+ *           actual A->B direction, which also folds in the rotations of
+ *           source joints between them that the target lacks;
+ *   END     ends (hands, head, toes): the source's mean relation to the
+ *           nearest paired ancestor becomes the target's rest relation.
  * world(A) = world_source(pair(A)) * alignment(A) [* swing]. Unpaired target
  * joints (fingers, twist bones) keep their rest rotation relative to their
  * parent. Finally the root follows the source pelvis scaled by k = target
@@ -270,7 +270,7 @@ typedef struct rt_plan {
   double (*align)[4];  /* T: constant alignment quaternion */
   double (*tframe)[4]; /* T: FRAME: the target's rest frame */
   double (*dir)[3];    /* T: target rest direction A->B (SWING) */
-  double (*sdir)[3];   /* T: source identity-pose direction (SWING) */
+  double (*sdir)[3];   /* T: the bone A->B in the source joint's axes */
   double* pt;          /* 3T target rest positions */
   double* ps;          /* 3S source identity-pose positions */
   int32_t leg[2][3];   /* target hip, knee, ankle */
@@ -504,11 +504,13 @@ static int q_mean(double sum[4]) {
  * motion (world positions and rotations of every frame in fkp / fkw), so
  * that only geometry decides them, never the source joints' local axes
  * (a source whose identity pose is no pose at all, Bandai Namco's bones
- * all along local x, gets the same result as a T-pose rig). In joint
- * order, each joint's from its paired ancestor's final alignment:
- *   FRAME  the mean over frames of the source joint's rotation to the
- *          source's frame (central direction, left-right axis), times the
- *          target's rest frame inverted;
+ * all along local x, gets the same result as a T-pose rig). Joints go in
+ * order, so a joint's paired ancestor has its final alignment when the
+ * joint is measured:
+ *   FRAME  the source joint's rotation to the source's frame (central
+ *          direction, left-right axis) times the target's rest frame
+ *          inverted: the identity pose's when the mean over the frames
+ *          agrees with it within 30 degrees, else that mean;
  *   SWING  the rotation taking the target's rest bone onto the source's
  *          bone, with the twist about it that the source bone has when,
  *          seen from its aligned paired ancestor, it is swung the shortest
