@@ -263,8 +263,8 @@ typedef struct rt_plan {
   int32_t* primary;    /* T: target joint B of a SWING joint */
   int32_t* send;       /* T: source joint the swing aims at (B's pair, or
                           past it when that bone has no length) */
-  int32_t* body;       /* T: SWING: nearest FRAME ancestor (-1: none);
-                          END: nearest paired ancestor */
+  int32_t* body;       /* T: SWING, END: nearest paired ancestor, whose
+                          alignment the joint's is measured from */
   int32_t (*fsrc)[3];  /* T: FRAME: source central end, left, right */
   uint8_t* rest_frame; /* T: FRAME: the source's identity pose has one */
   double (*align)[4];  /* T: constant alignment quaternion */
@@ -337,7 +337,7 @@ static void dir_between(const double* pos, int32_t a, int32_t b,
  * LHipJoint), the first descendant down b's first-child chain that does
  * not. */
 static int32_t bone_end(const smgb_skeleton* src, const double* ps,
-                          int32_t a, int32_t b) {
+                        int32_t a, int32_t b) {
   while (b >= 0) {
     double d[3];
     uint32_t c;
