@@ -4,21 +4,21 @@
  *
  * Both skeletons are looked at in their "identity pose" (every local
  * rotation identity): for the target that is its rest pose (world-aligned
- * rest, smgb_rig_load), for a BVH source its OFFSET pose. Only the bone
- * DIRECTIONS of those poses are used, never their local axes, so A-pose vs
- * T-pose, splayed CMU legs and other rest conventions all cancel.
- *
- * Per paired target joint A, one of three rules (chosen once per clip):
+ * rest, smgb_rig_load), for a source possibly no pose at all (Bandai
+ * Namco's bones all lie along their local x). The target's rest decides
+ * the rule of every target joint A (plan_rules); the alignments are then
+ * measured on the clip's motion (plan_align), so that the source joints'
+ * local axes cancel:
  *   FRAME   A branches into a central joint and a left/right pair (pelvis,
  *           chest): the constant rotation that maps the target's rest frame
  *           (central direction, left-right axis) onto the source's;
- *   SWING   A has one paired descendant B (limbs, neck): the rest
- *           alignment of the bone A->B, and per frame the shortest swing
- *           onto the source's actual A->B direction, which also folds in
- *           the rotations of source joints between them that the target
- *           lacks;
- *   INHERIT ends (hands, head, toes): the alignment of the nearest paired
- *           ancestor, so the end keeps its rest relation to its limb.
+ *   SWING   A has one paired descendant B (limbs, neck): the rotation of
+ *           the rest bone A->B onto the source's, with the source's twist
+ *           about it, and per frame the shortest swing onto the source's
+ *           actual A->B direction, which also folds in the rotations of
+ *           source joints between them that the target lacks;
+ *   END     ends (hands, head, toes): the source's mean relation to the
+ *           nearest paired ancestor becomes the target's rest relation.
  * world(A) = world_source(pair(A)) * alignment(A) [* swing]. Unpaired target
  * joints (fingers, twist bones) keep their rest rotation relative to their
  * parent. Finally the root follows the source pelvis scaled by k = target
@@ -36,7 +36,7 @@
 #define RULE_REST 0    /* unpaired: rest relative to the parent */
 #define RULE_FRAME 1
 #define RULE_SWING 2
-#define RULE_INHERIT 3
+#define RULE_END 3
 
 /* ---- rigs ------------------------------------------------------------- */
 
@@ -263,8 +263,14 @@ typedef struct rt_plan {
   int32_t* primary;    /* T: target joint B of a SWING joint */
   int32_t* send;       /* T: source joint the swing aims at (B's pair, or
                           past it when that bone has no length) */
+  int32_t* body;       /* T: SWING, END: nearest paired ancestor, whose
+                          alignment the joint's is measured from */
+  int32_t (*fsrc)[3];  /* T: FRAME: source central end, left, right */
+  uint8_t* rest_frame; /* T: FRAME: the source's identity pose has one */
   double (*align)[4];  /* T: constant alignment quaternion */
+  double (*tframe)[4]; /* T: FRAME: the target's rest frame */
   double (*dir)[3];    /* T: target rest direction A->B (SWING) */
+  double (*sdir)[3];   /* T: the bone A->B in the source joint's axes */
   double* pt;          /* 3T target rest positions */
   double* ps;          /* 3S source identity-pose positions */
   int32_t leg[2][3];   /* target hip, knee, ankle */
@@ -279,8 +285,13 @@ static void plan_free(rt_plan* p) {
   free(p->rule);
   free(p->primary);
   free(p->send);
+  free(p->body);
+  free(p->fsrc);
+  free(p->rest_frame);
   free(p->align);
+  free(p->tframe);
   free(p->dir);
+  free(p->sdir);
   free(p->pt);
   free(p->ps);
   memset(p, 0, sizeof *p);
@@ -321,11 +332,12 @@ static void dir_between(const double* pos, int32_t a, int32_t b,
   v_sub(pos + 3 * b, pos + 3 * a, o);
 }
 
-/* The source joint a bone from source joint a towards b ends at: b, or
- * when b sits on a (zero-length helper joints such as CMU's LowerBack), the
- * first descendant down b's first-child chain that does not. */
-static int32_t source_end(const smgb_skeleton* src, const double* ps,
-                          int32_t a, int32_t b) {
+/* The joint a bone from joint a towards b ends at: b, or when b sits on a
+ * in the pose `ps` (zero-length helper joints such as CMU's LowerBack and
+ * LHipJoint), the first descendant down b's first-child chain that does
+ * not. */
+static int32_t bone_end(const smgb_skeleton* src, const double* ps,
+                        int32_t a, int32_t b) {
   while (b >= 0) {
     double d[3];
     uint32_t c;
@@ -338,7 +350,9 @@ static int32_t source_end(const smgb_skeleton* src, const double* ps,
   return -1;
 }
 
-/* Chooses the rule and the constant alignment of every target joint. */
+/* Chooses the rule of every target joint, its target-side geometry and a
+ * first alignment from the source's identity pose (kept where the motion
+ * cannot measure a better one, plan_align). */
 static void plan_rules(rt_plan* p, const smgb_skeleton* src,
                        const smgb_skeleton* tgt) {
   uint32_t t;
@@ -346,60 +360,268 @@ static void plan_rules(rt_plan* p, const smgb_skeleton* src,
   for (t = 0; t < p->T; ++t) {
     uint32_t n, i;
     int32_t central = -1, left = -1, right = -1;
-    int centrals = 0;
     q_identity(p->align[t]);
     p->primary[t] = -1;
+    p->body[t] = -1;
     if (p->map[t] < 0) {
       p->rule[t] = RULE_REST;
       continue;
     }
-    p->rule[t] = RULE_INHERIT;
+    p->rule[t] = RULE_END;
     n = frontier(tgt, p->map, t, cand, 64);
-    for (i = 0; i < n; ++i) {
-      double d[3], x;
-      dir_between(p->pt, (int32_t)t, cand[i], d);
-      x = v_dot(d, p->side);
-      if (fabs(x) < 0.25 * v_len(d)) {
-        central = cand[i];
-        ++centrals;
-      } else if (x > 0.0 && left < 0) {
-        left = cand[i];
-      } else if (x < 0.0 && right < 0) {
-        right = cand[i];
+    if (n >= 3) {
+      /* a left/right pair and a central joint: the most lateral joint on
+       * each side of the rig's left-right axis, and of the others the one
+       * nearest the middle, nearer than both (a chest's clavicles may
+       * start close to its middle) */
+      double x[64];
+      for (i = 0; i < n; ++i) {
+        double d[3];
+        int32_t e = bone_end(tgt, p->pt, (int32_t)t, cand[i]);
+        if (e < 0) e = cand[i];
+        dir_between(p->pt, (int32_t)t, e, d);
+        x[i] = v_dot(d, p->side);
+        if (left < 0 || x[i] > x[left]) left = (int32_t)i;
+        if (right < 0 || x[i] < x[right]) right = (int32_t)i;
+      }
+      for (i = 0; i < n; ++i)
+        if ((int32_t)i != left && (int32_t)i != right &&
+            (central < 0 || fabs(x[i]) < fabs(x[central])))
+          central = (int32_t)i;
+      if (central >= 0 && x[left] > 0.0 && x[right] < 0.0 &&
+          fabs(x[central]) < x[left] && fabs(x[central]) < -x[right]) {
+        central = cand[central];
+        left = cand[left];
+        right = cand[right];
+      } else {
+        central = left = right = -1;
       }
     }
     if (n == 1) {
-      /* a limb (a zero-length bone in either skeleton: INHERIT) */
+      /* a limb (a zero-length bone in either skeleton: END) */
       int32_t b = cand[0];
-      int32_t e = source_end(src, p->ps, p->map[t], p->map[b]);
+      int32_t e = bone_end(src, p->ps, p->map[t], p->map[b]);
       double dt[3], ds[3] = {0.0, 0.0, 0.0};
       dir_between(p->pt, (int32_t)t, b, dt);
       if (e >= 0) dir_between(p->ps, p->map[t], e, ds);
       if (v_unit(dt) && v_unit(ds)) {
+        int32_t a = tgt->parents[t];
         p->rule[t] = RULE_SWING;
         p->primary[t] = b;
         p->send[t] = e;
         memcpy(p->dir[t], dt, sizeof dt);
+        memcpy(p->sdir[t], ds, sizeof ds);
         q_arc(dt, ds, p->align[t]);
+        while (a >= 0 && p->map[a] < 0) a = tgt->parents[a];
+        p->body[t] = a;
       }
-    } else if (centrals == 1 && left >= 0 && right >= 0) {
-      double ct[3], cs[3] = {0.0, 0.0, 0.0}, lt[3], ls[3], qt[4], qs[4],
-          qi[4];
-      int32_t e = source_end(src, p->ps, p->map[t], p->map[central]);
-      dir_between(p->pt, (int32_t)t, central, ct);
-      if (e >= 0) dir_between(p->ps, p->map[t], e, cs);
-      v_sub(p->pt + 3 * left, p->pt + 3 * right, lt);
-      v_sub(p->ps + 3 * p->map[left], p->ps + 3 * p->map[right], ls);
-      if (q_frame(ct, lt, qt) && q_frame(cs, ls, qs)) {
+    } else if (central >= 0) {
+      double ct[3], cs[3] = {0.0, 0.0, 0.0}, lt[3], ls[3], qs[4], qi[4];
+      /* directions to the ends of zero-length helper bones (CMU's hips
+       * and clavicles may sit on the joint they branch from) */
+      int32_t e = bone_end(src, p->ps, p->map[t], p->map[central]);
+      int32_t sl = bone_end(src, p->ps, p->map[t], p->map[left]);
+      int32_t sr = bone_end(src, p->ps, p->map[t], p->map[right]);
+      int32_t tc = bone_end(tgt, p->pt, (int32_t)t, central);
+      int32_t tl = bone_end(tgt, p->pt, (int32_t)t, left);
+      int32_t tr = bone_end(tgt, p->pt, (int32_t)t, right);
+      if (e >= 0 && sl >= 0 && sr >= 0 && tc >= 0 && tl >= 0 && tr >= 0) {
+        dir_between(p->pt, (int32_t)t, tc, ct);
+        dir_between(p->ps, p->map[t], e, cs);
+        v_sub(p->pt + 3 * tl, p->pt + 3 * tr, lt);
+        v_sub(p->ps + 3 * sl, p->ps + 3 * sr, ls);
+      } else {
+        e = -1;
+      }
+      if (e >= 0 && q_frame(ct, lt, p->tframe[t])) {
         p->rule[t] = RULE_FRAME;
-        smgb_qconj(qt, qi);
-        smgb_qmul(qs, qi, p->align[t]);
+        p->fsrc[t][0] = e;
+        p->fsrc[t][1] = sl;
+        p->fsrc[t][2] = sr;
+        /* the source's identity pose may be no pose at all (then the
+         * motion decides alone, plan_align) */
+        p->rest_frame[t] = (uint8_t)q_frame(cs, ls, qs);
+        if (p->rest_frame[t]) {
+          smgb_qconj(p->tframe[t], qi);
+          smgb_qmul(qs, qi, p->align[t]);
+        }
       }
     }
-    if (p->rule[t] == RULE_INHERIT) {
+    if (p->rule[t] == RULE_END) {
       int32_t a = tgt->parents[t];
       while (a >= 0 && p->map[a] < 0) a = tgt->parents[a];
+      p->body[t] = a;
       if (a >= 0) memcpy(p->align[t], p->align[a], sizeof p->align[t]);
+    }
+  }
+}
+
+/* ---- alignments measured on the motion --------------------------------- */
+
+/* Source joint s's world rotation and position at frame f of the FK
+ * buffers (4S and 3S floats a frame). */
+static void src_rot(const float* fkw, uint32_t S, uint32_t f, int32_t s,
+                    double q[4]) {
+  const float* w = fkw + ((size_t)f * S + (uint32_t)s) * 4;
+  q[0] = w[0]; q[1] = w[1]; q[2] = w[2]; q[3] = w[3];
+}
+
+static void src_dir(const float* fkp, uint32_t S, uint32_t f, int32_t a,
+                    int32_t b, double d[3]) {
+  const float* pa = fkp + ((size_t)f * S + (uint32_t)a) * 3;
+  const float* pb = fkp + ((size_t)f * S + (uint32_t)b) * 3;
+  d[0] = (double)pb[0] - pa[0];
+  d[1] = (double)pb[1] - pa[1];
+  d[2] = (double)pb[2] - pa[2];
+}
+
+/* |cos(half the angle)| between two rotations. */
+static double q_dot_abs(const double a[4], const double b[4]) {
+  return fabs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
+}
+
+/* cos(15 deg): rotations within 30 degrees of each other */
+static const double k_rest_agrees = 0.96592582628906831;
+
+/* Adds unit quaternion q to a running sum in the hemisphere of the sum
+ * (the mean of nearby rotations, normalised at the end). */
+static void q_accumulate(double sum[4], const double q[4], double w) {
+  double d = sum[0] * q[0] + sum[1] * q[1] + sum[2] * q[2] + sum[3] * q[3];
+  int k;
+  if (d < 0.0) w = -w;
+  for (k = 0; k < 4; ++k) sum[k] += w * q[k];
+}
+
+static int q_mean(double sum[4]) {
+  double n = sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2] +
+                  sum[3] * sum[3]);
+  if (!(n > 1e-9)) return 0;
+  sum[0] /= n; sum[1] /= n; sum[2] /= n; sum[3] /= n;
+  return 1;
+}
+
+/* Replaces the identity-pose alignments by ones measured on the clip's
+ * motion (world positions and rotations of every frame in fkp / fkw), so
+ * that only geometry decides them, never the source joints' local axes
+ * (a source whose identity pose is no pose at all, Bandai Namco's bones
+ * all along local x, gets the same result as a T-pose rig). Joints go in
+ * order, so a joint's paired ancestor has its final alignment when the
+ * joint is measured:
+ *   FRAME  the source joint's rotation to the source's frame (central
+ *          direction, left-right axis) times the target's rest frame
+ *          inverted: the identity pose's when the mean over the frames
+ *          agrees with it within 30 degrees, else that mean;
+ *   SWING  the rotation taking the target's rest bone onto the source's
+ *          bone, with the twist about it that the source bone has when,
+ *          seen from its aligned paired ancestor, it is swung the shortest
+ *          way onto the target's rest direction (a hinge such as the knee
+ *          or elbow straightens about its own axis, so its twist is
+ *          measured exactly): a weighted circular mean over frames, those
+ *          whose bone is near the rest direction counting most (the twist
+ *          of a far pose depends on the way it went there);
+ *   END    no direction to measure (hands, head, toes): the end's mean
+ *          rotation relative to its paired ancestor becomes the target's
+ *          rest relation.
+ * Joints without usable frames keep their identity-pose alignment. */
+static void plan_align(rt_plan* p, const float* fkp, const float* fkw,
+                       uint32_t frames) {
+  uint32_t S = p->S, t, f;
+  /* a limb's bone in its source joint's axes: the mean over frames (it
+   * moves when source joints the target lacks sit between its ends, and
+   * the identity pose would put those at the source rig's whim) */
+  for (t = 0; t < p->T; ++t) {
+    double sum[3] = {0.0, 0.0, 0.0};
+    if (p->rule[t] != RULE_SWING) continue;
+    for (f = 0; f < frames; ++f) {
+      double ws[4], wi[4], d[3];
+      src_dir(fkp, S, f, p->map[t], p->send[t], d);
+      if (!v_unit(d)) continue;
+      src_rot(fkw, S, f, p->map[t], ws);
+      smgb_qconj(ws, wi);
+      smgb_qrot(wi, d, d);
+      sum[0] += d[0];
+      sum[1] += d[1];
+      sum[2] += d[2];
+    }
+    if (v_unit(sum)) {
+      memcpy(p->sdir[t], sum, sizeof sum);
+      q_arc(p->dir[t], p->sdir[t], p->align[t]);
+    }
+  }
+  for (t = 0; t < p->T; ++t) {
+    double sum[4] = {0.0, 0.0, 0.0, 0.0}, tmp[4], ws[4], wi[4], q[4];
+    int32_t b = p->body[t];
+    if (p->rule[t] == RULE_FRAME) {
+      for (f = 0; f < frames; ++f) {
+        double c[3], l[3];
+        src_dir(fkp, S, f, p->map[t], p->fsrc[t][0], c);
+        src_dir(fkp, S, f, p->fsrc[t][2], p->fsrc[t][1], l);
+        if (!q_frame(c, l, tmp)) continue;
+        src_rot(fkw, S, f, p->map[t], ws);
+        smgb_qconj(ws, wi);
+        smgb_qmul(wi, tmp, q);
+        q_accumulate(sum, q, 1.0);
+      }
+      if (q_mean(sum)) {
+        smgb_qconj(p->tframe[t], tmp);
+        smgb_qmul(sum, tmp, q);
+        /* the identity pose's frame is kept when the motion agrees with
+         * it: a frame through helper joints (CMU's pelvis to spine runs
+         * through the animated LowerBack) moves with the motion, and its
+         * mean would tilt every clip's pelvis by that clip's mean lumbar
+         * bend; an identity pose that is no pose differs by far more */
+        if (!p->rest_frame[t] || q_dot_abs(q, p->align[t]) < k_rest_agrees)
+          memcpy(p->align[t], q, sizeof q);
+      }
+    } else if (p->rule[t] == RULE_END && b >= 0) {
+      for (f = 0; f < frames; ++f) {
+        src_rot(fkw, S, f, p->map[t], ws);
+        src_rot(fkw, S, f, p->map[b], q);
+        smgb_qconj(ws, wi);
+        smgb_qmul(wi, q, tmp);
+        q_accumulate(sum, tmp, 1.0);
+      }
+      if (q_mean(sum))
+        smgb_qmul(sum, p->align[b], p->align[t]);
+      else
+        memcpy(p->align[t], p->align[b], sizeof tmp);
+    } else if (p->rule[t] == RULE_SWING && b >= 0) {
+      double r0i[4], ai[4], d;
+      q_arc(p->dir[t], p->sdir[t], tmp);
+      smgb_qconj(tmp, r0i);
+      smgb_qconj(p->align[b], ai);
+      for (f = 0; f < frames; ++f) {
+        double wa[4], ls[4], li[4], db[3], sw[4], w;
+        /* the source joint seen from its aligned paired ancestor, whose
+         * target counterpart is at rest (world-aligned: identity) */
+        src_rot(fkw, S, f, p->map[b], wa);
+        src_rot(fkw, S, f, p->map[t], ws);
+        smgb_qconj(wa, wi);
+        smgb_qmul(wi, ws, tmp);
+        smgb_qmul(ai, tmp, ls);
+        smgb_qrot(ls, p->sdir[t], db);
+        w = 0.5 * (1.0 + v_dot(db, p->dir[t]));
+        w *= w;
+        w *= w;
+        w *= w; /* ((1 + cos) / 2)^8: 0.28 at 45 deg, 0.004 at 90 */
+        if (!(w > 1e-12)) continue;
+        /* the alignment that puts the target's rest bone, swung the
+         * shortest way onto this frame's bone, on this frame's source
+         * joint: Ls^-1 * arc(rest, bone); its twist about the rest bone
+         * relative to the shortest arc between the two bone directions */
+        q_arc(p->dir[t], db, sw);
+        smgb_qconj(ls, li);
+        smgb_qmul(li, sw, tmp);
+        smgb_qmul(r0i, tmp, q);
+        d = 2.0 * atan2(v_dot(q, p->dir[t]), q[3]);
+        sum[0] += w * cos(d);
+        sum[1] += w * sin(d);
+      }
+      if (sum[0] * sum[0] + sum[1] * sum[1] > 1e-24) {
+        smgb_qaxis_angle(p->dir[t], atan2(sum[1], sum[0]), q);
+        q_arc(p->dir[t], p->sdir[t], tmp);
+        smgb_qmul(tmp, q, p->align[t]);
+      }
     }
   }
 }
@@ -421,12 +643,18 @@ static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
   p->rule = (uint8_t*)malloc(sizeof *p->rule * T);
   p->primary = (int32_t*)malloc(sizeof *p->primary * T);
   p->send = (int32_t*)malloc(sizeof *p->send * T);
+  p->body = (int32_t*)malloc(sizeof *p->body * T);
+  p->fsrc = (int32_t(*)[3])malloc(sizeof *p->fsrc * T);
+  p->rest_frame = (uint8_t*)calloc(T, 1);
   p->align = (double(*)[4])malloc(sizeof *p->align * T);
+  p->tframe = (double(*)[4])malloc(sizeof *p->tframe * T);
   p->dir = (double(*)[3])calloc(T, sizeof *p->dir);
+  p->sdir = (double(*)[3])calloc(T, sizeof *p->sdir);
   p->pt = (double*)malloc(sizeof *p->pt * 3 * T);
   p->ps = (double*)malloc(sizeof *p->ps * 3 * S);
-  if (!p->map || !p->rule || !p->primary || !p->send || !p->align ||
-      !p->dir || !p->pt || !p->ps) {
+  if (!p->map || !p->rule || !p->primary || !p->send || !p->body ||
+      !p->fsrc || !p->rest_frame || !p->align || !p->tframe || !p->dir || !p->sdir || !p->pt ||
+      !p->ps) {
     plan_free(p);
     smgb_imp_errorf(err, "%s: out of memory (retarget)", clip->name);
     return SMG_ERROR_OUT_OF_MEMORY;
@@ -496,8 +724,8 @@ static smg_result plan_init(rt_plan* p, const smgb_clip* clip,
 /* ---- per frame ---------------------------------------------------------- */
 
 typedef struct rt_scratch {
-  float* ps;     /* 3S source world positions */
-  float* ws;     /* 4S source world rotations */
+  const float* ps; /* 3S source world positions of this frame */
+  const float* ws; /* 4S source world rotations of this frame */
   double* w;     /* 4T target world rotations */
   double* pt;    /* 3T target world positions */
 } rt_scratch;
@@ -570,13 +798,11 @@ static void solve_leg(const int32_t leg[3], const double goal[3], double* w,
   smgb_qmul(r2, tmp, w + 4 * leg[1]);
 }
 
-static void retarget_frame(const rt_plan* p, const smgb_skeleton* src,
-                           const smgb_skeleton* tgt, const float* in,
+static void retarget_frame(const rt_plan* p, const smgb_skeleton* tgt,
                            float* out, rt_scratch* sc) {
   uint32_t t;
   double root[3];
   int side;
-  smgb_fk(src, in, sc->ps, sc->ws);
   for (t = 0; t < p->T; ++t) {
     int32_t s = p->map[t];
     double ws[4], *w = sc->w + 4 * t;
@@ -640,7 +866,7 @@ smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_roles* clip_roles,
   rt_plan plan;
   rt_scratch sc;
   smgb_skeleton skel;
-  float* poses;
+  float *poses, *fkp, *fkw;
   uint32_t f, T, S;
   smg_result r;
   if (err) err->message[0] = '\0';
@@ -658,21 +884,32 @@ smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_roles* clip_roles,
   T = target->joint_count;
   S = clip->skeleton.joint_count;
   memset(&sc, 0, sizeof sc);
-  sc.ps = (float*)malloc(sizeof(float) * 3 * S);
-  sc.ws = (float*)malloc(sizeof(float) * 4 * S);
+  /* the source's forward kinematics once: the alignments are measured on
+   * all frames before any frame is retargeted */
+  fkp = (float*)malloc(sizeof(float) * 3 * S * (size_t)clip->frame_count);
+  fkw = (float*)malloc(sizeof(float) * 4 * S * (size_t)clip->frame_count);
   sc.w = (double*)malloc(sizeof(double) * 4 * T);
   sc.pt = (double*)malloc(sizeof(double) * 3 * T);
   poses = (float*)malloc(sizeof(float) * (size_t)clip->frame_count *
                          SMGB_STRIDE(T));
   memset(&skel, 0, sizeof skel);
   r = SMG_ERROR_OUT_OF_MEMORY;
-  if (sc.ps && sc.ws && sc.w && sc.pt && poses &&
+  if (fkp && fkw && sc.w && sc.pt && poses &&
       smgb_skeleton_copy(target, &skel) == SMG_OK) {
+    for (f = 0; f < clip->frame_count; ++f)
+      smgb_fk(&clip->skeleton,
+              clip->poses + (size_t)f * SMGB_STRIDE(S),
+              fkp + (size_t)f * 3 * S, fkw + (size_t)f * 4 * S);
+    plan_align(&plan, fkp, fkw, clip->frame_count);
+    r = SMG_OK;
+  }
+  if (r == SMG_OK) {
     for (f = 0; f < clip->frame_count; ++f) {
       float* o = poses + (size_t)f * SMGB_STRIDE(T);
       uint32_t t;
-      retarget_frame(&plan, &clip->skeleton, target,
-                     clip->poses + (size_t)f * SMGB_STRIDE(S), o, &sc);
+      sc.ps = fkp + (size_t)f * 3 * S;
+      sc.ws = fkw + (size_t)f * 4 * S;
+      retarget_frame(&plan, target, o, &sc);
       /* keep each joint's quaternion in the previous frame's hemisphere:
        * later stages interpolate neighbouring frames component-wise */
       for (t = 0; f > 0 && t < T; ++t) {
@@ -688,14 +925,13 @@ smg_result smgb_retarget_clip(smgb_clip* clip, const smgb_roles* clip_roles,
     clip->skeleton = skel;
     clip->poses = poses;
     poses = NULL;
-    r = SMG_OK;
   } else {
     smgb_imp_errorf(err, "%s: out of memory (retarget)", clip->name);
     smgb_skeleton_free(&skel);
   }
   free(poses);
-  free(sc.ps);
-  free(sc.ws);
+  free(fkp);
+  free(fkw);
   free(sc.w);
   free(sc.pt);
   plan_free(&plan);

@@ -10,13 +10,15 @@
  *
  * Method (docs/baker.md, "Retargeting onto a target rig"): joints are
  * paired by body role; every paired target joint takes the source joint's
- * world rotation times a constant rest alignment found from bone
- * directions (so A-pose vs T-pose and other rest conventions cancel),
- * limbs are swung per frame onto the source's actual bone direction (source
- * joints the target lacks fold into it), unpaired target joints stay at
- * rest, the root moves by the leg-length ratio and a two-bone leg solve
- * puts each ankle at the source ankle scaled by the same ratio, so planted
- * feet stay planted.
+ * world rotation times a constant alignment measured from the clip's
+ * joint positions, never from the source joints' local axes (rest frames
+ * of pelvis and chest, bone directions, and the twist about each bone the
+ * source has when its bone is swung onto the rig's rest direction), so
+ * A-pose vs T-pose and other bone axes cancel; limbs are swung per frame
+ * onto the source's actual bone direction (source joints the target lacks
+ * fold into it), unpaired target joints stay at rest, the root moves by
+ * the leg-length ratio and a two-bone leg solve puts each ankle at the
+ * source ankle scaled by the same ratio, so planted feet stay planted.
  */
 #ifndef BAKE_RETARGET_H
 #define BAKE_RETARGET_H
