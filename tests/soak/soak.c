@@ -373,7 +373,8 @@ static int soak_graph(const char* path, const soak_options* o,
     return 1;
   }
   if (o->timing && !soak_timing_init(&tm, g, &info, chars, steps)) return 1;
-  /* with --timing, one reference step before each tenth of the characters */
+  /* with --timing, as many reference steps before each tenth of the
+   * characters */
   group = o->timing ? (chars + 9) / 10 : chars;
   groups = (chars + group - 1) / group;
   allocs_at_start = gc.allocs + gc.frees + cc.allocs + cc.frees;
@@ -389,7 +390,7 @@ static int soak_graph(const char* path, const soak_options* o,
     for (i = 0; i < chars; i += group) {
       uint32_t j, end = i + group < chars ? i + group : chars;
       double c0;
-      if (o->timing) ref_s += soak_timing_reference_step(&tm);
+      if (o->timing) ref_s += soak_timing_reference_steps(&tm, end - i);
       c0 = soak_cpu_seconds();
       for (j = i; j < end; ++j)
         if (smg_character_step(cs[j].ch, dt) != SMG_OK) stepped = SMG_ERROR_IO;

@@ -18,11 +18,11 @@
 #define SOAK_REF_DT (1.0f / 60.0f)
 /* Where each reference starts in its cycle: k x 49 (mod 120). 49 is prime
  * to the cycle, so up to 120 references are at different points of it,
- * and the ones stepped in one frame (consecutive k) are spread over it:
- * each frame's reference work is about the same. (With references at
- * neighbouring points, a frame's reference work followed the cycle's
- * re-plans and the two windows compared saw different parts of it: 4-5 %
- * apart by that alone.) */
+ * and the ones stepped together (consecutive k) are spread over it:
+ * every group's reference work is about the same. (With references at
+ * neighbouring points, reference work followed the cycle's re-plans and
+ * the two windows compared saw different parts of it: 4-5 % apart by
+ * that alone.) */
 #define SOAK_REF_STRIDE 49u
 
 double soak_cpu_seconds(void) {
@@ -113,28 +113,38 @@ int soak_timing_init(soak_timing* t, smg_graph* graph,
   return 1;
 }
 
-double soak_timing_reference_step(soak_timing* t) {
-  soak_replay* r = &t->ref[t->next];
-  double c0;
+/* At the end of its cycle, a reference is checked and restored. */
+static void rewind_if_due(soak_timing* t, soak_replay* r) {
   uint32_t b;
-  if (r->at == SOAK_REF_CYCLE) {
-    int same = 1;
-    for (b = 0; b < r->blocks; ++b) {
-      if (!r->has_cycled)
-        memcpy(r->cycle_end[b], r->block[b], r->size[b]);
-      else if (memcmp(r->cycle_end[b], r->block[b], r->size[b]) != 0)
-        same = 0;
-      memcpy(r->block[b], r->saved[b], r->size[b]);
-    }
-    if (!same) t->diverged++;
-    r->has_cycled = 1;
-    r->at = 0;
+  int same = 1;
+  if (r->at < SOAK_REF_CYCLE) return;
+  for (b = 0; b < r->blocks; ++b) {
+    if (!r->has_cycled)
+      memcpy(r->cycle_end[b], r->block[b], r->size[b]);
+    else if (memcmp(r->cycle_end[b], r->block[b], r->size[b]) != 0)
+      same = 0;
+    memcpy(r->block[b], r->saved[b], r->size[b]);
   }
-  r->at++;
-  t->next = (t->next + 1) % t->refs;
+  if (!same) t->diverged++;
+  r->has_cycled = 1;
+  r->at = 0;
+}
+
+double soak_timing_reference_steps(soak_timing* t, uint32_t n) {
+  const uint32_t first = t->next;
+  double c0, c1;
+  uint32_t i;
+  if (n > t->refs) n = t->refs;
+  for (i = 0; i < n; ++i) rewind_if_due(t, &t->ref[(first + i) % t->refs]);
   c0 = soak_cpu_seconds();
-  smg_character_step(r->ch, SOAK_REF_DT);
-  return soak_cpu_seconds() - c0;
+  for (i = 0; i < n; ++i) {
+    soak_replay* r = &t->ref[(first + i) % t->refs];
+    smg_character_step(r->ch, SOAK_REF_DT);
+    r->at++;
+  }
+  c1 = soak_cpu_seconds();
+  t->next = (first + n) % t->refs;
+  return c1 - c0;
 }
 
 void soak_timing_record(soak_timing* t, uint32_t frame, double step,

@@ -12,11 +12,11 @@
  * over and over: the same instructions on the same data every cycle
  * (checked: the memory at the end of every cycle must equal the first
  * cycle's). There are as many as soak characters, so their memory competes
- * for the caches as the soak's does, and they are stepped in turn, one
- * before each tenth of the soak's characters: both see the same machine
- * (clock speed, a busy sibling core, caches shared with other processes)
- * within a fraction of a millisecond and the ratio cancels what the
- * machine does to both. What the ratio keeps is
+ * for the caches as the soak's does, and each is stepped once a frame,
+ * as each soak character is, ten of them before each tenth of the soak's
+ * characters: both see the same machine (clock speed, a busy sibling
+ * core, caches shared with other processes) within a fraction of a
+ * millisecond and the ratio cancels what the machine does to both. What the ratio keeps is
  * what differs between them: the soak characters' accumulated state. The
  * graph is read-only while stepping (make tsan), so a step that grows
  * slower over a run can only do so through its character's memory -
@@ -72,9 +72,10 @@ int soak_timing_init(soak_timing* t, smg_graph* graph,
                      const smg_graph_info* info, uint32_t refs,
                      uint32_t frames);
 
-/* Steps the next reference character (in turn) once, restoring it first
- * at the end of its cycle; returns the step's thread CPU seconds. */
-double soak_timing_reference_step(soak_timing* t);
+/* Steps the next n reference characters (in turn) once each, restoring
+ * those at the end of their cycle first; returns the thread CPU seconds
+ * of the steps. */
+double soak_timing_reference_steps(soak_timing* t, uint32_t n);
 
 /* Frame `frame` took `step` seconds for the soak characters and `ref`
  * seconds for its reference steps. */
