@@ -106,7 +106,7 @@ typedef struct soak_stats {
   float max_speed, max_path_error, path_bound, data_speed;
   long allocs_after_create;
   double first_ratio, last_ratio; /* step time / reference (soak_timing.h) */
-  long diverged;                  /* reference replays that differed */
+  long diverged;                  /* reference cycles that did not repeat */
 } soak_stats;
 
 /* The data's fastest root motion: consecutive frames of every lower edge
