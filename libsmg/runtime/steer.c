@@ -61,6 +61,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
   s->drift_turn = s->drift_move = 0.0f;
+  smgi_lag_reset(s);
 }
 
 void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
@@ -93,30 +94,33 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
 
 /* A queue entry's frame -> world placement from its ground transform W,
  * as the planner computed it when it pushed the entry. */
-static smgi_xform2 placement_of(const smg_graph* g, const smgi_qentry* q) {
+static smgi_xform2 placement_of(const smg_graph* g, const smgi_qentry* q,
+                                smgi_xform2 W) {
   const float* r =
       g->data.frames[g->data.lower_nodes[g->data.lower_edges[q->edge].from]
                          .frame].root2d;
   smgi_xform2 ground = {r[0], r[1], r[2]};
-  return smgi_xf_mul(q->W, smgi_xf_inv(ground));
+  return smgi_xf_mul(W, smgi_xf_inv(ground));
 }
 
-/* Queue entry i's placement. The correction keeps M up to date only for
- * the two entries the pose samples (every entry's W, which the planner
- * reads, is corrected every step); further ones derive it from W. */
+/* Queue entry i's placement. The correction keeps W and M up to date
+ * only for the two entries the pose samples; further ones derive M from
+ * their ground transform with the correction pending (smgi_q_ground). */
 static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
   const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
   if (i < 2u || !ch->steer.corrected) return q->M;
-  return placement_of(ch->graph, q);
+  return placement_of(ch->graph, q, smgi_q_ground(ch, i));
 }
 
 void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
   if (!ch->steer.corrected || pops == 0) return;
-  /* the entries that moved to index 0 or 1 from further back */
+  /* the entries that moved to index 0 or 1 from further back: the
+   * pending correction written into them */
   for (uint32_t i = pops < 2u ? 2u - pops : 0u; i < 2u && i < ch->lower.count;
        ++i) {
     smgi_qentry* q = smgi_q_at(&ch->lower, i);
-    q->M = placement_of(ch->graph, q);
+    q->W = smgi_lag_apply(&ch->steer, q->W);
+    q->M = placement_of(ch->graph, q, q->W);
   }
 }
 
@@ -293,6 +297,27 @@ static inline void delta_xf(const delta* d, smgi_xform2* x) {
   x->h = smgi_wrap_angle(x->h + d->da);
 }
 
+/* The pending correction of the entries beyond the next two, followed by
+ * d. With lag L(x) = R(a)(x - p) + p + t and D(x) = R(da)(x - g) + g + dt:
+ * D(L(x)) = R(a + da)(x - p) + p + R(da)(t + p - g) - (p - g) + dt. The
+ * turn's pivot p is moved to the character when the lag starts, so p - g
+ * stays as small as the way walked since. */
+static void lag_follow(smgi_steer* s, const delta* d) {
+  if (s->lag_c == 1.0f && s->lag_s == 0.0f && s->lag_t[0] == 0.0f &&
+      s->lag_t[1] == 0.0f) { /* identity: any pivot */
+    s->lag_p[0] = d->px;
+    s->lag_p[1] = d->pz;
+  }
+  float ux = s->lag_p[0] - d->px, uz = s->lag_p[1] - d->pz;
+  float vx = s->lag_t[0] + ux, vz = s->lag_t[1] + uz;
+  s->lag_t[0] = d->c * vx + d->s * vz - ux + d->tx;
+  s->lag_t[1] = -d->s * vx + d->c * vz - uz + d->tz;
+  float c = s->lag_c * d->c - s->lag_s * d->s;
+  s->lag_s = s->lag_s * d->c + s->lag_c * d->s;
+  s->lag_c = c;
+  s->lag_a = smgi_wrap_angle(s->lag_a + d->da);
+}
+
 void smgi_steer_apply(smg_character* ch, float dt) {
   smgi_steer* s = &ch->steer;
   const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
@@ -403,12 +428,19 @@ void smgi_steer_apply(smg_character* ch, float dt) {
     ch->pose.ground[0] = gx + d.tx;
     ch->pose.ground[1] = gz + d.tz;
     ch->pose.heading = smgi_wrap_angle(gh + d.da);
-    /* ... and every queued placement, so the plan moves with it */
-    for (uint32_t i = 0; i < ch->lower.count; ++i) {
+    /* ... and every queued placement, so the plan moves with it: the two
+     * entries the pose samples now, further ones when read (writing every
+     * planned entry every step was most of this stage's cache misses in
+     * a crowd) */
+    for (uint32_t i = 0; i < ch->lower.count && i < 2u; ++i) {
       smgi_qentry* e = smgi_q_at(&ch->lower, i);
       delta_xf(&d, &e->W);
-      if (i < 2u) delta_xf(&d, &e->M); /* further ones: entry_M */
+      delta_xf(&d, &e->M);
     }
+    if (ch->lower.count > 2u)
+      lag_follow(s, &d);
+    else
+      smgi_lag_reset(s);
     s->corrected = 1;
   }
   s->drift_turn += fabsf(d.da);
