@@ -241,8 +241,8 @@ static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
   ch->lower.frames += e->frame_count;
   q->edge = c->edge;
   q->seq = ch->lower.next_seq++;
-  /* beyond the next two, stored as before the steering's pending
-   * correction (smgi_q_ground) */
+  /* beyond the next two, stored (W and M) as before the steering's
+   * pending correction (smgi_q_ground) */
   if (i >= 2u) W = smgi_lag_undo(&ch->steer, W);
   q->W = W;
   q->M = smgi_xf_mul(

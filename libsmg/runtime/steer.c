@@ -92,35 +92,24 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
   }
 }
 
-/* A queue entry's frame -> world placement from its ground transform W,
- * as the planner computed it when it pushed the entry. */
-static smgi_xform2 placement_of(const smg_graph* g, const smgi_qentry* q,
-                                smgi_xform2 W) {
-  const float* r =
-      g->data.frames[g->data.lower_nodes[g->data.lower_edges[q->edge].from]
-                         .frame].root2d;
-  smgi_xform2 ground = {r[0], r[1], r[2]};
-  return smgi_xf_mul(W, smgi_xf_inv(ground));
-}
-
-/* Queue entry i's placement. The correction keeps W and M up to date
- * only for the two entries the pose samples; further ones derive M from
- * their ground transform with the correction pending (smgi_q_ground). */
+/* Queue entry i's placement (frame -> world). The correction keeps W
+ * and M up to date only for the two entries the pose samples; further
+ * ones get the correction pending since they were written (the lag is a
+ * rigid transform applied on the world side, so it moves M as it moves
+ * W). */
 static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
   const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
-  if (i < 2u || !ch->steer.corrected) return q->M;
-  return placement_of(ch->graph, q, smgi_q_ground(ch, i));
+  return i < 2u ? q->M : smgi_lag_apply(&ch->steer, q->M);
 }
 
 void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
-  if (!ch->steer.corrected || pops == 0) return;
   /* the entries that moved to index 0 or 1 from further back: the
    * pending correction written into them */
-  for (uint32_t i = pops < 2u ? 2u - pops : 0u; i < 2u && i < ch->lower.count;
-       ++i) {
+  for (uint32_t i = pops < 2u ? 2u - pops : 0u;
+       pops > 0 && i < 2u && i < ch->lower.count; ++i) {
     smgi_qentry* q = smgi_q_at(&ch->lower, i);
     q->W = smgi_lag_apply(&ch->steer, q->W);
-    q->M = placement_of(ch->graph, q, q->W);
+    q->M = smgi_lag_apply(&ch->steer, q->M);
   }
 }
 
@@ -441,7 +430,6 @@ void smgi_steer_apply(smg_character* ch, float dt) {
       lag_follow(s, &d);
     else
       smgi_lag_reset(s);
-    s->corrected = 1;
   }
   s->drift_turn += fabsf(d.da);
   s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);

@@ -35,8 +35,6 @@ typedef struct smgi_steer {
   float rate;             /* playback rate: 1 following, < 1 slowing */
   /* correction applied since the planned edges were chosen: the plan
    * moves with the character, so beyond a bound it is chosen again */
-  uint32_t corrected;     /* a correction moved the queue: placements (M)
-                             beyond the two next entries derive from W */
   /* The correction since the entries beyond the next two were written,
    * as one transform (smgi_lag_apply): those entries are corrected when
    * read instead of written every step. A turn by lag_a (cos, sin in
@@ -62,7 +60,7 @@ void smgi_steer_path_changed(smgi_steer* s);
  * rate (slowing for a tight turn, braking at the end, 0 at rest). */
 float smgi_steer_frames(smg_character* ch, float dt);
 /* After the playhead passed `pops` edges: the entries now next in line
- * get their placements back from their (corrected) ground transforms. */
+ * get the correction pending for them written in (smgi_lag_apply). */
 void smgi_steer_refresh(smg_character* ch, uint32_t pops);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
