@@ -61,6 +61,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
   s->drift_turn = s->drift_move = 0.0f;
+  s->heading_seg = SMGI_NONE;
   smgi_lag_reset(s);
 }
 
@@ -73,6 +74,7 @@ void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
 
 void smgi_steer_path_changed(smgi_steer* s) {
   s->mode = SMGI_STEER_FOLLOW;
+  s->heading_seg = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
 }
 
@@ -198,10 +200,21 @@ static void consider_stop(smg_character* ch) {
   s->mode = SMGI_STEER_BRAKE;
 }
 
+/* The heading of path segment seg, remembered for the next call. */
+static float segment_heading(smgi_steer* st, const smgi_path* p,
+                             uint32_t seg) {
+  if (seg != st->heading_seg) {
+    st->heading = smgi_path_heading(p, seg);
+    st->heading_seg = seg;
+  }
+  return st->heading;
+}
+
 /* Signed turning of the path ahead (radians per metre, + = left): the
  * sharper of two halves of the next SMGI_STEER_CURVE_AHEAD metres, so a
  * short tight loop is not averaged away. */
-static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
+static float curvature_ahead(smgi_steer* st, const smgi_path* p, float s,
+                             uint32_t seg) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
   uint32_t s0 = seg, s1, s2;
@@ -210,10 +223,11 @@ static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
   smgi_path_eval(p, s + half, &s1, &x, &z, NULL);
   s2 = s1;
   smgi_path_eval(p, s + 2.0f * half, &s2, &x, &z, NULL);
-  /* one heading per segment: the three points mostly share one or two */
-  float h0 = smgi_path_heading(p, s0);
-  float h1 = s1 == s0 ? h0 : smgi_path_heading(p, s1);
-  float h2 = s2 == s1 ? h1 : smgi_path_heading(p, s2);
+  /* one heading per segment: the three points mostly share one or two,
+   * and the last one is often the first of the next step */
+  float h0 = segment_heading(st, p, s0);
+  float h1 = s1 == s0 ? h0 : segment_heading(st, p, s1);
+  float h2 = s2 == s1 ? h1 : segment_heading(st, p, s2);
   float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
   return (fabsf(a) > fabsf(b) ? a : b) / half;
 }
@@ -238,7 +252,7 @@ float smgi_steer_frames(smg_character* ch, float dt) {
   if (s->mode == SMGI_STEER_FOLLOW) {
     /* slow down where the path turns tighter than the steering can turn
      * at this speed */
-    float kappa = curvature_ahead(&ch->path, ch->progress, ch->seg);
+    float kappa = curvature_ahead(s, &ch->path, ch->progress, ch->seg);
     float r = s->rate > 0.05f ? s->rate : 0.05f;
     /* the correction the path asks for at full playback: its turning at
      * the motion's speed minus the motion's own turning */
@@ -397,17 +411,22 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   }
   delta d;
   d.da = s->turn * dt;
-  smgi_sincosf(d.da, &d.s, &d.c);
+  /* the half angle's sine and cosine give the pose's yaw quaternion and,
+   * by the double-angle formulas, the turn itself: one sincos a step */
+  float sh, chh;
+  smgi_sincosf(0.5f * d.da, &sh, &chh);
+  d.s = 2.0f * sh * chh;
+  d.c = 1.0f - 2.0f * sh * sh;
   d.px = gx;
   d.pz = gz;
   d.tx = s->slide[0] * dt;
   d.tz = s->slide[1] * dt;
   if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
     /* the pose just composed ... */
-    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, yaw[4], q[4];
+    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, q[4];
+    const float yaw[4] = {0.0f, sh, 0.0f, chh};
     ch->pose.root[0] = gx + d.c * rx + d.s * rz + d.tx;
     ch->pose.root[2] = gz - d.s * rx + d.c * rz + d.tz;
-    smgi_q_yaw(d.da, yaw);
     smgi_q_mul(yaw, ch->pose.rot, q);
     smgi_q_normalize(q);
     ch->pose.rot[0] = q[0];

@@ -41,6 +41,11 @@ typedef struct smgi_steer {
    * lag_c, lag_s) about lag_p, then a shift by lag_t: kept about a point
    * near the character, so its numbers stay small far from the origin. */
   float lag_a, lag_c, lag_s, lag_p[2], lag_t[2];
+  /* the heading of the path segment last looked at (an atan2; the
+   * curvature ahead mostly looks at the same segment step after step),
+   * forgotten when the path changes */
+  uint32_t heading_seg;   /* SMGI_NONE: none */
+  float heading;
   float drift_turn;       /* radians */
   float drift_move;       /* metres */
   /* braking: the frame the character comes to rest on */
