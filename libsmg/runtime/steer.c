@@ -218,7 +218,8 @@ static float curvature_ahead(smgi_steer* st, const smgi_path* p, float s,
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
   uint32_t s0 = seg, s1, s2;
-  smgi_path_eval(p, s, &s0, &x, &z, NULL);
+  smgi_path_eval(p, s, &s0, &st->at_x, &st->at_z, NULL);
+  st->at_valid = 1;
   s1 = s0;
   smgi_path_eval(p, s + half, &s1, &x, &z, NULL);
   s2 = s1;
@@ -235,6 +236,7 @@ static float curvature_ahead(smgi_steer* st, const smgi_path* p, float s,
 float smgi_steer_frames(smg_character* ch, float dt) {
   smgi_steer* s = &ch->steer;
   const float full = dt * ch->fps;
+  s->at_valid = 0;
   if (!s->enabled || ch->path.count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
@@ -377,8 +379,13 @@ void smgi_steer_apply(smg_character* ch, float dt) {
         want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
       }
     } else {
-      uint32_t sg = ch->seg;
-      smgi_path_eval(p, ch->progress, &sg, &qx, &qz, NULL);
+      if (s->at_valid) { /* progress has not moved since */
+        qx = s->at_x;
+        qz = s->at_z;
+      } else {
+        uint32_t sg = ch->seg;
+        smgi_path_eval(p, ch->progress, &sg, &qx, &qz, NULL);
+      }
       /* the hips sway from side to side with every step: only the offset
        * beyond that is an error to remove */
       float ox = qx - gx, oz = qz - gz, ol = sqrtf(ox * ox + oz * oz);
