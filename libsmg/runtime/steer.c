@@ -17,10 +17,11 @@
  *    motion's ground speed;
  *  - both rates change by a bounded amount per second, so the correction
  *    never pops when it starts, saturates or stops.
- * The correction is applied to the pose just composed and to every queued
- * edge's ground transform (and the frame placement of the two the pose
- * samples), so what is planned ahead moves with the character and the
- * planner continues from where the character really is. It runs
+ * The correction is applied to the pose just composed and to the queued
+ * edges' placements (the two the pose samples at once, further ones
+ * through the correction pending for them, smgi_lag_apply, when read), so
+ * what is planned ahead moves with the character and the planner
+ * continues from where the character really is. It runs
  * before forward kinematics and foot IK: a planted foot keeps its world
  * anchor while the body turns and slides above it.
  *
