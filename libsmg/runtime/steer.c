@@ -322,6 +322,21 @@ static void lag_follow(smgi_steer* s, const delta* d) {
   s->lag_s = s->lag_s * d->c + s->lag_c * d->s;
   s->lag_c = c;
   s->lag_a = smgi_wrap_angle(s->lag_a + d->da);
+  s->lag_steps++;
+}
+
+/* Write the pending correction into the entries beyond the next two and
+ * start afresh: composed over many steps, its rounding (its cosine and
+ * sine drift apart from a rotation's, its pivot falls behind) would grow
+ * with the time since a re-plan, which following a gentle path can make
+ * long. */
+static void lag_write(smg_character* ch) {
+  for (uint32_t i = 2u; i < ch->lower.count; ++i) {
+    smgi_qentry* e = smgi_q_at(&ch->lower, i);
+    e->W = smgi_lag_apply(&ch->steer, e->W);
+    e->M = smgi_lag_apply(&ch->steer, e->M);
+  }
+  smgi_lag_reset(&ch->steer);
 }
 
 void smgi_steer_apply(smg_character* ch, float dt) {
@@ -453,10 +468,12 @@ void smgi_steer_apply(smg_character* ch, float dt) {
       delta_xf(&d, &e->W);
       delta_xf(&d, &e->M);
     }
-    if (ch->lower.count > 2u)
+    if (ch->lower.count > 2u) {
       lag_follow(s, &d);
-    else
+      if (s->lag_steps >= SMGI_STEER_LAG_STEPS) lag_write(ch);
+    } else {
       smgi_lag_reset(s);
+    }
   }
   s->drift_turn += fabsf(d.da);
   s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);

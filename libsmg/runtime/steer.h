@@ -41,6 +41,7 @@ typedef struct smgi_steer {
    * lag_c, lag_s) about lag_p, then a shift by lag_t: kept about a point
    * near the character, so its numbers stay small far from the origin. */
   float lag_a, lag_c, lag_s, lag_p[2], lag_t[2];
+  uint32_t lag_steps;     /* steps composed into it */
   /* the heading of the path segment last looked at (an atan2; the
    * curvature ahead mostly looks at the same segment step after step),
    * forgotten when the path changes */
@@ -80,6 +81,7 @@ static inline void smgi_lag_reset(smgi_steer* s) {
   s->lag_a = s->lag_s = 0.0f;
   s->lag_c = 1.0f;
   s->lag_p[0] = s->lag_p[1] = s->lag_t[0] = s->lag_t[1] = 0.0f;
+  s->lag_steps = 0;
 }
 
 /* A stored ground transform of a queue entry beyond the next two, as it
