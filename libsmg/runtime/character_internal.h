@@ -55,6 +55,14 @@ struct smg_character {
   smgi_ik ik;
 };
 
+/* Queue entry i's ground transform as it is now: the steering keeps the
+ * next two entries corrected, further ones get the correction made since
+ * they were written when read (steer.h, smgi_lag_apply). */
+static inline smgi_xform2 smgi_q_ground(const smg_character* ch, uint32_t i) {
+  const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
+  return i < 2u ? q->W : smgi_lag_apply(&ch->steer, q->W);
+}
+
 /* One frame: plan, advance, upper body, pose, steering, IK, progress
  * (playback.c). */
 smg_result smgi_step(smg_character* ch, float dt);

@@ -236,10 +236,14 @@ static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
                  uint32_t rank, uint32_t count) {
   const smg_graph* g = ch->graph;
   const smgi_edge* e = &g->data.lower_edges[c->edge];
-  smgi_qentry* q = smgi_q_at(&ch->lower, ch->lower.count++);
+  const uint32_t i = ch->lower.count++;
+  smgi_qentry* q = smgi_q_at(&ch->lower, i);
   ch->lower.frames += e->frame_count;
   q->edge = c->edge;
   q->seq = ch->lower.next_seq++;
+  /* beyond the next two, stored (W and M) as before the steering's
+   * pending correction (smgi_q_ground) */
+  if (i >= 2u) W = smgi_lag_undo(&ch->steer, W);
   q->W = W;
   q->M = smgi_xf_mul(
       W, smgi_xf_inv(ground_of(g, g->data.lower_nodes[e->from].frame)));
@@ -257,7 +261,7 @@ static void tail_state(const smg_character* ch, uint32_t* node,
   const smgi_qentry* q = smgi_q_at_c(&ch->lower, ch->lower.count - 1u);
   const smgi_edge* e = &ch->graph->data.lower_edges[q->edge];
   *node = e->to;
-  *W = smgi_xf_mul(q->W, disp_of(e));
+  *W = smgi_xf_mul(smgi_q_ground(ch, ch->lower.count - 1u), disp_of(e));
   *s = q->s_end;
   *seg = q->seg_end;
 }
@@ -277,6 +281,7 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
   smgi_qentry* lastp = smgi_q_at(&ch->lower, ch->lower.count - 1u);
   if (lastp->rank >= SMGI_MAX_RANK) return 0;
   smgi_qentry last = *lastp;
+  last.W = smgi_q_ground(ch, ch->lower.count - 1u);
   ch->plan.backtracks++;
   uint32_t from = g->data.lower_edges[last.edge].from;
   uint32_t seg = smgi_q_at(&ch->lower, ch->lower.count - 2u)->seg_end;
@@ -405,11 +410,13 @@ void smgi_replan(smg_character* ch) {
     ch->lower.count = 0;
     ch->lower.frames = 0;
     ch->plan.backtracks = 0;
+    smgi_lag_reset(&ch->steer);
     ch->upper.pending.valid = 0;
     push(ch, h.W, ch->progress, &c[0], 0, n);
     return;
   }
   ch->lower.count = 1; /* keep only the edge that is playing */
+  smgi_lag_reset(&ch->steer); /* nothing beyond the next two is left */
   ch->lower.frames =
       ch->graph->data.lower_edges[smgi_q_at(&ch->lower, 0)->edge].frame_count;
   ch->plan.backtracks = 0;
@@ -458,6 +465,7 @@ smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
   ch->lower.count = 0;
   ch->lower.frames = 0;
   ch->lower.t = 0.0f;
+  smgi_lag_reset(&ch->steer);
   push(ch, W, ch->progress, &c[0], 0, n);
   ch->lower.node = node;
   return SMG_OK;

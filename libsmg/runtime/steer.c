@@ -17,10 +17,11 @@
  *    motion's ground speed;
  *  - both rates change by a bounded amount per second, so the correction
  *    never pops when it starts, saturates or stops.
- * The correction is applied to the pose just composed and to every queued
- * edge's ground transform (and the frame placement of the two the pose
- * samples), so what is planned ahead moves with the character and the
- * planner continues from where the character really is. It runs
+ * The correction is applied to the pose just composed and to the queued
+ * edges' placements (the two the pose samples at once, further ones
+ * through the correction pending for them, smgi_lag_apply, when read), so
+ * what is planned ahead moves with the character and the planner
+ * continues from where the character really is. It runs
  * before forward kinematics and foot IK: a planted foot keeps its world
  * anchor while the body turns and slides above it.
  *
@@ -61,6 +62,8 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
   s->drift_turn = s->drift_move = 0.0f;
+  s->heading_seg = SMGI_NONE;
+  smgi_lag_reset(s);
 }
 
 void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
@@ -72,6 +75,7 @@ void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
 
 void smgi_steer_path_changed(smgi_steer* s) {
   s->mode = SMGI_STEER_FOLLOW;
+  s->heading_seg = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
 }
 
@@ -91,32 +95,24 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
   }
 }
 
-/* A queue entry's frame -> world placement from its ground transform W,
- * as the planner computed it when it pushed the entry. */
-static smgi_xform2 placement_of(const smg_graph* g, const smgi_qentry* q) {
-  const float* r =
-      g->data.frames[g->data.lower_nodes[g->data.lower_edges[q->edge].from]
-                         .frame].root2d;
-  smgi_xform2 ground = {r[0], r[1], r[2]};
-  return smgi_xf_mul(q->W, smgi_xf_inv(ground));
-}
-
-/* Queue entry i's placement. The correction keeps M up to date only for
- * the two entries the pose samples (every entry's W, which the planner
- * reads, is corrected every step); further ones derive it from W. */
+/* Queue entry i's placement (frame -> world). The correction keeps W
+ * and M up to date only for the two entries the pose samples; further
+ * ones get the correction pending since they were written (the lag is a
+ * rigid transform applied on the world side, so it moves M as it moves
+ * W). */
 static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
   const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
-  if (i < 2u || !ch->steer.corrected) return q->M;
-  return placement_of(ch->graph, q);
+  return i < 2u ? q->M : smgi_lag_apply(&ch->steer, q->M);
 }
 
 void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
-  if (!ch->steer.corrected || pops == 0) return;
-  /* the entries that moved to index 0 or 1 from further back */
-  for (uint32_t i = pops < 2u ? 2u - pops : 0u; i < 2u && i < ch->lower.count;
-       ++i) {
+  /* the entries that moved to index 0 or 1 from further back: the
+   * pending correction written into them */
+  for (uint32_t i = pops < 2u ? 2u - pops : 0u;
+       pops > 0 && i < 2u && i < ch->lower.count; ++i) {
     smgi_qentry* q = smgi_q_at(&ch->lower, i);
-    q->M = placement_of(ch->graph, q);
+    q->W = smgi_lag_apply(&ch->steer, q->W);
+    q->M = smgi_lag_apply(&ch->steer, q->M);
   }
 }
 
@@ -205,22 +201,35 @@ static void consider_stop(smg_character* ch) {
   s->mode = SMGI_STEER_BRAKE;
 }
 
+/* The heading of path segment seg, remembered for the next call. */
+static float segment_heading(smgi_steer* st, const smgi_path* p,
+                             uint32_t seg) {
+  if (seg != st->heading_seg) {
+    st->heading = smgi_path_heading(p, seg);
+    st->heading_seg = seg;
+  }
+  return st->heading;
+}
+
 /* Signed turning of the path ahead (radians per metre, + = left): the
  * sharper of two halves of the next SMGI_STEER_CURVE_AHEAD metres, so a
  * short tight loop is not averaged away. */
-static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
+static float curvature_ahead(smgi_steer* st, const smgi_path* p, float s,
+                             uint32_t seg) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
   uint32_t s0 = seg, s1, s2;
-  smgi_path_eval(p, s, &s0, &x, &z, NULL);
+  smgi_path_eval(p, s, &s0, &st->at_x, &st->at_z, NULL);
+  st->at_valid = 1;
   s1 = s0;
   smgi_path_eval(p, s + half, &s1, &x, &z, NULL);
   s2 = s1;
   smgi_path_eval(p, s + 2.0f * half, &s2, &x, &z, NULL);
-  /* one heading per segment: the three points mostly share one or two */
-  float h0 = smgi_path_heading(p, s0);
-  float h1 = s1 == s0 ? h0 : smgi_path_heading(p, s1);
-  float h2 = s2 == s1 ? h1 : smgi_path_heading(p, s2);
+  /* one heading per segment: the three points mostly share one or two,
+   * and the last one is often the first of the next step */
+  float h0 = segment_heading(st, p, s0);
+  float h1 = s1 == s0 ? h0 : segment_heading(st, p, s1);
+  float h2 = s2 == s1 ? h1 : segment_heading(st, p, s2);
   float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
   return (fabsf(a) > fabsf(b) ? a : b) / half;
 }
@@ -228,6 +237,7 @@ static float curvature_ahead(const smgi_path* p, float s, uint32_t seg) {
 float smgi_steer_frames(smg_character* ch, float dt) {
   smgi_steer* s = &ch->steer;
   const float full = dt * ch->fps;
+  s->at_valid = 0;
   if (!s->enabled || ch->path.count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
@@ -245,7 +255,7 @@ float smgi_steer_frames(smg_character* ch, float dt) {
   if (s->mode == SMGI_STEER_FOLLOW) {
     /* slow down where the path turns tighter than the steering can turn
      * at this speed */
-    float kappa = curvature_ahead(&ch->path, ch->progress, ch->seg);
+    float kappa = curvature_ahead(s, &ch->path, ch->progress, ch->seg);
     float r = s->rate > 0.05f ? s->rate : 0.05f;
     /* the correction the path asks for at full playback: its turning at
      * the motion's speed minus the motion's own turning */
@@ -291,6 +301,42 @@ static inline void delta_xf(const delta* d, smgi_xform2* x) {
   x->x = d->px + d->c * vx + d->s * vz + d->tx;
   x->z = d->pz - d->s * vx + d->c * vz + d->tz;
   x->h = smgi_wrap_angle(x->h + d->da);
+}
+
+/* The pending correction of the entries beyond the next two, followed by
+ * d. With lag L(x) = R(a)(x - p) + p + t and D(x) = R(da)(x - g) + g + dt:
+ * D(L(x)) = R(a + da)(x - p) + p + R(da)(t + p - g) - (p - g) + dt. The
+ * turn's pivot p is moved to the character when the lag starts, so p - g
+ * stays as small as the way walked since. */
+static void lag_follow(smgi_steer* s, const delta* d) {
+  if (s->lag_c == 1.0f && s->lag_s == 0.0f && s->lag_t[0] == 0.0f &&
+      s->lag_t[1] == 0.0f) { /* identity: any pivot */
+    s->lag_p[0] = d->px;
+    s->lag_p[1] = d->pz;
+  }
+  float ux = s->lag_p[0] - d->px, uz = s->lag_p[1] - d->pz;
+  float vx = s->lag_t[0] + ux, vz = s->lag_t[1] + uz;
+  s->lag_t[0] = d->c * vx + d->s * vz - ux + d->tx;
+  s->lag_t[1] = -d->s * vx + d->c * vz - uz + d->tz;
+  float c = s->lag_c * d->c - s->lag_s * d->s;
+  s->lag_s = s->lag_s * d->c + s->lag_c * d->s;
+  s->lag_c = c;
+  s->lag_a = smgi_wrap_angle(s->lag_a + d->da);
+  s->lag_steps++;
+}
+
+/* Write the pending correction into the entries beyond the next two and
+ * start afresh: composed over many steps, its rounding (its cosine and
+ * sine drift apart from a rotation's, its pivot falls behind) would grow
+ * with the time since a re-plan, which following a gentle path can make
+ * long. */
+static void lag_write(smg_character* ch) {
+  for (uint32_t i = 2u; i < ch->lower.count; ++i) {
+    smgi_qentry* e = smgi_q_at(&ch->lower, i);
+    e->W = smgi_lag_apply(&ch->steer, e->W);
+    e->M = smgi_lag_apply(&ch->steer, e->M);
+  }
+  smgi_lag_reset(&ch->steer);
 }
 
 void smgi_steer_apply(smg_character* ch, float dt) {
@@ -349,8 +395,13 @@ void smgi_steer_apply(smg_character* ch, float dt) {
         want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
       }
     } else {
-      uint32_t sg = ch->seg;
-      smgi_path_eval(p, ch->progress, &sg, &qx, &qz, NULL);
+      if (s->at_valid) { /* progress has not moved since */
+        qx = s->at_x;
+        qz = s->at_z;
+      } else {
+        uint32_t sg = ch->seg;
+        smgi_path_eval(p, ch->progress, &sg, &qx, &qz, NULL);
+      }
       /* the hips sway from side to side with every step: only the offset
        * beyond that is an error to remove */
       float ox = qx - gx, oz = qz - gz, ol = sqrtf(ox * ox + oz * oz);
@@ -383,17 +434,22 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   }
   delta d;
   d.da = s->turn * dt;
-  smgi_sincosf(d.da, &d.s, &d.c);
+  /* the half angle's sine and cosine give the pose's yaw quaternion and,
+   * by the double-angle formulas, the turn itself: one sincos a step */
+  float sh, chh;
+  smgi_sincosf(0.5f * d.da, &sh, &chh);
+  d.s = 2.0f * sh * chh;
+  d.c = 1.0f - 2.0f * sh * sh;
   d.px = gx;
   d.pz = gz;
   d.tx = s->slide[0] * dt;
   d.tz = s->slide[1] * dt;
   if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
     /* the pose just composed ... */
-    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, yaw[4], q[4];
+    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, q[4];
+    const float yaw[4] = {0.0f, sh, 0.0f, chh};
     ch->pose.root[0] = gx + d.c * rx + d.s * rz + d.tx;
     ch->pose.root[2] = gz - d.s * rx + d.c * rz + d.tz;
-    smgi_q_yaw(d.da, yaw);
     smgi_q_mul(yaw, ch->pose.rot, q);
     smgi_q_normalize(q);
     ch->pose.rot[0] = q[0];
@@ -403,13 +459,21 @@ void smgi_steer_apply(smg_character* ch, float dt) {
     ch->pose.ground[0] = gx + d.tx;
     ch->pose.ground[1] = gz + d.tz;
     ch->pose.heading = smgi_wrap_angle(gh + d.da);
-    /* ... and every queued placement, so the plan moves with it */
-    for (uint32_t i = 0; i < ch->lower.count; ++i) {
+    /* ... and every queued placement, so the plan moves with it: the two
+     * entries the pose samples now, further ones when read (writing every
+     * planned entry every step was most of this stage's cache misses in
+     * a crowd) */
+    for (uint32_t i = 0; i < ch->lower.count && i < 2u; ++i) {
       smgi_qentry* e = smgi_q_at(&ch->lower, i);
       delta_xf(&d, &e->W);
-      if (i < 2u) delta_xf(&d, &e->M); /* further ones: entry_M */
+      delta_xf(&d, &e->M);
     }
-    s->corrected = 1;
+    if (ch->lower.count > 2u) {
+      lag_follow(s, &d);
+      if (s->lag_steps >= SMGI_STEER_LAG_STEPS) lag_write(ch);
+    } else {
+      smgi_lag_reset(s);
+    }
   }
   s->drift_turn += fabsf(d.da);
   s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);

@@ -9,6 +9,7 @@
 
 #include <stdint.h>
 
+#include "rmath.h"
 #include "smg.h"
 #include "tuning.h"
 
@@ -34,8 +35,22 @@ typedef struct smgi_steer {
   float rate;             /* playback rate: 1 following, < 1 slowing */
   /* correction applied since the planned edges were chosen: the plan
    * moves with the character, so beyond a bound it is chosen again */
-  uint32_t corrected;     /* a correction moved the queue: placements (M)
-                             beyond the two next entries derive from W */
+  /* The correction since the entries beyond the next two were written,
+   * as one transform (smgi_lag_apply): those entries are corrected when
+   * read instead of written every step. A turn by lag_a (cos, sin in
+   * lag_c, lag_s) about lag_p, then a shift by lag_t: kept about a point
+   * near the character, so its numbers stay small far from the origin. */
+  float lag_a, lag_c, lag_s, lag_p[2], lag_t[2];
+  uint32_t lag_steps;     /* steps composed into it */
+  /* the heading of the path segment last looked at (an atan2; the
+   * curvature ahead mostly looks at the same segment step after step),
+   * forgotten when the path changes */
+  uint32_t heading_seg;   /* SMGI_NONE: none */
+  float heading;
+  /* the path point at the character's progress, found by the curvature
+   * ahead and wanted again by the correction in the same step */
+  uint32_t at_valid;      /* set this step */
+  float at_x, at_z;
   float drift_turn;       /* radians */
   float drift_move;       /* metres */
   /* braking: the frame the character comes to rest on */
@@ -55,11 +70,42 @@ void smgi_steer_path_changed(smgi_steer* s);
  * rate (slowing for a tight turn, braking at the end, 0 at rest). */
 float smgi_steer_frames(smg_character* ch, float dt);
 /* After the playhead passed `pops` edges: the entries now next in line
- * get their placements back from their (corrected) ground transforms. */
+ * get the correction pending for them written in (smgi_lag_apply). */
 void smgi_steer_refresh(smg_character* ch, uint32_t pops);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
 void smgi_steer_apply(smg_character* ch, float dt);
+
+/* No correction pending for the entries beyond the next two. */
+static inline void smgi_lag_reset(smgi_steer* s) {
+  s->lag_a = s->lag_s = 0.0f;
+  s->lag_c = 1.0f;
+  s->lag_p[0] = s->lag_p[1] = s->lag_t[0] = s->lag_t[1] = 0.0f;
+  s->lag_steps = 0;
+}
+
+/* A stored ground transform of a queue entry beyond the next two, as it
+ * is now: with the correction made since it was written. */
+static inline smgi_xform2 smgi_lag_apply(const smgi_steer* s, smgi_xform2 x) {
+  float vx = x.x - s->lag_p[0], vz = x.z - s->lag_p[1];
+  smgi_xform2 r;
+  r.x = s->lag_p[0] + s->lag_c * vx + s->lag_s * vz + s->lag_t[0];
+  r.z = s->lag_p[1] - s->lag_s * vx + s->lag_c * vz + s->lag_t[1];
+  r.h = smgi_wrap_angle(x.h + s->lag_a);
+  return r;
+}
+
+/* The inverse: what to store for an entry beyond the next two that is
+ * at x now. */
+static inline smgi_xform2 smgi_lag_undo(const smgi_steer* s, smgi_xform2 x) {
+  float vx = x.x - s->lag_p[0] - s->lag_t[0];
+  float vz = x.z - s->lag_p[1] - s->lag_t[1];
+  smgi_xform2 r;
+  r.x = s->lag_p[0] + s->lag_c * vx - s->lag_s * vz;
+  r.z = s->lag_p[1] + s->lag_s * vx + s->lag_c * vz;
+  r.h = smgi_wrap_angle(x.h - s->lag_a);
+  return r;
+}
 
 /* What the planner should count of an error the steering will remove:
  * the planner asks for every root sample of every sequence it ranks, so

@@ -161,6 +161,10 @@
 #define SMGI_STEER_REPLAN_TURN 0.7f   /* rad of correction (40 deg) ... */
 #define SMGI_STEER_REPLAN_MOVE 0.5f   /* ... or metres of it since the plan
                                          was chosen: plan again */
+#define SMGI_STEER_LAG_STEPS 32u      /* steps the correction pending for
+                                         planned entries is composed before
+                                         it is written into them (bounds
+                                         its rounding; steer.c) */
 #define SMGI_STEER_SETTLE_SECONDS 1.5f /* s of motion before braking in
                                           which a stop wants the agile
                                           style */
