@@ -7,14 +7,16 @@
 #
 #   make test-fuzz    (part of `make test`) each target with the standalone
 #                     driver: every committed input (tests/fuzz/corpus/<name>,
-#                     tests/fuzz/regress/<name>), then the seed +
+#                     tests/fuzz/regress/<name>) and every generated seed
+#                     (fuzz_seed: built by the target, never committed),
+#                     then seed 0 +
 #                     FUZZ_SMOKE_RUNS deterministic mutants natively and
 #                     FUZZ_VALGRIND_RUNS of them under valgrind (per-target
 #                     counts below keep the slow targets' share small).
 #   make fuzz-<name>  build build/libfuzzer/fuzz_<name> with clang's
 #                     libFuzzer + ASan/UBSan and run it for FUZZ_SECONDS
 #                     (default 60) on build/libfuzzer/corpus-<name>, seeded
-#                     with the target's seed and the committed inputs.
+#                     with the target's seeds and the committed inputs.
 #                     Needs clang; clang is optional for everything else.
 #                     Extra libFuzzer flags: FUZZ_ARGS="-jobs=2 ...".
 # A campaign and its record: docs/fuzzing.md. Every finding gets its input
@@ -66,8 +68,11 @@ test-fuzz: $(FUZZ_BIN)
 	  $(if $(call fuzz_inputs,$(n)),$(BUILD)/fuzz/fuzz_$(n) $(call fuzz_inputs,$(n)) >/dev/null;) \
 	  $(if $(call fuzz_inputs,$(n)),$(VALGRIND) $(FUZZ_VALGRIND_SUPP_$(n)) $(BUILD)/fuzz/fuzz_$(n) $(call fuzz_inputs,$(n)) >/dev/null;) \
 	  $(BUILD)/fuzz/fuzz_$(n) -n $(or $(FUZZ_SMOKE_RUNS_$(n)),$(FUZZ_SMOKE_RUNS)); \
-	  $(BUILD)/fuzz/fuzz_$(n) --write-seed $(BUILD)/fuzz/seed-$(n); \
-	  $(VALGRIND) $(FUZZ_VALGRIND_SUPP_$(n)) $(BUILD)/fuzz/fuzz_$(n) -i $(BUILD)/fuzz/seed-$(n) -n $(or $(FUZZ_VALGRIND_RUNS_$(n)),$(FUZZ_VALGRIND_RUNS)) -s 2;)
+	  rm -rf $(BUILD)/fuzz/seeds-$(n); \
+	  $(BUILD)/fuzz/fuzz_$(n) --write-seeds $(BUILD)/fuzz/seeds-$(n); \
+	  set -- $(BUILD)/fuzz/seeds-$(n)/seed-[1-9]*; \
+	  if [ -e "$$1" ]; then $(VALGRIND) $(FUZZ_VALGRIND_SUPP_$(n)) $(BUILD)/fuzz/fuzz_$(n) "$$@" >/dev/null; fi; \
+	  $(VALGRIND) $(FUZZ_VALGRIND_SUPP_$(n)) $(BUILD)/fuzz/fuzz_$(n) -i $(BUILD)/fuzz/seeds-$(n)/seed-0 -n $(or $(FUZZ_VALGRIND_RUNS_$(n)),$(FUZZ_VALGRIND_RUNS)) -s 2;)
 
 # libFuzzer build: compile the library sources together with the target
 # under the sanitizers (the normal objects are not instrumented; assimp,
@@ -80,7 +85,7 @@ $(BUILD)/libfuzzer/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_SRC) $(BAKE_SRC) $(LIB_HDR)
 
 fuzz-%: $(BUILD)/libfuzzer/fuzz_% $(BUILD)/fuzz/fuzz_%
 	@mkdir -p $(BUILD)/libfuzzer/corpus-$*
-	$(BUILD)/fuzz/fuzz_$* --write-seed $(BUILD)/libfuzzer/corpus-$*/seed
+	$(BUILD)/fuzz/fuzz_$* --write-seeds $(BUILD)/libfuzzer/corpus-$*
 	$(if $(call fuzz_inputs,$*),cp $(call fuzz_inputs,$*) $(BUILD)/libfuzzer/corpus-$*/)
 	$(FUZZ_LSAN_$*) $(BUILD)/libfuzzer/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
 	  -artifact_prefix=$(BUILD)/libfuzzer/$*- \

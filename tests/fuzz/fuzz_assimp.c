@@ -88,7 +88,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 }
 
 /* type byte 0 (.glb) + assimp's GLB of a 0.25 s synthetic run. */
-int fuzz_seed(uint8_t** data, size_t* size) {
+int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
   char bvh[128], glb[128];
   smgb_synth_params p;
   smgb_clip clip;
@@ -97,6 +97,7 @@ int fuzz_seed(uint8_t** data, size_t* size) {
   aiReturn exported;
   FILE* f;
   long n;
+  if (index) return FUZZ_SEED_NONE;
   make_dir();
   snprintf(bvh, sizeof bvh, "%s/seed.bvh", g_dir);
   snprintf(glb, sizeof glb, "%s/seed.glb", g_dir);
@@ -105,19 +106,19 @@ int fuzz_seed(uint8_t** data, size_t* size) {
   p.duration = 0.25f;
   p.frame_rate = 30.0f;
   p.turn_rate = 0.5f;
-  if (smgb_synth_generate(&p, &clip, NULL) != SMG_OK) return 1;
+  if (smgb_synth_generate(&p, &clip, NULL) != SMG_OK) return -1;
   if (smgb_bvh_save(bvh, &clip, &err) != SMG_OK) {
     smgb_clip_free(&clip);
-    return 1;
+    return -1;
   }
   smgb_clip_free(&clip);
   scene = aiImportFile(bvh, 0);
-  if (!scene) return 1;
+  if (!scene) return -1;
   exported = aiExportScene(scene, "glb2", glb, 0);
   aiReleaseImport(scene);
-  if (exported != aiReturn_SUCCESS) return 1;
+  if (exported != aiReturn_SUCCESS) return -1;
   f = fopen(glb, "rb");
-  if (!f) return 1;
+  if (!f) return -1;
   fseek(f, 0, SEEK_END);
   n = ftell(f);
   fseek(f, 0, SEEK_SET);
@@ -126,7 +127,7 @@ int fuzz_seed(uint8_t** data, size_t* size) {
   if (!*data || fread(*data + 1, 1, (size_t)n, f) != (size_t)n) {
     fclose(f);
     free(*data);
-    return 1;
+    return -1;
   }
   fclose(f);
   (*data)[0] = 0;

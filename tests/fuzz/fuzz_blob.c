@@ -123,14 +123,15 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return 0;
 }
 
-int fuzz_seed(uint8_t** data, size_t* size) {
+int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
   void* blob = NULL;
   size_t n = 0;
-  if (fixture_graph_blob(&blob, &n) != SMG_OK) return 1;
+  if (index) return FUZZ_SEED_NONE;
+  if (fixture_graph_blob(&blob, &n) != SMG_OK) return -1;
   *data = (uint8_t*)malloc(n);
   if (!*data) {
     smgi_blob_free(blob, NULL);
-    return 1;
+    return -1;
   }
   memcpy(*data, blob, n);
   *size = n;

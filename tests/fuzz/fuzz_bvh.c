@@ -17,11 +17,78 @@
 #include "bake_synthetic.h"
 #include "fuzz.h"
 
-/* A real-shaped file: the 31-joint CMU hierarchy of a generated
+/* Seeds 1 and 2: small hand-shaped files the synthetic walk does not
+ * cover - rotation channels in other orders, a joint with one channel, a
+ * non-root joint with position channels (its offset moves), and (seed 2)
+ * a static root above the translating pelvis, as rigs exported from
+ * MotionBuilder or Mixamo have. Built here rather than kept as files. */
+typedef struct text {
+  char buf[4096];
+  size_t len;
+} text;
+
+static void put(text* t, const char* s) {
+  size_t n = strlen(s);
+  if (t->len + n < sizeof t->buf) {
+    memcpy(t->buf + t->len, s, n + 1);
+    t->len += n;
+  }
+}
+
+static void put_leg(text* t, const char* side, const char* x,
+                    const char* order) {
+  put(t, "\tJOINT "), put(t, side), put(t, "UpLeg\n\t{\n\t\tOFFSET ");
+  put(t, x), put(t, " -6 0\n\t\tCHANNELS 3 "), put(t, order);
+  put(t, "\n\t\tJOINT "), put(t, side);
+  put(t, "Foot\n\t\t{\n\t\t\tOFFSET 0 -80 0\n\t\t\tCHANNELS 1 "
+         "Xrotation\n\t\t\tEnd Site\n\t\t\t{\n\t\t\t\tOFFSET 0 -5 "
+         "12\n\t\t\t}\n\t\t}\n\t}\n");
+}
+
+static int hand_shaped_seed(int static_root, uint8_t** data, size_t* size) {
+  /* three frames: rest, moderate angles, wrapped and exponent-written */
+  static const char* const frames[3] = {
+      "0 90 0 0 0 0 0 0 0 0 0 0 0 0 0 10 0 0 0 0",
+      "1.5 91 2 10 -20 30 5 -6 7 8 9 -10 11 12 0 10 0 -14 15 -16",
+      "3 90.5 4.25 -170 179 -1e2 0.5 6 -7e0 8 9 10 -11 12 0 10 0 14 -15 "
+      "16"};
+  text t;
+  int f;
+  t.len = 0;
+  t.buf[0] = '\0';
+  put(&t, "HIERARCHY\n");
+  if (static_root)
+    put(&t, "ROOT joint_Root\n{\n\tOFFSET 0 0 0\n\tCHANNELS 6 Xposition "
+            "Yposition Zposition Zrotation Xrotation Yrotation\n\tJOINT "
+            "Hips\n");
+  else
+    put(&t, "ROOT Hips\n");
+  put(&t, "{\n\tOFFSET 0 0 0\n\tCHANNELS 6 Xposition Yposition Zposition "
+          "Zrotation Yrotation Xrotation\n");
+  put_leg(&t, "Left", "9", "Zrotation Xrotation Yrotation");
+  put_leg(&t, "Right", "-9", "Yrotation Xrotation Zrotation");
+  put(&t, "\tJOINT Spine\n\t{\n\t\tOFFSET 0 10 0\n\t\tCHANNELS 6 "
+          "Xposition Yposition Zposition Xrotation Yrotation Zrotation\n"
+          "\t\tEnd Site\n\t\t{\n\t\t\tOFFSET 0 50 0\n\t\t}\n\t}\n}\n");
+  if (static_root) put(&t, "}\n");
+  put(&t, "MOTION\nFrames: 3\nFrame Time: 0.0333333\n");
+  for (f = 0; f < 3; ++f) {
+    if (static_root) put(&t, "5 0 -2 0 0 90 ");
+    put(&t, frames[f]);
+    put(&t, "\n");
+  }
+  *data = (uint8_t*)malloc(t.len);
+  if (!*data) return -1;
+  memcpy(*data, t.buf, t.len);
+  *size = t.len;
+  return 0;
+}
+
+/* Seed 0, a real-shaped file: the 31-joint CMU hierarchy of a generated
  * (synthetic) walk, 1 s at 120 frames/s like the CMU captures, written by
  * the baker's own BVH writer; real clips are this shape, only longer
  * (the libFuzzer run allows inputs of real clip sizes: mk/fuzz.mk). */
-int fuzz_seed(uint8_t** data, size_t* size) {
+int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
   char dir[64], path[96];
   smgb_synth_params p;
   smgb_clip clip;
@@ -29,8 +96,10 @@ int fuzz_seed(uint8_t** data, size_t* size) {
   smg_result r;
   FILE* f;
   long n = -1;
+  if (index == 1 || index == 2) return hand_shaped_seed(index == 2, data, size);
+  if (index > 2) return FUZZ_SEED_NONE;
   snprintf(dir, sizeof dir, "/tmp/smg-fuzz-bvh-XXXXXX");
-  if (!mkdtemp(dir)) return 1;
+  if (!mkdtemp(dir)) return -1;
   snprintf(path, sizeof path, "%s/seed.bvh", dir);
   memset(&p, 0, sizeof p);
   p.kind = SMGB_SYNTH_WALK;
@@ -54,7 +123,7 @@ int fuzz_seed(uint8_t** data, size_t* size) {
   if (f) fclose(f);
   remove(path);
   rmdir(dir);
-  return *data ? 0 : 1;
+  return *data ? 0 : -1;
 }
 
 static volatile float g_sink;

@@ -6,7 +6,10 @@
  *   fuzz_x [-n N] [-s SEED] [-i FILE]
  *                              run the seed input (the target's, or FILE),
  *                              then N mutants of it
- *   fuzz_x --write-seed FILE   write the target's seed input (corpus)
+ *                              (with the target's own seed, its further
+ *                              seeds run as they are first)
+ *   fuzz_x --write-seed FILE   write the target's seed 0 (mutation start)
+ *   fuzz_x --write-seeds DIR   write every seed as DIR/seed-K (corpus)
  *   fuzz_x [-s SEED] --dump K FILE
  *                              write mutant K (0-based) of that run to FILE
  *                              instead of running anything: reproduce a
@@ -21,11 +24,13 @@
  * longer than -t seconds (default 20) is reported as a hang with the
  * command that reproduces it, and the run fails.
  */
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "fuzz.h"
@@ -208,17 +213,63 @@ static int write_bytes(const char* path, const uint8_t* data, size_t size) {
   return 0;
 }
 
-static int write_seed(const char* path) {
+static int write_seed(uint32_t index, const char* path) {
   uint8_t* seed = NULL;
   size_t size = 0;
   int rc;
-  if (fuzz_seed(&seed, &size) != 0) {
-    fprintf(stderr, "fuzz: the target could not make its seed\n");
+  if (fuzz_seed(index, &seed, &size) != 0) {
+    fprintf(stderr, "fuzz: the target could not make its seed %u\n",
+            (unsigned)index);
     return 1;
   }
   rc = write_bytes(path, seed, size);
   free(seed);
   return rc;
+}
+
+/* Every seed of the target as DIR/seed-K (DIR is made if missing). */
+static int write_seeds(const char* dir) {
+  uint8_t* seed = NULL;
+  size_t size = 0;
+  uint32_t k;
+  int got;
+  char path[4096];
+  if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+    fprintf(stderr, "fuzz: cannot make %s\n", dir);
+    return 1;
+  }
+  for (k = 0; (got = fuzz_seed(k, &seed, &size)) == 0; ++k) {
+    snprintf(path, sizeof path, "%s/seed-%u", dir, (unsigned)k);
+    got = write_bytes(path, seed, size);
+    free(seed);
+    seed = NULL;
+    if (got != 0) return 1;
+  }
+  if (got != FUZZ_SEED_NONE || k == 0) {
+    fprintf(stderr, "fuzz: the target could not make its seed %u\n",
+            (unsigned)k);
+    return 1;
+  }
+  return 0;
+}
+
+/* The target's seeds after seed 0, each run as it is. */
+static int run_further_seeds(void) {
+  uint8_t* seed = NULL;
+  size_t size = 0;
+  uint32_t k;
+  int got;
+  for (k = 1; (got = fuzz_seed(k, &seed, &size)) == 0; ++k) {
+    run_exact(seed, size);
+    free(seed);
+    seed = NULL;
+  }
+  if (got != FUZZ_SEED_NONE) {
+    fprintf(stderr, "fuzz: the target could not make its seed %u\n",
+            (unsigned)k);
+    return 1;
+  }
+  return 0;
 }
 
 int main(int argc, char** argv) {
@@ -243,7 +294,9 @@ int main(int argc, char** argv) {
     } else if (strcmp(argv[argi], "-t") == 0 && argi + 1 < argc) {
       timeout = strtoul(argv[++argi], NULL, 10);
     } else if (strcmp(argv[argi], "--write-seed") == 0 && argi + 1 < argc) {
-      return write_seed(argv[++argi]);
+      return write_seed(0, argv[++argi]);
+    } else if (strcmp(argv[argi], "--write-seeds") == 0 && argi + 1 < argc) {
+      return write_seeds(argv[++argi]);
     } else if (strcmp(argv[argi], "--dump") == 0 && argi + 2 < argc) {
       dump_index = strtoul(argv[++argi], NULL, 10);
       dump_path = argv[++argi];
@@ -252,7 +305,7 @@ int main(int argc, char** argv) {
       fprintf(stderr,
               "usage: %s [-n MUTATIONS] [-s SEED] [-i SEED_FILE] [-t SECONDS] "
               "| FILE... | "
-              "--write-seed FILE | [-s SEED] --dump K FILE\n",
+              "--write-seed FILE | --write-seeds DIR | [-s SEED] --dump K FILE\n",
               argv[0]);
       return 2;
     } else {
@@ -265,7 +318,7 @@ int main(int argc, char** argv) {
   if (files) return rc;
 
   if (seed_path ? read_file(seed_path, &seed, &seed_size) != 0
-                : fuzz_seed(&seed, &seed_size) != 0) {
+                : fuzz_seed(0, &seed, &seed_size) != 0) {
     fprintf(stderr, "fuzz: no seed (%s)\n",
             seed_path ? seed_path : "the target could not make one");
     return 1;
@@ -281,6 +334,11 @@ int main(int argc, char** argv) {
   if (!dump_path) {
     alarm((unsigned)timeout);
     run_exact(seed, seed_size);
+    if (!seed_path && run_further_seeds() != 0) {
+      free(buf);
+      free(seed);
+      return 1;
+    }
   }
   for (i = 0; i < n; ++i) {
     size_t len = seed_size, k, edits = 1 + below(4);

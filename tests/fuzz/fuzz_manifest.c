@@ -91,7 +91,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 }
 
 /* Every statement and option of docs/manifest.md at least once. */
-int fuzz_seed(uint8_t** data, size_t* size) {
+int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
   static const char seed[] =
       "# a manifest\n"
       "frame_rate 30\n"
@@ -105,9 +105,10 @@ int fuzz_seed(uint8_t** data, size_t* size) {
       "mirror default\n"
       "upper punch punch.bvh frames=100-end\n"
       "upper dribble \"my clip.glb\" animation=1 unit=1   # comment\n";
+  if (index) return FUZZ_SEED_NONE;
   *size = sizeof seed - 1;
   *data = (uint8_t*)malloc(*size);
-  if (!*data) return 1;
+  if (!*data) return -1;
   memcpy(*data, seed, *size);
   return 0;
 }

@@ -279,7 +279,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 }
 
 /* A walk along a bent path with a splice, a transition and steps. */
-int fuzz_seed(uint8_t** data, size_t* size) {
+int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
   static const uint8_t seed[] = {
       /* create: flags, style, action, path cap, constraint cap, seed,
        * x (nudge 0), z (nudge 0), heading, horizon, threshold */
@@ -294,9 +294,10 @@ int fuzz_seed(uint8_t** data, size_t* size) {
       /* IK off, style 0, 32 steps at 1/120, append 2 points, 32 steps */
       10, 0, 8, 0, 13, 3, 31, 1, 2, 20, 10, 20, 10, 20, 10, 20, 10, 13,
       5, 31};
+  if (index) return FUZZ_SEED_NONE;
   *size = sizeof seed;
   *data = (uint8_t*)malloc(sizeof seed);
-  if (!*data) return 1;
+  if (!*data) return -1;
   memcpy(*data, seed, sizeof seed);
   return 0;
 }
