@@ -115,6 +115,6 @@ void eval_paths_on_graph(eval_ctx* ctx, const void* blob, size_t size,
                          const char* graph);
 /* A second studio: the Bandai Namco Research Motion Dataset graph
  * (data/bandai.manifest), baked and run on the evaluation paths. */
-void eval_section_bandai(eval_ctx* ctx);
+void eval_section_second_studio(eval_ctx* ctx);
 
 #endif /* EVAL_CTX_H */

@@ -304,7 +304,7 @@ int main(int argc, char** argv) {
             "reports the time from giving the path to the first pose plus "
             "the per-frame cost.\n\n");
   }
-  if (!ctx.only) eval_section_bandai(&ctx);
+  if (!ctx.only) eval_section_second_studio(&ctx);
   if (ctx.md) {
     eval_md(&ctx, "Whole evaluation run: %.1f s wall clock.\n",
             eval_now() - t0);

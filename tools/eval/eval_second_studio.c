@@ -1,5 +1,5 @@
 /*
- * eval_bandai.c - section 6: a second studio. The Bandai Namco Research
+ * eval_second_studio.c - section 6: a second studio. The Bandai Namco Research
  * Motion Dataset clips (data/bandai.manifest: another skeleton and naming,
  * centimetres, a static root above the pelvis, walks that turn, runs, an
  * `exhausted` second style, waving and raising hands as actions) baked
@@ -39,7 +39,7 @@ static void label_counts(const smgb_manifest* m, char* buf, size_t size) {
   }
 }
 
-void eval_section_bandai(eval_ctx* ctx) {
+void eval_section_second_studio(eval_ctx* ctx) {
   smgb_manifest man;
   smgb_error merr;
   smg_bake_result res;

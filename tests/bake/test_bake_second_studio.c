@@ -1,5 +1,5 @@
 /*
- * test_bake_bandai.c - bake the real Bandai Namco Research Motion Dataset
+ * test_bake_second_studio.c - bake the real Bandai Namco Research Motion Dataset
  * clips (data/bandai.manifest: a second studio, a static joint_Root above
  * a translating Hips, 6 channels on every joint, centimetres, _L/_R names,
  * two performers) and judge the result from geometry: forward kinematics
