@@ -13,6 +13,7 @@
 
 #include "bake_clip.h"
 #include "bake_graph.h"
+#include "bake_manifest.h"
 #include "bake_math.h"
 #include "bake_synthetic.h"
 #include "blob.h"
@@ -90,6 +91,33 @@ static inline smg_result bg_bake(const bg_set* s, const smg_bake_options* o,
   memset(res, 0, sizeof *res);
   res->struct_size = sizeof *res;
   return smg_bake_run(&d, res);
+}
+
+/* Bakes a manifest file (clips found in data_dir, or beside it when NULL)
+ * at its own frame rate, onto the target rig `rig` when not NULL; fails
+ * the test with the manifest's or the bake's message. */
+static inline void bg_bake_manifest(const char* manifest, const char* data_dir,
+                                    const char* rig, smg_bake_result* res) {
+  smgb_manifest m;
+  smgb_error err;
+  smg_bake_clip_desc descs[64];
+  smg_bake_desc d;
+  if (smgb_manifest_load(manifest, data_dir, &m, &err) != SMG_OK)
+    fail_msg("%s", err.message);
+  assert_true(m.clip_count <= 64);
+  assert_int_equal(smgb_manifest_descs(&m, descs, m.clip_count), SMG_OK);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.clips = descs;
+  d.clip_count = m.clip_count;
+  d.options.struct_size = sizeof d.options;
+  d.options.frame_rate = m.frame_rate;
+  d.target_path = rig;
+  d.target_unit_scale = rig ? 1.0f : 0.0f;
+  memset(res, 0, sizeof *res);
+  res->struct_size = sizeof *res;
+  if (smg_bake_run(&d, res) != SMG_OK) fail_msg("%s: %s", manifest, res->error);
+  smgb_manifest_free(&m);
 }
 
 static inline void bg_read(const smg_bake_result* res, smgi_graph_data* g) {

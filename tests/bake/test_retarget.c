@@ -28,7 +28,6 @@
 
 #include "bake_graph_helpers.h"
 #include "bake_import_util.h"
-#include "bake_manifest.h"
 #include "bake_retarget.h"
 #include "retarget_measure.h"
 
@@ -481,30 +480,12 @@ static void measure_set(const char* label, const char* manifest,
                         const char* data_dir, const char* rig,
                         rm_result* worst, double* path_mean,
                         rm_result* with_ik) {
-  smgb_manifest m;
-  smgb_error err;
-  smg_bake_clip_desc descs[64];
-  smg_bake_desc d;
   smg_bake_result res;
   smgi_graph_data gd;
   smg_graph* g = NULL;
   double len[256], ik_mean;
   uint32_t toes[2], j;
-  if (smgb_manifest_load(manifest, data_dir, &m, &err) != SMG_OK)
-    fail_msg("%s", err.message);
-  assert_true(m.clip_count <= 64);
-  assert_int_equal(smgb_manifest_descs(&m, descs, m.clip_count), SMG_OK);
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
-  d.clips = descs;
-  d.clip_count = m.clip_count;
-  d.options.struct_size = sizeof d.options;
-  d.options.frame_rate = m.frame_rate;
-  d.target_path = rig;
-  d.target_unit_scale = rig ? 1.0f : 0.0f;
-  memset(&res, 0, sizeof res);
-  res.struct_size = sizeof res;
-  if (smg_bake_run(&d, &res) != SMG_OK) fail_msg("%s: %s", label, res.error);
+  bg_bake_manifest(manifest, data_dir, rig, &res);
   bg_read(&res, &gd);
   for (j = 0; j < gd.joint_count && j < 256; ++j) {
     const float* o = gd.joints[j].offset;
@@ -525,7 +506,6 @@ static void measure_set(const char* label, const char* manifest,
          with_ik->path_error_max_m);
   smg_graph_destroy(g);
   smg_bake_result_free(&res);
-  smgb_manifest_free(&m);
 }
 
 /* The measurement of docs/baker.md ("Retargeting, measured"): the CMU set

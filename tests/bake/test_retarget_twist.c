@@ -22,7 +22,6 @@
 
 #include "bake_graph_helpers.h"
 #include "bake_import_util.h"
-#include "bake_manifest.h"
 #include "bake_retarget.h"
 #include "quat_pack.h"
 
@@ -395,31 +394,6 @@ static int32_t joint_named(const smgi_graph_data* g, const char* name) {
   return -1;
 }
 
-static smg_result bake_manifest(const char* manifest, const char* data_dir,
-                                smg_bake_result* res) {
-  smgb_manifest m;
-  smgb_error err;
-  smg_bake_clip_desc descs[64];
-  smg_bake_desc d;
-  smg_result r;
-  if (smgb_manifest_load(manifest, data_dir, &m, &err) != SMG_OK)
-    fail_msg("%s", err.message);
-  assert_true(m.clip_count <= 64);
-  assert_int_equal(smgb_manifest_descs(&m, descs, m.clip_count), SMG_OK);
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
-  d.clips = descs;
-  d.clip_count = m.clip_count;
-  d.options.struct_size = sizeof d.options;
-  d.options.frame_rate = m.frame_rate;
-  memset(res, 0, sizeof *res);
-  res->struct_size = sizeof *res;
-  r = smg_bake_run(&d, res);
-  if (r != SMG_OK) fail_msg("%s: %s", manifest, res->error);
-  smgb_manifest_free(&m);
-  return r;
-}
-
 /* The CMU set (data/cmu.manifest), then the same followed by Bandai Namco
  * walks and runs retargeted onto the CMU skeleton (as test_retarget's set
  * (b), without its actions). Retargeted Bandai Namco legs must have the
@@ -469,8 +443,8 @@ static void test_mixed_set_transitions(void** state) {
     fprintf(f, "lower %s \"%s/dataset-2_%s.bvh\"\n",
             strncmp(walks[i], "run", 3) ? "walk" : "run", bn, walks[i]);
   fclose(f);
-  bake_manifest("data/cmu.manifest", cmu, &own);
-  bake_manifest(path, NULL, &mixed);
+  bg_bake_manifest("data/cmu.manifest", cmu, NULL, &own);
+  bg_bake_manifest(path, NULL, NULL, &mixed);
   remove(path);
   transition_jumps(&own, &js_own);
   transition_jumps(&mixed, &js_mixed);
