@@ -105,15 +105,19 @@ static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
   return i < 2u ? q->M : smgi_lag_apply(&ch->steer, q->M);
 }
 
+/* Queue entry i (beyond the next two when the lag was composed) as it is
+ * now: the pending correction written into its W and M. */
+static void lag_write_entry(smg_character* ch, uint32_t i) {
+  smgi_qentry* q = smgi_q_at(&ch->lower, i);
+  q->W = smgi_lag_apply(&ch->steer, q->W);
+  q->M = smgi_lag_apply(&ch->steer, q->M);
+}
+
 void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
-  /* the entries that moved to index 0 or 1 from further back: the
-   * pending correction written into them */
+  /* the entries that moved to index 0 or 1 from further back */
   for (uint32_t i = pops < 2u ? 2u - pops : 0u;
-       pops > 0 && i < 2u && i < ch->lower.count; ++i) {
-    smgi_qentry* q = smgi_q_at(&ch->lower, i);
-    q->W = smgi_lag_apply(&ch->steer, q->W);
-    q->M = smgi_lag_apply(&ch->steer, q->M);
-  }
+       pops > 0 && i < 2u && i < ch->lower.count; ++i)
+    lag_write_entry(ch, i);
 }
 
 /* Ground position of the frame k frames after the playhead (0 when the
@@ -331,11 +335,7 @@ static void lag_follow(smgi_steer* s, const delta* d) {
  * with the time since a re-plan, which following a gentle path can make
  * long. */
 static void lag_write(smg_character* ch) {
-  for (uint32_t i = 2u; i < ch->lower.count; ++i) {
-    smgi_qentry* e = smgi_q_at(&ch->lower, i);
-    e->W = smgi_lag_apply(&ch->steer, e->W);
-    e->M = smgi_lag_apply(&ch->steer, e->M);
-  }
+  for (uint32_t i = 2u; i < ch->lower.count; ++i) lag_write_entry(ch, i);
   smgi_lag_reset(&ch->steer);
 }
 
