@@ -236,6 +236,8 @@ typedef struct smg_character smg_character;
 #define SMG_CHARACTER_NO_IK 1u /* start with foot-contact IK off */
 #define SMG_CHARACTER_NO_STEERING 2u /* start with root steering off: the
                                         motion graph alone (see below) */
+#define SMG_CHARACTER_NO_SWING_CLEARANCE 4u /* swinging feet as the data
+                                               has them (see below) */
 
 typedef struct smg_character_desc {
   uint32_t struct_size;      /* = sizeof(smg_character_desc) */
@@ -272,7 +274,15 @@ typedef struct smg_character_desc {
                                 while it stands); 0 = 0.25 */
   float stop_seconds;        /* braking time when coming to rest at the
                                 path's end; 0 = 1.0 */
-  float reserved1;
+  /* Swing clearance (part of the foot IK; off with SMG_CHARACTER_NO_IK or
+   * SMG_CHARACTER_NO_SWING_CLEARANCE): a foot swinging fast keeps its toe
+   * at least this high above the floor that foot last stood on, so it
+   * never brushes along the ground - it would read as a sliding foot, and
+   * a shoe mesh thicker than the performer's foot would cut into the
+   * floor. Feet that stand, land or push off are not touched
+   * (docs/runtime.md, "Foot IK"). */
+  float swing_clearance;     /* metres; 0 = 0.04 leg lengths (about 3.5 cm
+                                on an adult) */
 } smg_character_desc;
 
 /* Create a character on `graph`. desc may be NULL (all defaults). Allocates

@@ -76,7 +76,8 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
       !isfinite(d->horizon) || !isfinite(d->error_threshold) ||
       d->horizon < 0.0f || d->horizon > SMGI_MAX_HORIZON ||
       d->error_threshold < 0.0f ||
-      !limits_ok(d->steer_turn_rate, d->steer_slide_ratio, d->stop_seconds))
+      !limits_ok(d->steer_turn_rate, d->steer_slide_ratio, d->stop_seconds) ||
+      !isfinite(d->swing_clearance) || d->swing_clearance < 0.0f)
     return SMG_ERROR_INVALID_ARGUMENT;
   if (d->path_capacity == 0) d->path_capacity = SMGI_DEFAULT_PATH_CAPACITY;
   if (d->constraint_capacity == 0)
@@ -146,6 +147,11 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->joint_count = J;
   ch->flags = d.flags;
   ch->ik.enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
+  ch->ik.swing_clearance =
+      (d.flags & SMG_CHARACTER_NO_SWING_CLEARANCE) ? 0.0f
+      : d.swing_clearance > 0.0f
+          ? d.swing_clearance
+          : SMGI_IK_SWING_CLEAR * graph->data.info->leg_length;
   smgi_steer_init(&ch->steer,
                   (d.flags & SMG_CHARACTER_NO_STEERING) ? 0u : 1u,
                   d.steer_turn_rate, d.steer_slide_ratio, d.stop_seconds);

@@ -17,6 +17,17 @@
  * correction is gone. Each solve starts from the foot's previous correction
  * (see solve_leg), and IK refreshes the world transform cache of the joints
  * it moved itself.
+ *
+ * Swing clearance: a foot that swings fast with its toe within twice the
+ * clearance of the floor it last stood on is raised (the same leg solve,
+ * the foot rigid) so the toe passes at least the clearance above it.
+ * Performers' toes pass 1-2 cm above the floor at 3-4 m/s in mid-swing; on
+ * a character that reads as a foot sliding along the ground, and a shoe
+ * mesh thicker than the performer's foot cuts into the floor. The lift is
+ * a smooth function of the toe's height (none from twice the clearance up)
+ * and fades in and out with the toe's speed over the ground, so it is
+ * gone before the foot stands, lands or pushes off: those keep the data's
+ * heights and the contact logic above.
  */
 #include <math.h>
 #include <string.h>
@@ -133,7 +144,7 @@ static inline void hip_turn(float* a, float* b, const float* t, float d2,
  * moves between steps, so CCD starts next to the answer and its sweeps add
  * up across steps instead of restarting from the raw animation. */
 static void solve_leg(smg_character* ch, uint32_t f, const float* target,
-                      float w) {
+                      float w, float (*fix)[4]) {
   const smgi_joint* joints = ch->graph->data.joints;
   const uint32_t* list = ch->ik.leg_joints + (size_t)f * ch->joint_count;
   const uint32_t hip = list[0], knee = list[1], ankle = list[2];
@@ -146,8 +157,8 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   float b0[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
   float t[3] = {target[0] - p0[0], target[1] - p0[1], target[2] - p0[2]};
   float Th[4], Tk[4], a[3], b[3];
-  memcpy(Th, foot->fix[0], sizeof Th);
-  memcpy(Tk, foot->fix[1], sizeof Tk);
+  memcpy(Th, fix[0], sizeof Th);
+  memcpy(Tk, fix[1], sizeof Tk);
   smgi_q_rotate(Th, a0, a);
   smgi_q_rotate(Tk, b0, b);
   /* Stop within SMGI_IK_TOLERANCE of the closest the ankle can get: 0 for a
@@ -227,8 +238,8 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   }
   smgi_q_normalize(Th);
   smgi_q_normalize(Tk);
-  memcpy(foot->fix[0], Th, sizeof Th);
-  memcpy(foot->fix[1], Tk, sizeof Tk);
+  memcpy(fix[0], Th, sizeof Th);
+  memcpy(fix[1], Tk, sizeof Tk);
   /* back to local rotations, blended with the animation by w; the ankle
    * keeps its animated world orientation */
   float r0[4], r1[4], inv[4], local[4];
@@ -318,9 +329,33 @@ void smgi_ik_reset(smgi_ik* ik) {
     ik->feet[f].toe[0] = ik->feet[f].toe[2] = 0.0f;
     ik->feet[f].toe[1] = INFINITY;
     ik->feet[f].floor_y = -INFINITY;
+    ik->feet[f].stand_y = INFINITY;
+    ik->feet[f].lift = 0.0f;
+    ik->feet[f].shown[0] = ik->feet[f].shown[1] = INFINITY;
     memcpy(ik->feet[f].fix[0], k_identity, sizeof k_identity);
     memcpy(ik->feet[f].fix[1], k_identity, sizeof k_identity);
   }
+}
+
+/* How far to raise a foot that is not planted, whose animated toe is at
+ * height toe_y and moves at `speed` m/s over the ground (see the top of
+ * this file). h is the toe's height above the lowest it has stood. At
+ * h <= 0 the toe is raised to the clearance c; from
+ * there to 2c the lift eases to 0 (toe height h + c (2 - h/c)^2/4: rising
+ * with h, equal to h with zero slope at 2c), so the swing's shape is kept
+ * and nothing bends where the lift starts. Until a foot has stood
+ * somewhere its floor is unknown: no lift. */
+static float swing_lift(const smgi_foot* foot, float toe_y, float speed,
+                        float c, float leg) {
+  if (foot->planted || !(c > 0.0f) || !(foot->stand_y < INFINITY)) return 0.0f;
+  const float h = toe_y - foot->stand_y;
+  if (h >= 2.0f * c) return 0.0f;
+  const float x = 2.0f - h / c;
+  const float lift = h <= 0.0f ? c - h : 0.25f * c * x * x;
+  float s = (speed / leg - SMGI_IK_SWING_SLOW) /
+            (SMGI_IK_SWING_FAST - SMGI_IK_SWING_SLOW);
+  s = smgi_clampf(s, 0.0f, 1.0f);
+  return s * s * (3.0f - 2.0f * s) * lift;
 }
 
 void smgi_ik_apply(smg_character* ch, float dt) {
@@ -379,6 +414,11 @@ void smgi_ik_apply(smg_character* ch, float dt) {
         foot->floor_y = ap[1];
       }
     }
+    /* the floor for swing clearance: the lowest the toe has stood (the
+     * ground is flat; a single stance is not enough: a heel-first contact
+     * or a turn on the heel holds the toe in the air, 3-5 cm up on the
+     * CMU walks, and where the toe was held is not the floor either) */
+    if (foot->planted && ap[1] < foot->stand_y) foot->stand_y = ap[1];
     float travel = 0.0f; /* the animated toe's ground step since the last */
     if (foot->toe[1] < INFINITY) {
       const float sx = ap[0] - foot->toe[0], sz = ap[2] - foot->toe[2];
@@ -425,11 +465,43 @@ void smgi_ik_apply(smg_character* ch, float dt) {
       const float* an = ch->pose.wpos + 3u * ankle;
       float target[3] = {foot->anchor[0] + an[0] - ap[0], an[1],
                          foot->anchor[2] + an[2] - ap[2]};
-      solve_leg(ch, f, target, w);
+      solve_leg(ch, f, target, w, foot->fix);
     } else {
       /* a later contact starts from the animation again */
       memcpy(foot->fix[0], k_identity, sizeof k_identity);
       memcpy(foot->fix[1], k_identity, sizeof k_identity);
     }
+    /* Swing clearance, judged on the toe as shown after the contact
+     * solve: a released foot's correction may still hold it back while
+     * the animated toe already swings ahead at 1 m/s and more. The lift
+     * follows what swing_lift wants at a bounded rate: it grows over
+     * SMGI_IK_SWING_RISE at the fastest and shrinks over
+     * SMGI_IK_SWING_FALL (a toe goes from standing to swing speed, or
+     * back, within about 0.05 s: the lift would jump with it). What is
+     * left of it when a contact starts is let go over the first steps of
+     * the landing, on top of the contact's solve. */
+    float speed = 0.0f;
+    if (foot->shown[0] < INFINITY) {
+      const float sx = ap[0] - foot->shown[0], sz = ap[2] - foot->shown[1];
+      speed = sqrtf(sx * sx + sz * sz) / dt;
+    }
+    const float c = ch->ik.swing_clearance;
+    const float want = swing_lift(foot, ap[1], speed, c, info->leg_length);
+    const float most = foot->lift + c * dt / SMGI_IK_SWING_RISE;
+    const float least = foot->lift - c * dt / SMGI_IK_SWING_FALL;
+    foot->lift = smgi_clampf(want, least > 0.0f ? least : 0.0f, most);
+    if (foot->lift > 0.0f) {
+      /* on top of whatever the contact solve left: the whole foot up by
+       * the lift, from the pose as it is now, not from the contact's
+       * correction */
+      const float* an = ch->pose.wpos + 3u * ankle;
+      const float target[3] = {an[0], an[1] + foot->lift, an[2]};
+      float fix[2][4];
+      memcpy(fix[0], k_identity, sizeof k_identity);
+      memcpy(fix[1], k_identity, sizeof k_identity);
+      solve_leg(ch, f, target, 1.0f, fix);
+    }
+    foot->shown[0] = ap[0];
+    foot->shown[1] = ap[2];
   }
 }

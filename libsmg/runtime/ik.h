@@ -18,6 +18,12 @@ typedef struct smgi_foot {
                           INFINITY: none yet) */
   float floor_y;       /* height the toe was last held at (-INFINITY:
                           none yet) */
+  float stand_y;       /* lowest height the animated toe has stood at:
+                          the floor swing clearance keeps the toe above
+                          (INFINITY: none yet) */
+  float lift;          /* how far swing clearance raises the foot now */
+  float shown[2];      /* x, z of the toe as shown at the previous step
+                          (INFINITY: none yet) */
   uint32_t landing;    /* planted, but the animated toe still descends:
                           the anchor follows it until it stops */
   uint32_t let_go;     /* released during a contact (its anchor drifted
@@ -31,6 +37,8 @@ typedef struct smgi_foot {
 
 typedef struct smgi_ik {
   uint32_t enabled;
+  float swing_clearance; /* metres a fast swinging toe keeps above its
+                            floor (0: none) */
   smgi_foot feet[2];
   /* 2J: per leg f at f*J, the joints whose world transforms IK changes,
    * parents first: hip, knee, ankle, then the hip's other descendants not

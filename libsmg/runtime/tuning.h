@@ -117,6 +117,20 @@
                                    travel over which a released foot lets
                                    its correction go at most (a foot that
                                    shuffles on without lifting) */
+#define SMGI_IK_SWING_CLEAR 0.04f /* leg lengths (about 3.5 cm) a fast
+                                     swinging toe clears the floor by, by
+                                     default: real swings pass 1-2 cm
+                                     above it (the toe joint of the second
+                                     studio's data at 3.5-4 m/s) */
+#define SMGI_IK_SWING_SLOW 1.0f /* leg lengths per second of toe speed over
+                                   the ground below which a foot is not
+                                   swinging (standing, rolling, landing:
+                                   under 0.5 on the walks measured) ... */
+#define SMGI_IK_SWING_FAST 2.0f /* ... and from which it is (a walk's swing
+                                   peaks at 3-5) */
+#define SMGI_IK_SWING_RISE 0.1f /* seconds over which swing clearance
+                                   lifts a foot at the fastest ... */
+#define SMGI_IK_SWING_FALL 0.05f /* ... and lowers it */
 #define SMGI_IK_ITERATIONS 8u   /* CCD sweeps at most */
 #define SMGI_IK_RELEASE 0.35f   /* anchor drift, in leg lengths, that lets
                                    a contact go */

@@ -47,6 +47,7 @@ namespace Smg
         None = 0,
         NoIk = 1,
         NoSteering = 2,
+        NoSwingClearance = 4,
     }
 
     /// <summary>SMG_STATE_* flags of SmgCharacterState.Flags.</summary>

@@ -127,7 +127,8 @@ namespace Smg
         public float SteerTurnRate;
         public float SteerSlideRatio;
         public float StopSeconds;
-        public float Reserved1;
+        /// <summary>Metres a fast swinging toe clears the floor by; 0 = 0.04 leg lengths.</summary>
+        public float SwingClearance;
 
         public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgCharacterDesc));
 
