@@ -20,7 +20,14 @@
  *  - at rest: over the last second of a run long enough to stop, the hips'
  *    mean ground speed and their largest distance from the last point;
  *  - the correction the steering applied (smg_character_state: heading
- *    correction in deg/s, translation in cm/s), mean over the run.
+ *    correction in deg/s, translation in cm/s), mean over the run;
+ *  - planted-toe speed (eval_feet_geom) until the end is reached, of this
+ *    run and over FEET_SEEDS seeds (smg_character_desc.seed: which of
+ *    equally good clips the character picks). One run's figure moves by
+ *    0.2-0.9 cm/s with the seed alone, more than steering changes it, so
+ *    "not above steering off" is judged on the seeds' means: on counts as
+ *    above off when its mean exceeds off's by more than twice the
+ *    standard error of the difference.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -41,6 +48,7 @@
 #define WINDOW_BACK 0.5        /* distance window along the path, metres */
 #define WINDOW_AHEAD 1.5
 #define MAX_POINTS 4096
+#define FEET_SEEDS 8           /* seeds of the planted-toe comparison */
 #define PI 3.14159265358979323846
 
 typedef struct follow_path {
@@ -105,7 +113,7 @@ static size_t read_path(const char* file, double* xz, size_t cap) {
 /* One run from the path's first point; `style`: the initial style. */
 static void follow_run(smg_graph* g, const eval_joints* joint,
                        const double* path, size_t n, int steering,
-                       uint32_t style, follow_result* out) {
+                       uint32_t style, uint32_t seed, follow_result* out) {
   smg_character_desc cd;
   smg_character* ch = NULL;
   smg_graph_info info;
@@ -135,6 +143,7 @@ static void follow_run(smg_graph* g, const eval_joints* joint,
   cd.struct_size = sizeof(cd);
   cd.flags = steering ? 0u : SMG_CHARACTER_NO_STEERING;
   cd.initial_style = style;
+  cd.seed = seed;
   cd.path_capacity = (uint32_t)n + 16u;
   cd.position[0] = xz[0];
   cd.position[2] = xz[1];
@@ -289,6 +298,28 @@ done:
 
 static const char* yes_no(int v) { return v ? "yes" : "**no**"; }
 
+/* Planted-toe speed over FEET_SEEDS seeds: seed 0 is the run already made
+ * (`first`), the others are run here. Mean and sample standard deviation;
+ * NaN when a run fails. */
+static void feet_over_seeds(smg_graph* g, const eval_joints* joint,
+                            const double* path, size_t n, int steering,
+                            uint32_t style, double first, double* mean,
+                            double* sd) {
+  double v[FEET_SEEDS], sum = 0.0, sq = 0.0;
+  uint32_t i;
+  v[0] = first;
+  for (i = 1; i < FEET_SEEDS; ++i) {
+    follow_result r;
+    follow_run(g, joint, path, n, steering, style, i, &r);
+    v[i] = r.ok ? r.feet_cm_s : NAN;
+    free(r.hips);
+  }
+  for (i = 0; i < FEET_SEEDS; ++i) sum += v[i];
+  *mean = sum / FEET_SEEDS;
+  for (i = 0; i < FEET_SEEDS; ++i) sq += (v[i] - *mean) * (v[i] - *mean);
+  *sd = sqrt(sq / (FEET_SEEDS - 1));
+}
+
 /* One graph and initial style: every path, steering off and on, table
  * rows and figures. met[0]: runs meeting the path, end and rest targets;
  * met[1]: the planted-toe target; met[2]: runs (steering on). */
@@ -310,28 +341,30 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
           "**%s**\n\n"
           "| path | steering | mean cm | max cm | end reached (s) | "
           "last 1 s: speed m/s | last 1 s: max distance to end m | "
-          "correction deg/s | correction cm/s | planted toes cm/s |\n"
-          "|---|---|---|---|---|---|---|---|---|---|\n",
-          gs->name);
+          "correction deg/s | correction cm/s | planted toes cm/s | "
+          "planted toes, %d seeds: mean +- sd |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|\n",
+          gs->name, FEET_SEEDS);
   for (k = 0; k < PATH_COUNT; ++k) {
     const follow_path* p = &k_paths[k];
     char file[256];
     follow_result r[2];
+    double feet_mean[2] = {NAN, NAN}, feet_sd[2] = {NAN, NAN};
     size_t n;
     int s;
     snprintf(file, sizeof(file), "data/paths/%s.txt", p->key);
     n = read_path(file, path, MAX_POINTS);
     if (n < 2) {
-      eval_md(ctx, "| %s | | cannot read `%s` | | | | | | | |\n", p->title,
+      eval_md(ctx, "| %s | | cannot read `%s` | | | | | | | | |\n", p->title,
               file);
       met[2]++;
       continue;
     }
     for (s = 0; s < 2; ++s) {
       follow_result* x = &r[s];
-      follow_run(g, &joint, path, n, s, style, x);
+      follow_run(g, &joint, path, n, s, style, 0u, x);
       if (!x->ok) {
-        eval_md(ctx, "| %s | %s | run failed | | | | | | | |\n", p->title,
+        eval_md(ctx, "| %s | %s | run failed | | | | | | | | |\n", p->title,
                 s ? "on" : "off");
         if (s) met[2]++;
         continue;
@@ -341,11 +374,14 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
                gs->key, p->key, s ? "on" : "off", x->mean_cm, x->max_cm,
                x->reached ? "yes" : "no", x->rest_speed, x->rest_dist,
                x->turn_deg_s, x->slide_cm_s, x->feet_cm_s);
+      feet_over_seeds(g, &joint, path, n, s, style, x->feet_cm_s,
+                      &feet_mean[s], &feet_sd[s]);
       if (x->reached)
         snprintf(b[0], sizeof(b[0]), "yes (%.1f)", x->reach_s);
       else
         snprintf(b[0], sizeof(b[0]), "%s", yes_no(0));
-      eval_md(ctx, "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+      eval_md(ctx, "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | "
+                   "%.1f +- %.1f |\n",
               p->title, s ? "on" : "off",
               eval_fmt(b[1], sizeof(b[1]), "%.1f", x->mean_cm),
               eval_fmt(b[2], sizeof(b[2]), "%.1f", x->max_cm), b[0],
@@ -353,14 +389,19 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
               eval_fmt(b[4], sizeof(b[4]), "%.2f", x->rest_dist),
               eval_fmt(b[5], sizeof(b[5]), "%.1f", x->turn_deg_s),
               eval_fmt(b[6], sizeof(b[6]), "%.1f", x->slide_cm_s),
-              eval_fmt(b[7], sizeof(b[7]), "%.1f", x->feet_cm_s));
+              eval_fmt(b[7], sizeof(b[7]), "%.1f", x->feet_cm_s),
+              feet_mean[s], feet_sd[s]);
       if (x->style_share < style_min) style_min = x->style_share;
       if (s) {
         double mean_max = p->tight ? 10.0 : 5.0, max_max = p->tight ? 45.0 : 25.0;
         met[0] += x->mean_cm <= mean_max && x->max_cm <= max_max &&
                   x->reached && x->rest_speed <= 0.1 && x->rest_dist <= 0.3;
-        met[1] += x->feet_cm_s <= 20.0 &&
-                  (!r[0].ok || x->feet_cm_s <= r[0].feet_cm_s);
+        /* not above steering off: beyond twice the standard error of
+         * the difference of the seeds' means */
+        const double se = sqrt((feet_sd[0] * feet_sd[0] +
+                                feet_sd[1] * feet_sd[1]) / FEET_SEEDS);
+        met[1] += x->feet_cm_s <= 20.0 && feet_mean[1] <= 20.0 &&
+                  (!r[0].ok || feet_mean[1] - feet_mean[0] <= 2.0 * se);
         met[2]++;
       }
     }
@@ -435,7 +476,7 @@ static void check_graph(eval_ctx* ctx, smg_graph* g, const char* name) {
       eval_check(ctx, 0, "cannot read %s", file);
       continue;
     }
-    follow_run(g, &joint, path, n, 1, 0, &r);
+    follow_run(g, &joint, path, n, 1, 0, 0u, &r);
     eval_check(ctx, r.ok && r.mean_cm <= 10.0 && r.max_cm <= 45.0 &&
                         r.reached && r.rest_speed <= 0.1 && r.rest_dist <= 0.3,
                "%s, %s, steering on: hips %.1f / %.1f cm from the path "
@@ -536,10 +577,11 @@ static void follow_graphs(eval_ctx* ctx, const void* cmu_blob,
                "**Staying on drawn paths** (section 2c, %d of %d graphs and "
                "styles, %d paths, steering on): the distance, end-reached "
                "and at-rest targets are met on %d of %d runs, the "
-               "planted-toe target (<= 20 cm/s and not above steering off) "
-               "on %d of %d (per graph, path targets / planted toes: %s).",
+               "planted-toe target (<= 20 cm/s and, over %d seeds, not "
+               "above steering off) on %d of %d (per graph, path targets / "
+               "planted toes: %s).",
                measured, (int)GRAPH_COUNT, (int)PATH_COUNT, met[0], met[2],
-               met[1], met[2], per_graph);
+               FEET_SEEDS, met[1], met[2], per_graph);
 }
 
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
@@ -588,8 +630,14 @@ void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
           "scribble) mean <= 10 cm and max <= 45 cm; every end reached; at "
           "rest within 0.3 m at <= 0.1 m/s; planted-toe speed (toes within "
           "2.5 cm of their own floor level in two consecutive frames, "
-          "`tools/eval/eval_feet_geom.c`) <= 20 cm/s and not above the "
-          "same run with steering off.\n\n",
-          FOLLOW_RATE, FOLLOW_SPEED, FOLLOW_EXTRA, END_RADIUS);
+          "`tools/eval/eval_feet_geom.c`, until the end is reached) <= 20 "
+          "cm/s and not above the same run with steering off. That last "
+          "comparison is made over %d seeds (`smg_character_desc.seed`: "
+          "which of equally good clips the character picks): one run's "
+          "figure moves by 0.2-0.9 cm/s with the seed alone, more than "
+          "steering changes it, so steering on counts as above off when "
+          "its seeds' mean exceeds off's by more than twice the standard "
+          "error of the difference.\n\n",
+          FOLLOW_RATE, FOLLOW_SPEED, FOLLOW_EXTRA, END_RADIUS, FEET_SEEDS);
   follow_graphs(ctx, cmu_blob, cmu_size);
 }
