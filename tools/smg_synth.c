@@ -8,7 +8,8 @@
  *   smg-synth -g BLOB -p PATH.txt [--transition S:style]... [--splice
  *             S:action]... [--seconds N] [--fps F] [--seed N] [--no-ik]
  *             [--no-steering] [--steer-turn-rate R] [--steer-slide-ratio F]
- *             [--stop-seconds S] [--csv FILE] -o OUT.bvh
+ *             [--stop-seconds S] [--no-swing-clearance] [--swing-clearance M]
+ *             [--csv FILE] -o OUT.bvh
  *
  * PATH.txt holds one "x z" pair (metres) per line; '#' starts a comment.
  * style/action are names from the blob (smg-bake --info lists them) or
@@ -38,11 +39,13 @@ static void usage(FILE* f) {
           "[--csv FILE] -o OUT.bvh\n"
           "                 [--no-steering] [--steer-turn-rate RAD_PER_S] "
           "[--steer-slide-ratio F] [--stop-seconds S]\n"
+          "                 [--no-swing-clearance] [--swing-clearance M]\n"
           "  PATH.txt: one \"x z\" point per line (metres, '#' comments)\n"
           "  S: arc length along the path (metres); style/action: name or "
           "index\n"
           "  defaults: --seconds 10 --fps 30; steering on with the "
-          "library's limits (0 = default)\n");
+          "library's limits (0 = default); swing clearance on, 0 = "
+          "0.04 leg lengths\n");
 }
 
 static int fail(const char* what, smg_result r) {
@@ -192,8 +195,9 @@ int main(int argc, char** argv) {
   const char *blob = NULL, *path_file = NULL, *out_file = NULL,
              *csv_file = NULL;
   float seconds = 10.0f, fps = 30.0f;
-  uint32_t seed = 0, no_ik = 0, no_steering = 0;
+  uint32_t seed = 0, no_ik = 0, no_steering = 0, no_swing = 0;
   float steer_turn = 0.0f, steer_slide = 0.0f, stop_seconds = 0.0f;
+  float swing_clearance = 0.0f;
   constraint_arg cons[MAX_CONSTRAINTS];
   int ncons = 0;
   for (int i = 1; i < argc; ++i) {
@@ -207,6 +211,9 @@ int main(int argc, char** argv) {
       continue;
     } else if (!strcmp(a, "--no-steering")) {
       no_steering = 1;
+      continue;
+    } else if (!strcmp(a, "--no-swing-clearance")) {
+      no_swing = 1;
       continue;
     }
     if (!v) {
@@ -235,6 +242,8 @@ int main(int argc, char** argv) {
       steer_slide = strtof(v, NULL);
     } else if (!strcmp(a, "--stop-seconds")) {
       stop_seconds = strtof(v, NULL);
+    } else if (!strcmp(a, "--swing-clearance")) {
+      swing_clearance = strtof(v, NULL);
     } else if (!strcmp(a, "--transition") || !strcmp(a, "--splice")) {
       if (ncons == MAX_CONSTRAINTS ||
           !parse_constraint(v, a[2] == 's', &cons[ncons])) {
@@ -273,11 +282,13 @@ int main(int argc, char** argv) {
   d.constraint_capacity = ncons > 0 ? (uint32_t)ncons : 1u;
   d.seed = seed;
   d.flags = (no_ik ? SMG_CHARACTER_NO_IK : 0u) |
-            (no_steering ? SMG_CHARACTER_NO_STEERING : 0u);
+            (no_steering ? SMG_CHARACTER_NO_STEERING : 0u) |
+            (no_swing ? SMG_CHARACTER_NO_SWING_CLEARANCE : 0u);
   /* the library checks them (negative or non-finite: invalid argument) */
   d.steer_turn_rate = steer_turn;
   d.steer_slide_ratio = steer_slide;
   d.stop_seconds = stop_seconds;
+  d.swing_clearance = swing_clearance;
   if (n > 0) {
     d.position[0] = xz[0];
     d.position[2] = xz[1];
