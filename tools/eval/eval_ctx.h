@@ -99,6 +99,8 @@ void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
 /* Feet from geometry: planted-toe speed with IK on and off on every path
  * of the CMU graph and of a two-performer graph, and the source clips'. */
 void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size);
+/* Section 2b's swing-clearance figure (eval_swing.c): on the CMU blob. */
+void eval_figure_swing(eval_ctx* ctx, const void* blob, size_t size);
 /* Staying on drawn paths (issue 12): data/paths on the CMU blob (may be
  * NULL), the sparse set and the Bandai Namco set (in its `walk` and
  * `exhausted` styles; skipped when its clips are absent), root steering on

@@ -718,5 +718,8 @@ void eval_section_feet(eval_ctx* ctx, const void* blob, size_t size) {
   eval_md(ctx, "\n");
   if (have_mixed) smg_bake_result_free(&mixed);
   if (have_dribble) smg_bake_result_free(&dribble);
-  if (blob && !ctx->check) draw_straight(ctx, blob, size);
+  if (blob && !ctx->check) {
+    draw_straight(ctx, blob, size);
+    eval_figure_swing(ctx, blob, size);
+  }
 }
