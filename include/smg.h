@@ -366,6 +366,14 @@ SMG_API smg_result smg_character_set_steering_limits(smg_character* character,
                                                      float turn_rate,
                                                      float slide_ratio,
                                                      float stop_seconds);
+/* Swing clearance on (1) or off (0), and the clearance in metres (0 = the
+ * default, 0.04 leg lengths): as SMG_CHARACTER_NO_SWING_CLEARANCE and
+ * smg_character_desc.swing_clearance at create. A negative or non-finite
+ * clearance returns SMG_ERROR_INVALID_ARGUMENT and changes nothing. A lift
+ * in progress moves to the new clearance at its bounded rate. */
+SMG_API smg_result smg_character_set_swing_clearance(smg_character* character,
+                                                     uint32_t enabled,
+                                                     float clearance);
 
 /* --- Per frame --- */
 

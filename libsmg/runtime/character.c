@@ -57,6 +57,15 @@ static int limits_ok(float turn, float slide, float stop) {
          turn >= 0.0f && slide >= 0.0f && stop >= 0.0f;
 }
 
+/* The clearance swing clearance keeps, in metres (0: off); `clearance`
+ * already checked finite and >= 0, 0 = the default. */
+static float swing_clearance_of(const smg_graph* g, uint32_t enabled,
+                                float clearance) {
+  if (!enabled) return 0.0f;
+  return clearance > 0.0f ? clearance
+                          : SMGI_IK_SWING_CLEAR * g->data.info->leg_length;
+}
+
 /* Resolve desc (NULL, partial struct_size) into a full one with defaults. */
 static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
                                smg_character_desc* d) {
@@ -147,11 +156,9 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->joint_count = J;
   ch->flags = d.flags;
   ch->ik.enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
-  ch->ik.swing_clearance =
-      (d.flags & SMG_CHARACTER_NO_SWING_CLEARANCE) ? 0.0f
-      : d.swing_clearance > 0.0f
-          ? d.swing_clearance
-          : SMGI_IK_SWING_CLEAR * graph->data.info->leg_length;
+  ch->ik.swing_clearance = swing_clearance_of(
+      graph, (d.flags & SMG_CHARACTER_NO_SWING_CLEARANCE) ? 0u : 1u,
+      d.swing_clearance);
   smgi_steer_init(&ch->steer,
                   (d.flags & SMG_CHARACTER_NO_STEERING) ? 0u : 1u,
                   d.steer_turn_rate, d.steer_slide_ratio, d.stop_seconds);
@@ -328,6 +335,15 @@ SMG_API smg_result smg_character_set_steering(smg_character* ch,
   /* a character resting at the end walks on with the graph alone; the
    * correction itself fades out at its bounded rate (steer.c) */
   if (!ch->steer.enabled) smgi_steer_path_changed(&ch->steer);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_swing_clearance(smg_character* ch,
+                                                     uint32_t enabled,
+                                                     float clearance) {
+  if (!ch || !isfinite(clearance) || clearance < 0.0f)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  ch->ik.swing_clearance = swing_clearance_of(ch->graph, enabled, clearance);
   return SMG_OK;
 }
 

@@ -487,8 +487,12 @@ void smgi_ik_apply(smg_character* ch, float dt) {
     }
     const float c = ch->ik.swing_clearance;
     const float want = swing_lift(foot, ap[1], speed, c, info->leg_length);
-    const float most = foot->lift + c * dt / SMGI_IK_SWING_RISE;
-    const float least = foot->lift - c * dt / SMGI_IK_SWING_FALL;
+    /* rates on the scale of the clearance, at least the default's: a
+     * lift left when the clearance is turned off (c = 0) still returns */
+    float scale = SMGI_IK_SWING_CLEAR * info->leg_length;
+    if (c > scale) scale = c;
+    const float most = foot->lift + scale * dt / SMGI_IK_SWING_RISE;
+    const float least = foot->lift - scale * dt / SMGI_IK_SWING_FALL;
     foot->lift = smgi_clampf(want, least > 0.0f ? least : 0.0f, most);
     if (foot->lift > 0.0f) {
       /* on top of whatever the contact solve left: the whole foot up by

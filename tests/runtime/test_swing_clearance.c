@@ -215,11 +215,91 @@ static void test_bad_clearance(void** state) {
   smg_graph_destroy(g);
 }
 
+/* The setter: bad values are refused and change nothing; turning the
+ * clearance off mid-walk lets the lift go at its bounded rate, after
+ * which the feet are those of a character created without it; turning
+ * it on lifts a character created without it. */
+static void test_setter(void** state) {
+  (void)state;
+  smg_graph* g = rt_default_graph();
+  assert_non_null(g);
+  uint32_t toe[2];
+  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
+  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  /* 0: on, switched off at step 300; 1: created without; 2: on, given
+   * bad values; 3: created on, the default */
+  smg_character* ch[4];
+  float xz[2 * 64];
+  const uint32_t n = rt_turn_r(xz, 6.0f, 8.0f, 1, 2.0f);
+  for (int c = 0; c < 4; ++c) {
+    smg_character_desc d;
+    memset(&d, 0, sizeof d);
+    d.struct_size = sizeof d;
+    d.flags = c == 1 ? SMG_CHARACTER_NO_SWING_CLEARANCE : 0u;
+    assert_int_equal(smg_character_create(g, &d, &ch[c]), SMG_OK);
+    assert_int_equal(smg_character_set_path(ch[c], xz, n), SMG_OK);
+  }
+  assert_int_equal(smg_character_set_swing_clearance(NULL, 1, 0.0f),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  assert_int_equal(smg_character_set_swing_clearance(ch[2], 1, -0.1f),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  assert_int_equal(smg_character_set_swing_clearance(ch[2], 0, NAN),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  assert_int_equal(smg_character_set_swing_clearance(ch[2], 0, INFINITY),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  float m[4][16 * MAXJ];
+  float worst_fall = 0.0f, prev_lift = 0.0f, lift_at_off = 0.0f;
+  int off_at = -1, same_after = 0, after = 0, same_as_on = 0;
+  for (int i = 0; i < STEPS; ++i) {
+    if (i == 600) /* on again, for the one created without it */
+      assert_int_equal(smg_character_set_swing_clearance(ch[1], 1, 0.0f), SMG_OK);
+    for (int c = 0; c < 4; ++c) {
+      assert_int_equal(smg_character_step(ch[c], DT), SMG_OK);
+      assert_int_equal(
+          smg_character_get_model_matrices(ch[c], SMG_SPACE_WORLD, m[c], 31),
+          SMG_OK);
+    }
+    /* bad values changed nothing: 2 moves as 3 */
+    assert_memory_equal(m[2], m[3], sizeof(float) * 16 * 31);
+    const float lift = m[0][16 * toe[0] + 13] - m[1][16 * toe[0] + 13];
+    if (off_at < 0 && i >= 300 && lift > 0.01f) {
+      /* off while the left foot is lifted by more than 1 cm */
+      assert_int_equal(smg_character_set_swing_clearance(ch[0], 0, 0.0f), SMG_OK);
+      off_at = i;
+      lift_at_off = lift;
+    } else if (off_at >= 0 && i < 600) {
+      if (prev_lift - lift > worst_fall) worst_fall = prev_lift - lift;
+      if (i >= off_at + 6) { /* 0.05 s of fall is over by then */
+        ++after;
+        same_after += memcmp(m[0], m[1], sizeof(float) * 16 * 31) == 0;
+      }
+    }
+    prev_lift = lift;
+    if (i >= 660) same_as_on += memcmp(m[1], m[3], sizeof(float) * 16 * 31) == 0;
+  }
+  print_message("switched off with the foot %.1f cm up: the lift fell by at "
+                "most %.2f cm a step; afterwards %d of %d steps the same "
+                "bits as without; switched on: the same bits as with it on "
+                "%d of %d steps\n",
+                100.0 * lift_at_off, 100.0 * worst_fall, same_after, after,
+                same_as_on, STEPS - 660);
+  assert_true(off_at >= 0);
+  assert_true(after > 100);
+  assert_int_equal(same_after, after);
+  /* at the default's rate: 3.4 cm over 0.05 s is 1.15 cm per 1/60 s */
+  assert_true(worst_fall < 0.015f);
+  assert_true(worst_fall > 0.0f);
+  assert_int_equal(same_as_on, STEPS - 660);
+  for (int c = 0; c < 4; ++c) smg_character_destroy(ch[c]);
+  smg_graph_destroy(g);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_fast_swing_clears_the_floor),
       cmocka_unit_test(test_lift_is_smooth_and_planted_feet_untouched),
       cmocka_unit_test(test_bad_clearance),
+      cmocka_unit_test(test_setter),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -58,6 +58,8 @@ typedef struct smg_gd_character {
 	bool ik, active, in_editor;
 	bool steering;          /* root steering (smg.h): on by default */
 	double steer_limits[3]; /* turn rate rad/s, slide ratio, stop s; 0 = default */
+	double swing_clearance; /* foot IK's swing clearance, metres; 0 = default,
+	                         * negative = off (as the inspector shows it) */
 
 	float *path_xz;         /* mirror of the path, replayed after reload */
 	uint32_t path_count, path_cap;
@@ -142,6 +144,10 @@ static bool ensure_character(smg_gd_character *self) {
 	d.steer_turn_rate = (float)self->steer_limits[0];
 	d.steer_slide_ratio = (float)self->steer_limits[1];
 	d.stop_seconds = (float)self->steer_limits[2];
+	if (self->swing_clearance < 0.0)
+		d.flags |= SMG_CHARACTER_NO_SWING_CLEARANCE;
+	else
+		d.swing_clearance = (float)self->swing_clearance;
 	d.initial_style = self->style >= 0 && self->style < info.style_count ? (uint32_t)self->style : 0;
 	d.initial_action = self->action >= 0 && self->action < info.action_count ? (uint32_t)self->action : 0;
 	d.path_capacity = PATH_CAPACITY;
@@ -694,6 +700,34 @@ static void m_get_stop_seconds(void *vself, const gd_value *a, gd_value *r) {
 	r->f = self->steer_limits[2];
 }
 
+/* Swing clearance in metres: 0 = the library's default (0.04 leg
+ * lengths), negative = off (SMG_CHARACTER_NO_SWING_CLEARANCE): one
+ * inspector field for both. */
+static void m_set_swing_clearance(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	double v = a[0].f;
+	if (!isfinite(v)) {
+		GD_ERR("SmgCharacter.swing_clearance: must be finite (0 = default, < 0 = off)");
+		return;
+	}
+	if (self->ch) {
+		smg_result res = smg_character_set_swing_clearance(self->ch, v >= 0.0 ? 1u : 0u,
+			v > 0.0 ? (float)v : 0.0f);
+		if (res != SMG_OK) {
+			GD_ERR("SmgCharacter.swing_clearance: rejected: %s", smg_result_string(res));
+			return;
+		}
+	}
+	self->swing_clearance = v;
+}
+
+static void m_get_swing_clearance(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->f = self->swing_clearance;
+}
+
 static void m_set_active(void *vself, const gd_value *a, gd_value *r) {
 	SELF;
 	(void)r;
@@ -1015,6 +1049,8 @@ static const gd_method methods[] = {
 	{ "get_steer_slide_ratio", m_get_steer_slide_ratio, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
 	{ "set_stop_seconds", m_set_stop_seconds, GT_NIL, NULL, 1, { { "seconds", GT_FLOAT, NULL } }, 0 },
 	{ "get_stop_seconds", m_get_stop_seconds, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_swing_clearance", m_set_swing_clearance, GT_NIL, NULL, 1, { { "metres", GT_FLOAT, NULL } }, 0 },
+	{ "get_swing_clearance", m_get_swing_clearance, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
 	{ "set_active", m_set_active, GT_NIL, NULL, 1, { { "active", GT_BOOL, NULL } }, 0 },
 	{ "is_active", m_is_active, GT_BOOL, NULL, 0, { { 0 } }, 1 },
 	{ "set_path", m_set_path, GT_INT, NULL, 1, { { "points", GT_PV3, NULL } }, 0 },
@@ -1100,6 +1136,9 @@ void smg_gd_character_register(void) {
 	gd_arg p_stop = { "stop_seconds", GT_FLOAT, NULL };
 	gd_register_property(CLASS, &p_stop, GD_PROPERTY_HINT_RANGE, "0,5,0.05,suffix:s", "set_stop_seconds",
 		"get_stop_seconds");
+	gd_arg p_swing = { "swing_clearance", GT_FLOAT, NULL };
+	gd_register_property(CLASS, &p_swing, GD_PROPERTY_HINT_RANGE, "-0.01,0.2,0.005,suffix:m", "set_swing_clearance",
+		"get_swing_clearance");
 	gd_arg p_active = { "active", GT_BOOL, NULL };
 	gd_register_property(CLASS, &p_active, GD_PROPERTY_HINT_NONE, NULL, "set_active", "is_active");
 

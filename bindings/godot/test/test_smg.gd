@@ -78,7 +78,8 @@ func run() -> void:
 	var props := ClassDB.class_get_property_list("SmgCharacter", true).map(func(p): return p.name)
 	check(props.has("graph") and props.has("skeleton") and props.has("style") and props.has("action")
 		and props.has("error_threshold") and props.has("ik_enabled") and props.has("steering_enabled")
-		and props.has("steer_turn_rate") and props.has("steer_slide_ratio") and props.has("stop_seconds"),
+		and props.has("steer_turn_rate") and props.has("steer_slide_ratio") and props.has("stop_seconds")
+		and props.has("swing_clearance"),
 		"inspector properties")
 	check(ClassDB.class_has_signal("SmgCharacter", "style_changed") and ClassDB.class_has_signal("SmgCharacter", "action_changed")
 		and ClassDB.class_has_signal("SmgCharacter", "path_end_reached"), "signals declared")

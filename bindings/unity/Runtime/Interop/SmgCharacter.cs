@@ -185,6 +185,12 @@ namespace Smg
             SmgException.Check(SmgNative.smg_character_set_steering_limits(this, turnRate, slideRatio, stopSeconds), "smg_character_set_steering_limits");
         }
 
+        /// <summary>Swing clearance on or off, and the clearance in metres (0 = 0.04 leg lengths).</summary>
+        public void SetSwingClearance(bool enabled, float clearance)
+        {
+            SmgException.Check(SmgNative.smg_character_set_swing_clearance(this, enabled ? 1u : 0u, clearance), "smg_character_set_swing_clearance");
+        }
+
         // --- Per frame: no allocation ---
 
         /// <summary>Advances by dt seconds (0 &lt;= dt &lt;= 1).</summary>

@@ -136,6 +136,9 @@ namespace Smg
         public static extern SmgResult smg_character_set_steering_limits(SmgCharacter character, float turnRate, float slideRatio, float stopSeconds);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_set_swing_clearance(SmgCharacter character, uint enabled, float clearance);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_step(SmgCharacter character, float dt);
 
         [DllImport(Library, CallingConvention = Cdecl)]
