@@ -232,7 +232,7 @@ SMG_API smg_result smg_graph_find_action(const smg_graph* graph,
 
 typedef struct smg_character smg_character;
 
-/* Character flags. */
+/* Character flags (other bits: SMG_ERROR_INVALID_ARGUMENT). */
 #define SMG_CHARACTER_NO_IK 1u /* start with foot-contact IK off */
 #define SMG_CHARACTER_NO_STEERING 2u /* start with root steering off: the
                                         motion graph alone (see below) */
@@ -281,9 +281,14 @@ typedef struct smg_character_desc {
    * a shoe mesh thicker than the performer's foot would cut into the
    * floor. Feet that stand, land or push off are not touched
    * (docs/runtime.md, "Foot IK"). */
-  float swing_clearance;     /* metres; 0 = 0.04 leg lengths (about 3.5 cm
-                                on an adult) */
+  float swing_clearance;     /* metres, at most SMG_MAX_SWING_CLEARANCE;
+                                0 = 0.04 leg lengths (about 3.5 cm on an
+                                adult) */
 } smg_character_desc;
+
+/* The largest swing clearance accepted, metres (more only stretches the
+ * leg; larger or negative values give SMG_ERROR_INVALID_ARGUMENT). */
+#define SMG_MAX_SWING_CLEARANCE 0.5f
 
 /* Create a character on `graph`. desc may be NULL (all defaults). Allocates
  * every byte the character will ever need. */
@@ -368,8 +373,9 @@ SMG_API smg_result smg_character_set_steering_limits(smg_character* character,
                                                      float stop_seconds);
 /* Swing clearance on (1) or off (0), and the clearance in metres (0 = the
  * default, 0.04 leg lengths): as SMG_CHARACTER_NO_SWING_CLEARANCE and
- * smg_character_desc.swing_clearance at create. A negative or non-finite
- * clearance returns SMG_ERROR_INVALID_ARGUMENT and changes nothing. A lift
+ * smg_character_desc.swing_clearance at create. A negative, non-finite or
+ * too large (SMG_MAX_SWING_CLEARANCE) clearance returns
+ * SMG_ERROR_INVALID_ARGUMENT and changes nothing. A lift
  * in progress moves to the new clearance at its bounded rate. */
 SMG_API smg_result smg_character_set_swing_clearance(smg_character* character,
                                                      uint32_t enabled,

@@ -57,8 +57,15 @@ static int limits_ok(float turn, float slide, float stop) {
          turn >= 0.0f && slide >= 0.0f && stop >= 0.0f;
 }
 
+/* Swing clearance: 0 (the default) to SMG_MAX_SWING_CLEARANCE metres (a
+ * foot lifted further would only stretch the leg; far beyond, the leg
+ * solve's squared distances overflow). */
+static int clearance_ok(float c) {
+  return isfinite(c) && c >= 0.0f && c <= SMG_MAX_SWING_CLEARANCE;
+}
+
 /* The clearance swing clearance keeps, in metres (0: off); `clearance`
- * already checked finite and >= 0, 0 = the default. */
+ * already checked by clearance_ok, 0 = the default. */
 static float swing_clearance_of(const smg_graph* g, uint32_t enabled,
                                 float clearance) {
   if (!enabled) return 0.0f;
@@ -76,6 +83,11 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
     memcpy(d, in, in->struct_size);
   }
   d->struct_size = sizeof *d;
+  /* a flag this library does not know (from a newer header) is refused,
+   * not silently ignored */
+  if (d->flags & ~(uint32_t)(SMG_CHARACTER_NO_IK | SMG_CHARACTER_NO_STEERING |
+                             SMG_CHARACTER_NO_SWING_CLEARANCE))
+    return SMG_ERROR_INVALID_ARGUMENT;
   if (d->initial_style >= g->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
   if (d->initial_action >= g->data.action_count)
     return SMG_ERROR_UNKNOWN_ACTION;
@@ -86,7 +98,7 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
       d->horizon < 0.0f || d->horizon > SMGI_MAX_HORIZON ||
       d->error_threshold < 0.0f ||
       !limits_ok(d->steer_turn_rate, d->steer_slide_ratio, d->stop_seconds) ||
-      !isfinite(d->swing_clearance) || d->swing_clearance < 0.0f)
+      !clearance_ok(d->swing_clearance))
     return SMG_ERROR_INVALID_ARGUMENT;
   if (d->path_capacity == 0) d->path_capacity = SMGI_DEFAULT_PATH_CAPACITY;
   if (d->constraint_capacity == 0)
@@ -341,8 +353,7 @@ SMG_API smg_result smg_character_set_steering(smg_character* ch,
 SMG_API smg_result smg_character_set_swing_clearance(smg_character* ch,
                                                      uint32_t enabled,
                                                      float clearance) {
-  if (!ch || !isfinite(clearance) || clearance < 0.0f)
-    return SMG_ERROR_INVALID_ARGUMENT;
+  if (!ch || !clearance_ok(clearance)) return SMG_ERROR_INVALID_ARGUMENT;
   ch->ik.swing_clearance = swing_clearance_of(ch->graph, enabled, clearance);
   return SMG_OK;
 }

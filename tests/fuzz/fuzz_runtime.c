@@ -4,7 +4,8 @@
  * through smg_graph_load_memory): characters created with odd descriptors,
  * paths with extreme, duplicate and far-away points (and NaN/inf, which
  * must be refused), appends, constraints added/moved/removed anywhere,
- * style and action switches, IK toggles, thresholds, and steps with dt
+ * style and action switches, IK, steering and swing-clearance settings
+ * (bad values included), thresholds, and steps with dt
  * from 0 to past the limit. After every step every output must be finite
  * and bounded: the root never moves faster than the data allows, the
  * skeleton stays around the root, rotations stay unit, state fields stay
@@ -169,7 +170,7 @@ static smg_character* create(reader* r, float* prev) {
   smg_character* ch = NULL;
   memset(&d, 0, sizeof d);
   d.struct_size = sizeof d;
-  d.flags = take(r) & 3u; /* bit 1 is unknown: must be refused */
+  d.flags = take(r) & 15u; /* 8 is no flag: must be refused */
   d.initial_style = take(r) % (g_styles + 1);
   d.initial_action = take(r) % (g_actions + 1);
   d.path_capacity = take(r) % (FUZZ_PATH_MAX + 1);
@@ -254,8 +255,19 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 10:
         smg_character_set_ik(ch, take(&r) % 3u);
         break;
-      case 11:
-        smg_character_set_error_threshold(ch, take_coord(&r, 0.25f));
+      case 11: /* the per-character settings, bad values included */
+        k = take(&r) % 4u;
+        if (k == 0)
+          smg_character_set_error_threshold(ch, take_coord(&r, 0.25f));
+        else if (k == 1)
+          smg_character_set_swing_clearance(ch, take(&r) % 3u,
+                                            take_coord(&r, 0.0f));
+        else if (k == 2)
+          smg_character_set_steering(ch, take(&r) % 3u);
+        else
+          smg_character_set_steering_limits(ch, take_coord(&r, 0.0f),
+                                            take_coord(&r, 0.0f),
+                                            take_coord(&r, 0.0f));
         break;
       case 12: /* start over with another character */
         smg_character_destroy(ch);

@@ -58,6 +58,15 @@ static void test_create_args(void** state) {
   assert_int_equal(smg_character_create(c->g, &d, &ch),
                    SMG_ERROR_INVALID_ARGUMENT);
   d.error_threshold = 0;
+  d.flags = 8u; /* no such flag */
+  assert_int_equal(smg_character_create(c->g, &d, &ch),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  d.flags = SMG_CHARACTER_NO_IK | SMG_CHARACTER_NO_STEERING |
+            SMG_CHARACTER_NO_SWING_CLEARANCE;
+  assert_int_equal(smg_character_create(c->g, &d, &ch), SMG_OK);
+  assert_int_equal(smg_character_destroy(ch), SMG_OK);
+  ch = NULL;
+  d.flags = 0;
   d.allocator.alloc = rt_count_alloc; /* free missing */
   assert_int_equal(smg_character_create(c->g, &d, &ch),
                    SMG_ERROR_INVALID_ARGUMENT);

@@ -194,13 +194,14 @@ static void test_lift_is_smooth_and_planted_feet_untouched(void** state) {
   smg_graph_destroy(g);
 }
 
-/* Negative or non-finite clearances are refused, nothing created. */
+/* Negative, non-finite or too large clearances are refused, nothing
+ * created. */
 static void test_bad_clearance(void** state) {
   (void)state;
   smg_graph* g = rt_default_graph();
   assert_non_null(g);
-  const float bad[3] = {-0.01f, NAN, INFINITY};
-  for (int i = 0; i < 3; ++i) {
+  const float bad[4] = {-0.01f, NAN, INFINITY, SMG_MAX_SWING_CLEARANCE * 1.01f};
+  for (int i = 0; i < 4; ++i) {
     smg_character_desc d;
     memset(&d, 0, sizeof d);
     d.struct_size = sizeof d;
@@ -246,6 +247,8 @@ static void test_setter(void** state) {
   assert_int_equal(smg_character_set_swing_clearance(ch[2], 0, NAN),
                    SMG_ERROR_INVALID_ARGUMENT);
   assert_int_equal(smg_character_set_swing_clearance(ch[2], 0, INFINITY),
+                   SMG_ERROR_INVALID_ARGUMENT);
+  assert_int_equal(smg_character_set_swing_clearance(ch[2], 1, 1e30f),
                    SMG_ERROR_INVALID_ARGUMENT);
   float m[4][16 * MAXJ];
   float worst_fall = 0.0f, prev_lift = 0.0f, lift_at_off = 0.0f;
