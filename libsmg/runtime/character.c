@@ -50,11 +50,15 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   l->total = o;
 }
 
-/* Steering limits: finite and >= 0 (0 = default, resolved in steer.c so
- * the setter shares the rule). */
+/* One steering limit: 0 (the default, resolved in steer.c so the setter
+ * shares the rule) to SMG_MAX_STEER_LIMIT. Finite is not enough: a stop
+ * time of 1e30 s made the braking frame count infinite. */
+static int limit_ok(float v) {
+  return v >= 0.0f && v <= SMG_MAX_STEER_LIMIT; /* false for NaN too */
+}
+
 static int limits_ok(float turn, float slide, float stop) {
-  return isfinite(turn) && isfinite(slide) && isfinite(stop) &&
-         turn >= 0.0f && slide >= 0.0f && stop >= 0.0f;
+  return limit_ok(turn) && limit_ok(slide) && limit_ok(stop);
 }
 
 /* Swing clearance: 0 (the default) to SMG_MAX_SWING_CLEARANCE metres (a
