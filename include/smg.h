@@ -273,8 +273,10 @@ typedef struct smg_character_desc {
                                 of the motion's own ground speed (none
                                 while it stands); 0 = 0.25 */
   float stop_seconds;        /* braking time when coming to rest at the
-                                path's end; 0 = 1.0. Each of the three at
-                                most SMG_MAX_STEER_LIMIT */
+                                path's end; 0 = 1.0. Maxima:
+                                SMG_MAX_STEER_TURN_RATE,
+                                SMG_MAX_STEER_SLIDE_RATIO,
+                                SMG_MAX_STOP_SECONDS */
   /* Swing clearance (part of the foot IK; off with SMG_CHARACTER_NO_IK or
    * SMG_CHARACTER_NO_SWING_CLEARANCE): a foot swinging fast keeps its toe
    * at least this high above the floor that foot last stood on, so it
@@ -367,9 +369,11 @@ SMG_API smg_result smg_character_set_steering(smg_character* character,
                                               uint32_t enabled);
 /* The steering limits of smg_character_desc (turn rate rad/s, slide ratio,
  * stop seconds; 0 = default). A negative or non-finite value, or one above
- * SMG_MAX_STEER_LIMIT, returns SMG_ERROR_INVALID_ARGUMENT and changes
+ * its maximum below, returns SMG_ERROR_INVALID_ARGUMENT and changes
  * nothing. */
-#define SMG_MAX_STEER_LIMIT 1000.0f
+#define SMG_MAX_STEER_TURN_RATE 12.0f  /* rad/s (about 690 deg/s) */
+#define SMG_MAX_STEER_SLIDE_RATIO 1.0f /* the motion's own speed */
+#define SMG_MAX_STOP_SECONDS 60.0f
 SMG_API smg_result smg_character_set_steering_limits(smg_character* character,
                                                      float turn_rate,
                                                      float slide_ratio,

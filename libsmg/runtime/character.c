@@ -50,15 +50,15 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   l->total = o;
 }
 
-/* One steering limit: 0 (the default, resolved in steer.c so the setter
- * shares the rule) to SMG_MAX_STEER_LIMIT. Finite is not enough: a stop
- * time of 1e30 s made the braking frame count infinite. */
-static int limit_ok(float v) {
-  return v >= 0.0f && v <= SMG_MAX_STEER_LIMIT; /* false for NaN too */
-}
-
+/* Steering limits: 0 (the default, resolved in steer.c so the setter
+ * shares the rule) up to their maxima (false for NaN too). Finite is not
+ * enough: a stop time of 1e30 s made the braking frame count infinite, and
+ * a slide ratio of 1000 moved the root at 1000 times the motion's speed
+ * (both found by the runtime fuzz target). */
 static int limits_ok(float turn, float slide, float stop) {
-  return limit_ok(turn) && limit_ok(slide) && limit_ok(stop);
+  return turn >= 0.0f && turn <= SMG_MAX_STEER_TURN_RATE && slide >= 0.0f &&
+         slide <= SMG_MAX_STEER_SLIDE_RATIO && stop >= 0.0f &&
+         stop <= SMG_MAX_STOP_SECONDS;
 }
 
 /* Swing clearance: 0 (the default) to SMG_MAX_SWING_CLEARANCE metres (a

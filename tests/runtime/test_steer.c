@@ -348,6 +348,26 @@ static void test_settings(void** state) {
   smg_character_get_local_pose(b, rb, qb, FIXTURE_JOINTS);
   assert_memory_equal(ra, rb, sizeof ra);
   assert_memory_equal(qa, qb, sizeof qa);
+  /* the maxima are accepted, a little more is not (on a third character:
+   * a and b must stay twins) */
+  {
+    smg_character* m = NULL;
+    assert_int_equal(smg_character_create(c->g, NULL, &m), SMG_OK);
+    assert_int_equal(smg_character_set_steering_limits(
+                         m, SMG_MAX_STEER_TURN_RATE, SMG_MAX_STEER_SLIDE_RATIO,
+                         SMG_MAX_STOP_SECONDS),
+                     SMG_OK);
+    assert_int_equal(smg_character_set_steering_limits(
+                         m, 1.01f * SMG_MAX_STEER_TURN_RATE, 0.0f, 0.0f),
+                     SMG_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(smg_character_set_steering_limits(
+                         m, 0.0f, 1.01f * SMG_MAX_STEER_SLIDE_RATIO, 0.0f),
+                     SMG_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(smg_character_set_steering_limits(
+                         m, 0.0f, 0.0f, 1.01f * SMG_MAX_STOP_SECONDS),
+                     SMG_ERROR_INVALID_ARGUMENT);
+    smg_character_destroy(m);
+  }
   /* zero is the default: explicit defaults change nothing either */
   assert_int_equal(smg_character_set_steering_limits(a, 0.0f, 0.0f, 0.0f),
                    SMG_OK);
