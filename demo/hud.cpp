@@ -115,6 +115,9 @@ void controls(App& app) {
   bool steering = w.steering();
   if (ImGui::Checkbox("steering", &steering)) w.set_steering(steering);
   ImGui::SameLine();
+  bool swing = w.swing_clearance();
+  if (ImGui::Checkbox("swing clearance", &swing)) w.set_swing_clearance(swing);
+  ImGui::SameLine();
   ImGui::Checkbox("follow camera (F)", &app.camera.follow);
   ImGui::SameLine();
   ImGui::Checkbox("pause", &app.paused);

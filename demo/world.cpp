@@ -188,7 +188,8 @@ bool World::spawn(int n, std::string* error) {
     smg_character_desc d;
     std::memset(&d, 0, sizeof d);
     d.struct_size = sizeof d;
-    d.flags = (ik_ ? 0u : SMG_CHARACTER_NO_IK) | (steering_ ? 0u : SMG_CHARACTER_NO_STEERING);
+    d.flags = (ik_ ? 0u : SMG_CHARACTER_NO_IK) | (steering_ ? 0u : SMG_CHARACTER_NO_STEERING) |
+              (swing_clearance_ ? 0u : SMG_CHARACTER_NO_SWING_CLEARANCE);
     d.path_capacity = kPathCapacity;
     d.constraint_capacity = kConstraintCapacity;
     d.seed = uint32_t(i + 1);
@@ -397,6 +398,12 @@ void World::set_steering(bool on) {
   steering_ = on;
   for (Character& c : characters_)
     check(smg_character_set_steering(c.handle, on ? 1u : 0u), "smg_character_set_steering");
+}
+
+void World::set_swing_clearance(bool on) {
+  swing_clearance_ = on;
+  for (Character& c : characters_)
+    check(smg_character_set_swing_clearance(c.handle, on ? 1u : 0u, 0.0f), "smg_character_set_swing_clearance");
 }
 
 void World::set_style_now(uint32_t style) {

@@ -99,6 +99,8 @@ class World {
   bool ik() const { return ik_; }
   void set_steering(bool on);
   bool steering() const { return steering_; }
+  void set_swing_clearance(bool on);
+  bool swing_clearance() const { return swing_clearance_; }
   void set_style_now(uint32_t style);
   void set_action_now(uint32_t action);
 
@@ -162,6 +164,7 @@ class World {
   float threshold_ = 0.25f;
   bool ik_ = true;
   bool steering_ = true;
+  bool swing_clearance_ = true;
   double sim_time_ = 0.0;
   double step_us_avg_ = 0.0, step_us_max_ = 0.0, step_us_total_ = 0.0;
   std::vector<TrailPose> trail_;
