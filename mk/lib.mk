@@ -38,7 +38,8 @@ $(LIBSMG_SO): $(LIB_OBJ)
 
 .PHONY: install-runtime
 install-runtime: $(LIBSMG_A) $(LIBSMG_SO)
-	install -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR)
+	install -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(PREFIX)/share/doc/libsmg
+	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/doc/libsmg/LICENSE
 	install -m 644 include/smg.h $(DESTDIR)$(INCLUDEDIR)/smg.h
 	install -m 644 $(LIBSMG_A) $(DESTDIR)$(LIBDIR)/libsmg.a
 	install -m 755 $(LIBSMG_SO) $(DESTDIR)$(LIBDIR)/libsmg.so.$(LIB_VERSION)
