@@ -23,7 +23,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "bake_graph.h"
+#include "bake_pointcloud.h"
 #include "bake_manifest.h"
 #include "bake_synthetic.h"
 #include "smg_bake.h"

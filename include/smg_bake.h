@@ -23,7 +23,8 @@
  * all-zero options struct means defaults); every call returns an
  * smg_result; on failure a
  * one-line message naming the file, line (when there is one) and problem
- * is written to the result's `error` buffer.
+ * is written to the result's `error` buffer, and the list of every problem
+ * the bake met to its `problems`.
  *
  * Not thread-safe per result; independent bakes may run on different
  * threads. The baker itself may use worker threads (options.threads).
@@ -184,10 +185,21 @@ typedef struct smg_bake_result {
                                      transitions that jump the gait phase
                                      (with only phase-keeping ones the
                                      action had no cycle; docs/baker.md) */
+  /* Added with the problem list (a result whose struct_size ends before
+   * these fields gets `error` only): */
+  uint32_t error_count;      /* errors met; the bake failed when > 0 */
+  uint32_t warning_count;    /* warnings met; the bake went on */
+  char problems[4096];       /* every error and warning of the bake, one
+                                per line ("error: ..." / "warning: ..."),
+                                in the order met, so a run with several
+                                broken clips or options names all of them
+                                ("" when none; a last line counts those
+                                that did not fit) */
 } smg_bake_result;
 
 /* Bake. `out` must have struct_size set; it is reset first. On failure out
- * holds no blob and out->error explains. Same inputs and options give a
+ * holds no blob, out->error is the first problem and out->problems lists
+ * them all. Same inputs and options give a
  * byte-identical blob. */
 smg_result smg_bake_run(const smg_bake_desc* desc, smg_bake_result* out);
 

@@ -287,6 +287,24 @@ static int parse_u32(const char* opt, const char* s, uint32_t* out) {
   return 1;
 }
 
+/* Every problem of the bake, one line each (warnings too, even with -q),
+ * then how many errors there were when more than one. */
+static void print_problems(const char* manifest, const smg_bake_result* res) {
+  const char* line = res->problems;
+  while (line && *line) {
+    const char* end = strchr(line, '\n');
+    int n = end ? (int)(end - line) : (int)strlen(line);
+    fprintf(stderr, "smg-bake: %s%s%.*s\n", manifest ? manifest : "",
+            manifest ? ": " : "", n, line);
+    line += n + (end ? 1 : 0);
+  }
+  if (!res->problems[0] && res->error[0])
+    fprintf(stderr, "smg-bake: %s%s%s\n", manifest ? manifest : "",
+            manifest ? ": " : "", res->error);
+  if (res->error_count > 1)
+    fprintf(stderr, "smg-bake: %u errors\n", res->error_count);
+}
+
 int main(int argc, char** argv) {
   const char *manifest = NULL, *output = NULL, *data_dir = NULL;
   smgb_manifest m;
@@ -464,12 +482,10 @@ int main(int argc, char** argv) {
   memset(&res, 0, sizeof res);
   res.struct_size = sizeof res;
   r = smg_bake_run(&desc, &res);
-  if (r != SMG_OK) {
-    if (ps.tty && !ps.quiet) fputc('\n', stderr);
-    fprintf(stderr, "smg-bake: %s%s%s\n", manifest ? manifest : "",
-            manifest ? ": " : "", res.error);
-    goto out;
-  }
+  if (ps.tty && !ps.quiet && (r != SMG_OK || res.warning_count))
+    fputc('\n', stderr);
+  print_problems(manifest, &res);
+  if (r != SMG_OK) goto out;
   {
     char werr[512];
     if (smg_bake_write_file(&res, output, werr, sizeof werr) != SMG_OK) {
@@ -502,13 +518,6 @@ int main(int argc, char** argv) {
             100.0 * s->splice_coverage, s->splice_max_gap, output,
             res.blob_size);
   }
-  /* a warning, shown even with -q */
-  if (res.upper_phase_fallbacks)
-    fprintf(stderr,
-            "smg-bake: note: %u action(s) keep upper-graph transitions that "
-            "jump the gait phase (without them the action had no cycle; "
-            "docs/baker.md)\n",
-            res.upper_phase_fallbacks);
   smg_bake_result_free(&res);
   code = 0;
 out:

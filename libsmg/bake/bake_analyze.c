@@ -14,7 +14,9 @@
 #include <string.h>
 
 #include "bake_analyze.h"
-#include "bake_graph.h"
+#include "bake_options.h"
+#include "bake_pool.h"
+#include "bake_state.h"
 
 #define PI 3.14159265358979323846
 
@@ -111,6 +113,7 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
                              uint32_t file_offset, float max_angle,
                              float min_speed, smgb_analysis* out,
                              smgb_error* err) {
+  smg_bake_options opt;
   smgb_bake* b;
   smgb_clip rs;
   smg_result r;
@@ -129,14 +132,17 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
   if (!(min_speed > 0.0f)) min_speed = 0.3f;
   b = calloc(1, sizeof *b);
   if (!b) return SMG_ERROR_OUT_OF_MEMORY;
-  b->opt.frame_rate = frame_rate;
-  b->opt.contact_height = 0.06f;
-  b->opt.contact_speed = 0.6f;
-  r = smgb_skeleton_copy(&clip->skeleton, &b->skel);
+  /* a bake's options, at this working rate */
+  memset(&opt, 0, sizeof opt);
+  opt.struct_size = sizeof opt;
+  opt.frame_rate = frame_rate;
+  smgb_bake_init(b, NULL, NULL);
+  r = smgb_options_resolve(&opt, &b->opt, &b->report);
+  if (r == SMG_OK) r = smgb_skeleton_copy(&clip->skeleton, &b->skel);
   if (r == SMG_OK) {
     b->J = b->skel.joint_count;
     b->stride = SMGB_STRIDE(b->J);
-    r = smgb_body_init(b, NULL, clip->name);
+    r = smgb_body_init(&b->body, &b->skel, NULL, clip->name, &b->report);
   }
   if (r == SMG_OK)
     r = clip->frame_rate != frame_rate
@@ -148,7 +154,9 @@ smg_result smgb_analyze_clip(const smgb_clip* clip, float frame_rate,
   }
   if (r != SMG_OK) {
     if (err) snprintf(err->message, sizeof err->message, "analyze: %.490s",
-                      b->error[0] ? b->error : smg_result_string(r));
+                      smgb_report_first_error(&b->report)[0]
+                          ? smgb_report_first_error(&b->report)
+                          : smg_result_string(r));
     goto done;
   }
   n = b->clips[0].count;

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_body.h"
 
 /* Zero-length helper joints (CMU LHipJoint, LowerBack, ...) sit exactly on
  * their parent; measuring them would only double-weight the parent. */
@@ -30,10 +30,9 @@ static int in_subtree(const smgb_skeleton* s, uint32_t j, uint32_t root) {
   return 0;
 }
 
-smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
-                          const char* source) {
-  const smgb_skeleton* s = &b->skel;
-  smgb_body* body = &b->body;
+smg_result smgb_body_init(smgb_body* body, const smgb_skeleton* s,
+                          const char* bone_map, const char* source,
+                          smgb_report* report) {
   uint32_t J = s->joint_count, j;
   static const smgb_role leg_roles[2][4] = {
       {SMGB_ROLE_LEFT_UPPER_LEG, SMGB_ROLE_LEFT_LOWER_LEG, SMGB_ROLE_LEFT_FOOT,
@@ -47,21 +46,21 @@ smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
   memset(body, 0, sizeof *body);
   body->joint_count = J;
   if (J > SMGB_MAX_JOINTS) {
-    smgb_fail(b, "skeleton: %u joints; at most %d are supported", J,
+    smgb_fail(report, "skeleton: %u joints; at most %d are supported", J,
               SMGB_MAX_JOINTS);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   if (J < 2) {
-    smgb_fail(b, "skeleton: %u joint(s); need a root, legs and a spine", J);
+    smgb_fail(report, "skeleton: %u joint(s); need a root, legs and a spine", J);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   r = smgb_roles_find(s, bone_map, source, &body->roles, &err);
   if (r != SMG_OK) {
-    smgb_fail(b, "%s", err.message);
+    smgb_fail(report, "%s", err.message);
     return r;
   }
   if (body->roles.joint[SMGB_ROLE_PELVIS] != 0) {
-    smgb_fail(b, "%s: the pelvis '%s' must be the skeleton's root joint "
+    smgb_fail(report, "%s: the pelvis '%s' must be the skeleton's root joint "
                  "(joint 0 is '%s'); a static joint above a translating "
                  "pelvis is folded away only by the BVH importer",
               source ? source : "skeleton",
@@ -76,7 +75,7 @@ smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
   for (i = 0; i < 4; ++i) {
     if (in_subtree(s, body->left_leg[i], body->spine_base) ||
         in_subtree(s, body->right_leg[i], body->spine_base)) {
-      smgb_fail(b, "skeleton: leg joint '%s' is under the spine base '%s'",
+      smgb_fail(report, "skeleton: leg joint '%s' is under the spine base '%s'",
                 s->names[body->left_leg[i]], s->names[body->spine_base]);
       return SMG_ERROR_INVALID_ARGUMENT;
     }
@@ -89,13 +88,13 @@ smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
   body->torso_points = calloc(J, sizeof *body->torso_points);
   if (!body->body_part || !body->mirror || !body->mass_ratio ||
       !body->lower_points || !body->torso_points) {
-    smgb_fail(b, "out of memory (body tables)");
+    smgb_fail(report, "out of memory (body tables)");
     return SMG_ERROR_OUT_OF_MEMORY;
   }
   {
     int32_t* partner = (int32_t*)malloc(sizeof *partner * J);
     if (!partner) {
-      smgb_fail(b, "out of memory (body tables)");
+      smgb_fail(report, "out of memory (body tables)");
       return SMG_ERROR_OUT_OF_MEMORY;
     }
     /* The rule smgb_clip_mirror_partners is given, so the blob's mirror
@@ -129,13 +128,13 @@ smg_result smgb_body_init(smgb_bake* b, const char* bone_map,
     if (!below_arm) body->torso_points[body->torso_point_count++] = j;
   }
   if (body->torso_point_count < 3) {
-    smgb_fail(b, "skeleton: only %u torso joint(s) above the arms under '%s';"
+    smgb_fail(report, "skeleton: only %u torso joint(s) above the arms under '%s';"
                  " Horn's fit needs 3", body->torso_point_count,
               s->names[body->spine_base]);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   body->leg_length = smgb_roles_leg_length(s, &body->roles);
-  return smgb_segments_init(b);
+  return smgb_segments_init(body, s, report);
 }
 
 void smgb_body_free(smgb_body* body) {

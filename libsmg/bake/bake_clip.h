@@ -1,11 +1,9 @@
 /*
- * bake_clip.h - the baker's in-memory motion clip and skeleton.
+ * bake_clip.h - the baker's in-memory motion clip: a skeleton
+ * (bake_skeleton.h) and its poses.
  *
- * Every importer (BVH, assimp) produces an smgb_clip; every baking stage
- * (graphs, splicing, internodal data) consumes them. Poses are floats: per
- * frame, the root translation (3 floats, metres) followed by J local
- * rotations (x,y,z,w) - SMGI_POSE_FLOATS in smg_format.h; only the blob
- * writer (bake_output.c) packs the rotations into POSE records.
+ * Every importer (BVH, assimp) produces an smgb_clip; the import stage
+ * (bake_import.c) puts them into the frame pool the graph stages share.
  *
  * Conventions after import: metres, Y up, the character faces +Z when the
  * root rotation is identity, floor at y = 0. Internal baker symbols use the
@@ -17,16 +15,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "bake_report.h"
+#include "bake_roles.h"
+#include "bake_skeleton.h"
 #include "smg.h"
-
-#define SMGB_NAME_MAX 64
-
-typedef struct smgb_skeleton {
-  uint32_t joint_count;
-  char (*names)[SMGB_NAME_MAX]; /* joint_count names */
-  int32_t* parents;             /* -1 for joint 0; parent < index */
-  float (*offsets)[3];          /* rest offsets from parent, metres */
-} smgb_skeleton;
 
 typedef struct smgb_clip {
   char name[SMGB_NAME_MAX];     /* e.g. file name without directory */
@@ -35,14 +27,6 @@ typedef struct smgb_clip {
   float frame_rate;             /* frames per second */
   float* poses;                 /* frame_count * (3 + 4 * joint_count) */
 } smgb_clip;
-
-/* Floats per pose: root translation + one quaternion per joint. */
-#define SMGB_STRIDE(joint_count) (3u + 4u * (uint32_t)(joint_count))
-
-/* Error detail filled by failing importers: file, line and problem. */
-typedef struct smgb_error {
-  char message[512];
-} smgb_error;
 
 /* ---- import (bake_bvh.c, bake_assimp.c) ---------------------------------- */
 
@@ -86,27 +70,14 @@ smg_result smgb_clip_mirror_partners(const smgb_clip* src,
  * root translation by the ratio of leg lengths, replace offsets. */
 smg_result smgb_clip_retarget(smgb_clip* clip, const smgb_skeleton* reference,
                               smgb_error* err);
-/* The same with the body roles of both skeletons given (bake_roles.h;
- * the plain version recognises them by name). */
-struct smgb_roles;
+/* The same with the body roles of both skeletons given (the plain version
+ * recognises them by name). */
 smg_result smgb_clip_retarget_roles(smgb_clip* clip,
-                                    const struct smgb_roles* clip_roles,
+                                    const smgb_roles* clip_roles,
                                     const smgb_skeleton* reference,
-                                    const struct smgb_roles* reference_roles,
+                                    const smgb_roles* reference_roles,
                                     smgb_error* err);
 /* Lowest point of the skeleton over the clip is moved to y = 0. */
 void smgb_clip_ground(smgb_clip* clip);
-
-int32_t smgb_skeleton_find(const smgb_skeleton* s, const char* name);
-smg_result smgb_skeleton_copy(const smgb_skeleton* src, smgb_skeleton* out);
-void smgb_skeleton_free(smgb_skeleton* s);
-/* Hip-to-ankle rest length of the left leg, metres, with the body roles
- * recognised by name (0 if not found; bake_roles.h). */
-float smgb_skeleton_leg_length(const smgb_skeleton* s);
-
-/* Forward kinematics of one pose: world positions (3 per joint) and,
- * optionally, world rotations (4 per joint, may be NULL). */
-void smgb_fk(const smgb_skeleton* s, const float* pose, float* out_positions,
-             float* out_rotations);
 
 #endif /* BAKE_CLIP_H */

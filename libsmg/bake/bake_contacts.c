@@ -46,7 +46,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_contacts.h"
 
 static const float* jpos(const smgb_bake* b, uint32_t f, uint32_t j) {
   return b->positions + ((size_t)f * b->J + j) * 3u;

@@ -10,7 +10,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_horn.h"
 
 static void jacobi4(double A[4][4], double V[4][4]) {
   int sweep, p, q, i;

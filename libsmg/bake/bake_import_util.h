@@ -15,7 +15,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-#include "bake_clip.h"
+#include "bake_report.h"
 
 #define SMGB_PI 3.14159265358979323846
 

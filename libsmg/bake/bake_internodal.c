@@ -12,7 +12,7 @@
  */
 #include <math.h>
 
-#include "bake_graph.h"
+#include "bake_internodal.h"
 #include "bake_math.h"
 
 static void frame_ground(const smgb_bake* b, uint32_t f, double g[3]) {

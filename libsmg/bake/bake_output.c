@@ -13,7 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_internodal.h"
+#include "bake_output.h"
 #include "blob.h"
 #include "quat_pack.h"
 
@@ -124,7 +125,7 @@ smg_result smgb_write_blob(smgb_bake* b, void** out_blob, size_t* out_size) {
         packed + (size_t)i * SMGI_POSE_RECORD_SIZE(b->J));
     if (nonunit) {
       /* the v1 reader's unit check, now done at pack time */
-      smgb_fail(b, "writing the blob: POSE[%u] has %u rotation(s) that are "
+      smgb_fail(&b->report, "writing the blob: POSE[%u] has %u rotation(s) that are "
                    "not finite unit quaternions", (unsigned)i,
                 (unsigned)nonunit);
       r = SMG_ERROR_BLOB_VALUE;
@@ -219,10 +220,10 @@ smg_result smgb_write_blob(smgb_bake* b, void** out_blob, size_t* out_size) {
   g.splices = splices;
   g.splice_count = b->splice_count;
   r = smgi_blob_write(&g, NULL, out_blob, out_size, err, sizeof err);
-  if (r != SMG_OK) smgb_fail(b, "writing the blob: %s", err);
+  if (r != SMG_OK) smgb_fail(&b->report, "writing the blob: %s", err);
   goto done;
 oom:
-  smgb_fail(b, "out of memory writing the blob");
+  smgb_fail(&b->report, "out of memory writing the blob");
   r = SMG_ERROR_OUT_OF_MEMORY;
 done:
   free(packed);

@@ -31,7 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_pointcloud.h"
 
 typedef struct win_sums {
   double* sq;
@@ -305,8 +305,8 @@ static void* worker_run(void* arg) {
         dnext = old;
       }
     }
-    if (w->report_progress && job->bake && (i & 15u) == 0)
-      smgb_progress(job->bake, (float)(i - lo + 1) / (float)(hi - lo + 1));
+    if (w->report_progress && job->report && (i & 15u) == 0)
+      smgb_progress(job->report, (float)(i - lo + 1) / (float)(hi - lo + 1));
   }
   if (hi >= w->r0 && hi < w->r1 && hi == FA - 1)
     row_minima(w, hi, hi > lo ? dprev : NULL, dcur, NULL, S, S + FB,

@@ -8,7 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_contacts.h"
+#include "bake_pool.h"
 #include "bake_math.h"
 
 smg_result smgb_pool_reserve(smgb_bake* b, uint32_t frames) {
@@ -25,7 +26,7 @@ smg_result smgb_pool_reserve(smgb_bake* b, uint32_t frames) {
   pos = realloc(b->positions, (size_t)cap * 3u * b->J * sizeof *pos);
   if (pos) b->positions = pos;
   if (!p || !fr || !pos) {
-    smgb_fail(b, "out of memory (frame pool of %u frames)", cap);
+    smgb_fail(&b->report, "out of memory (frame pool of %u frames)", cap);
     return SMG_ERROR_OUT_OF_MEMORY;
   }
   /* New records start zeroed: determinism does not depend on realloc. */
@@ -64,7 +65,7 @@ smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
   uint32_t f;
   smg_result r;
   if (clip->skeleton.joint_count != b->J) {
-    smgb_fail(b, "%s: %u joints, reference skeleton has %u", name,
+    smgb_fail(&b->report, "%s: %u joints, reference skeleton has %u", name,
               clip->skeleton.joint_count, b->J);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
@@ -72,7 +73,7 @@ smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
     uint32_t cap = b->clip_cap ? b->clip_cap * 2 : 16;
     smgb_pool_clip* nc = realloc(b->clips, cap * sizeof *nc);
     if (!nc) {
-      smgb_fail(b, "out of memory (clip table)");
+      smgb_fail(&b->report, "out of memory (clip table)");
       return SMG_ERROR_OUT_OF_MEMORY;
     }
     b->clips = nc;

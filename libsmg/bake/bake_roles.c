@@ -554,3 +554,10 @@ void smgb_roles_partners(const smgb_skeleton* s, const smgb_roles* r,
   for (j = 0; j < s->joint_count; ++j)
     if (partner[partner[j]] != (int32_t)j) partner[j] = (int32_t)j;
 }
+
+float smgb_skeleton_leg_length(const smgb_skeleton* s) {
+  smgb_roles r;
+  if (!s || !s->names || !s->parents || !s->offsets) return 0.0f;
+  smgb_roles_guess(s, &r);
+  return smgb_roles_leg_length(s, &r);
+}

@@ -23,7 +23,9 @@
 
 #include <stdint.h>
 
-#include "bake_clip.h"
+#include "bake_report.h"
+#include "bake_skeleton.h"
+#include "smg.h"
 
 typedef enum smgb_role {
   SMGB_ROLE_PELVIS = 0,     /* the translating root (joint 0 in a bake) */
@@ -104,5 +106,9 @@ int smgb_roles_counterpart_name(const char* name, char out[SMGB_NAME_MAX]);
  * smgb_clip_mirror_partners use it, so both agree. */
 void smgb_roles_partners(const smgb_skeleton* s, const smgb_roles* r,
                          int32_t* partner);
+
+/* Hip-to-ankle rest length of the left leg with the roles recognised by
+ * name (smgb_roles_guess), metres; 0 if not found. */
+float smgb_skeleton_leg_length(const smgb_skeleton* s);
 
 #endif /* BAKE_ROLES_H */

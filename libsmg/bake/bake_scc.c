@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_scc.h"
 
 int32_t smgb_scc(const smgb_graph* g, uint32_t* comp) {
   uint32_t N = g->node_count, E = g->edge_count, n, e;
@@ -148,7 +148,7 @@ smg_result smgb_prune(smgb_bake* b, uint32_t role) {
       int found = 0;
       for (n = 0; n < N && !found; ++n) found = keep[n] && g->nodes[n].label == l;
       if (!found) {
-        smgb_fail(b, "lower graph: style '%s' is lost when pruning to the "
+        smgb_fail(&b->report, "lower graph: style '%s' is lost when pruning to the "
                      "largest strongly connected component (no transitions "
                      "into and out of it were found; raise "
                      "transition_percentile or add %s clips)",
@@ -170,7 +170,7 @@ smg_result smgb_prune(smgb_bake* b, uint32_t role) {
            * action without it (the pipeline retries) */
           b->upper_phase_free |= (uint64_t)1 << l;
         }
-        smgb_fail(b, "upper graph: action '%s' has no cycle (no transition "
+        smgb_fail(&b->report, "upper graph: action '%s' has no cycle (no transition "
                      "candidates loop back inside its clips; use longer "
                      "clips or raise transition_percentile)",
                   b->actions[l]);
@@ -185,7 +185,7 @@ smg_result smgb_prune(smgb_bake* b, uint32_t role) {
   if (r != SMG_OK) goto oom;
   goto done;
 oom:
-  smgb_fail(b, "out of memory pruning the %s graph",
+  smgb_fail(&b->report, "out of memory pruning the %s graph",
             role == SMGI_CLIP_LOWER ? "lower" : "upper");
   r = SMG_ERROR_OUT_OF_MEMORY;
 done:

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_simplify.h"
 
 static int node_cmp(const void* pa, const void* pb) {
   const smgb_node* a = pa;
@@ -118,7 +118,7 @@ smg_result smgb_simplify(smgb_bake* b, smgb_graph* g) {
   memset(&ng, 0, sizeof ng);
   r = SMG_OK;
 done:
-  if (r != SMG_OK) smgb_fail(b, "out of memory simplifying a graph");
+  if (r != SMG_OK) smgb_fail(&b->report, "out of memory simplifying a graph");
   smgb_graph_free(&ng);
   free(in);
   free(out);

@@ -24,7 +24,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_horn.h"
+#include "bake_pointcloud.h"
+#include "bake_splice.h"
+#include "bake_upper.h"
 #include "bake_math.h"
 
 typedef struct scand {
@@ -239,9 +242,9 @@ smg_result smgb_find_splices(smgb_bake* b) {
   job.window = k;
   job.align = 0;
   job.threads = b->opt.threads;
-  job.bake = b;
+  job.report = &b->report;
   if ((r = smgb_grid_minima(&job, &mins, &nmin)) != SMG_OK) {
-    smgb_fail(b, "splice search: distance grid failed (%s)",
+    smgb_fail(&b->report, "splice search: distance grid failed (%s)",
               smg_result_string(r));
     goto done;
   }
@@ -300,7 +303,7 @@ smg_result smgb_find_splices(smgb_bake* b) {
     s->upper_offset = uoff[uf];
     s->distance = cands[i].m.dist;
     fit_correction(b, lf, uf, s->correction, ta, tl);
-    if ((i & 63u) == 0) smgb_progress(b, 0.9f + 0.1f * i / (nkept + 1));
+    if ((i & 63u) == 0) smgb_progress(&b->report, 0.9f + 0.1f * i / (nkept + 1));
   }
   b->splice_count = nkept;
   qsort(b->splices, nkept, sizeof *b->splices, splice_cmp);
@@ -358,7 +361,7 @@ smg_result smgb_find_splices(smgb_bake* b) {
   r = SMG_OK;
   goto done;
 oom:
-  smgb_fail(b, "out of memory in the splice search");
+  smgb_fail(&b->report, "out of memory in the splice search");
   r = SMG_ERROR_OUT_OF_MEMORY;
 done:
   free(map_l);

@@ -15,7 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_pool.h"
+#include "bake_transition.h"
 #include "bake_math.h"
 
 double smgb_blend_alpha(uint32_t t, uint32_t k) {
@@ -89,7 +90,7 @@ static smg_result materialize(smgb_bake* b, smgb_graph* g, uint32_t role,
     uint32_t cap = b->clip_cap ? b->clip_cap * 2 : 16;
     smgb_pool_clip* nc = realloc(b->clips, cap * sizeof *nc);
     if (!nc) {
-      smgb_fail(b, "out of memory (clip table)");
+      smgb_fail(&b->report, "out of memory (clip table)");
       return SMG_ERROR_OUT_OF_MEMORY;
     }
     b->clips = nc;

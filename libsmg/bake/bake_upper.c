@@ -30,7 +30,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "bake_graph.h"
+#include "bake_upper.h"
 #include "bake_math.h"
 
 typedef struct seg_def {
@@ -68,8 +68,8 @@ static const seg_def k_segments[] = {
      0},
 };
 
-smg_result smgb_segments_init(smgb_bake* b) {
-  smgb_body* body = &b->body;
+smg_result smgb_segments_init(smgb_body* body, const smgb_skeleton* skel,
+                              smgb_report* report) {
   const smgb_roles* roles = &body->roles;
   size_t i;
   body->segment_count = 0;
@@ -80,12 +80,12 @@ smg_result smgb_segments_init(smgb_bake* b) {
     const seg_def* d = &k_segments[i];
     int32_t q = roles->joint[d->distal];
     int32_t p = d->proximal >= 0 ? roles->joint[d->proximal]
-                                 : (q >= 0 ? b->skel.parents[q] : -1);
+                                 : (q >= 0 ? skel->parents[q] : -1);
     smgb_segment* s;
     /* A hand without a finger joint: COG at the wrist. */
     if (q < 0 && p >= 0 && strstr(d->name, "hand")) q = p;
     if (p < 0 || q < 0) {
-      smgb_fail(b, "skeleton: segment '%s' has no %s joint", d->name,
+      smgb_fail(report, "skeleton: segment '%s' has no %s joint", d->name,
                 p < 0 ? "proximal" : "distal");
       return SMG_ERROR_INVALID_ARGUMENT;
     }

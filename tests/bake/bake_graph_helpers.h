@@ -12,7 +12,14 @@
 #include <string.h>
 
 #include "bake_clip.h"
-#include "bake_graph.h"
+#include "bake_graph_build.h"
+#include "bake_horn.h"
+#include "bake_pointcloud.h"
+#include "bake_pool.h"
+#include "bake_scc.h"
+#include "bake_simplify.h"
+#include "bake_state.h"
+#include "bake_transition.h"
 #include "bake_manifest.h"
 #include "bake_math.h"
 #include "bake_synthetic.h"

@@ -410,6 +410,43 @@ static void test_bad_input(void** state) {
   bg_free(&s);
 }
 
+/* One bake names every broken clip and every bad option, not only the
+ * first: the clips after a broken one are still read. */
+static void test_every_problem_reported(void** state) {
+  bg_set s;
+  smg_bake_result res;
+  smg_bake_options o;
+  (void)state;
+  bg_standard(&s, 3.0f);
+  /* clip 2 without a label, clip 5 (an upper clip) labelled "none" */
+  s.descs[1].label = "";
+  s.descs[4].label = "none";
+  assert_int_equal(bg_bake(&s, NULL, &res), SMG_ERROR_INVALID_ARGUMENT);
+  assert_null(res.blob);
+  assert_int_equal(res.error_count, 2);
+  assert_non_null(strstr(res.error, "clip 2"));
+  assert_null(strstr(res.error, "clip 5"));
+  assert_non_null(strstr(res.problems, "error: clip 2: a label"));
+  assert_non_null(strstr(res.problems, "error: clip 5: an upper-body clip"));
+  s.descs[1].label = "walk";
+  s.descs[4].label = "punch";
+  /* two options out of range */
+  memset(&o, 0, sizeof o);
+  o.struct_size = sizeof o;
+  o.window_seconds = -1.0f;
+  o.splices_per_region = 5000u;
+  assert_int_equal(bg_bake(&s, &o, &res), SMG_ERROR_INVALID_ARGUMENT);
+  assert_int_equal(res.error_count, 2);
+  assert_non_null(strstr(res.problems, "options.window_seconds"));
+  assert_non_null(strstr(res.problems, "options.splices_per_region"));
+  /* a clean bake has none */
+  assert_int_equal(bg_bake(&s, NULL, &res), SMG_OK);
+  assert_int_equal(res.error_count, 0);
+  assert_string_equal(res.problems, "");
+  smg_bake_result_free(&res);
+  bg_free(&s);
+}
+
 /* File-based input through a manifest: a missing clip is reported with the
  * manifest's file and line, a truncated BVH with the BVH file and line, and
  * a good manifest bakes. */
@@ -538,6 +575,7 @@ int main(void) {
   };
   const struct CMUnitTest misuse[] = {
       cmocka_unit_test(test_bad_input),
+      cmocka_unit_test(test_every_problem_reported),
       cmocka_unit_test(test_manifest_and_files),
   };
   int fails = cmocka_run_group_tests(tests, setup, teardown);

@@ -1,0 +1,23 @@
+/*
+ * bake_pool.h - the frame pool (bake_pool.c): clips appended frame by
+ * frame, with forward kinematics and ground frames derived.
+ */
+#ifndef BAKE_POOL_H
+#define BAKE_POOL_H
+
+#include <stdint.h>
+
+#include "bake_clip.h"
+#include "bake_state.h"
+
+smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
+                              const char* name, uint32_t label,
+                              uint32_t flags, uint32_t source_clip);
+smg_result smgb_pool_reserve(smgb_bake* b, uint32_t frames);
+/* Recompute FK positions and root2d of pool frames [first, first+count). */
+void smgb_pool_derive(smgb_bake* b, uint32_t first, uint32_t count);
+uint32_t smgb_pool_clip_of(const smgb_bake* b, uint32_t frame);
+/* Ground frame of a pose (x, z, heading). */
+void smgb_pose_ground(const float* pose, double g[3]);
+
+#endif /* BAKE_POOL_H */
