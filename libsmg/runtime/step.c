@@ -121,16 +121,16 @@ smg_result smgi_step(smg_character* ch, float dt) {
   smgi_lower_advance(&ch->lower, g->data.lower_edges, frames);
   ch->time += (double)dt;
 
-  /* upper body: time advance and crossfade, splice scheduling; a switch
-   * starts synchronization afresh */
-  int switched = smgi_upper_advance(&ch->upper, g, &ch->rng, ch->pose.rot,
-                                    frames, ch->sync.rate, dt);
+  /* upper body: time advance and crossfade, splice scheduling; entering
+   * an action's edge anew starts synchronization afresh */
+  int entered = smgi_upper_advance(&ch->upper, g, &ch->rng, ch->pose.rot,
+                                   frames, ch->sync.rate, dt);
   uint32_t key = smgi_q_at(&ch->lower, 0)->seq * 4096u + (uint32_t)ch->lower.t;
   int new_frame = key != ch->lower.last_frame;
   ch->lower.last_frame = key;
-  switched |= smgi_upper_update_splice(&ch->upper, &ch->lower, &in, &ch->rng,
-                                       ch->pose.rot, dt, new_frame);
-  if (switched) smgi_sync_reset(&ch->sync);
+  entered |= smgi_upper_update_splice(&ch->upper, &ch->lower, &in, &ch->rng,
+                                      ch->pose.rot, dt, new_frame);
+  if (entered) smgi_sync_reset(&ch->sync);
   if (new_frame) smgi_sync_update(&ch->sync, &ch->upper, &ch->lower, &in);
 
   smgi_pose_compose(&ch->pose, &ch->lower, &ch->upper, g);

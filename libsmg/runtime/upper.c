@@ -23,8 +23,8 @@
 
 static const float IDENTITY[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 
-/* One call's state, its inputs and whether it switched the upper body
- * (which starts synchronization afresh, sync.h). */
+/* One call's state, its inputs and whether it entered an action's edge
+ * anew (which starts synchronization afresh, sync.h). */
 typedef struct job {
   smgi_upper* u;
   const smg_graph* g;

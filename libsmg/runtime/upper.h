@@ -42,14 +42,17 @@ typedef struct smgi_upper {
 void smgi_upper_start(smgi_upper* u, const smg_graph* g, uint32_t* rng,
                       const float* shown, uint32_t action);
 /* Advance the upper playhead by `lower_frames` times the sync rate and
- * the crossfade by dt. Returns 1 when the upper body switched (a dead end
- * re-entered its action): synchronization then starts afresh. */
+ * the crossfade by dt. Returns 1 when the upper body entered an action's
+ * edge anew (here: a dead end re-entered its action): synchronization
+ * then starts afresh (smgi_sync_reset). */
 int smgi_upper_advance(smgi_upper* u, const smg_graph* g, uint32_t* rng,
                        const float* shown, float lower_frames,
                        float sync_rate, float dt);
 /* Follow splice points (the constraints at the character's progress, the
  * lower frames coming up): schedule, and switch when the frame has come.
- * Returns 1 when the upper body switched. */
+ * Returns 1 when it switched into an action's edge; a switch back to
+ * action 0 returns 0 (nothing to synchronize: smgi_sync_update resets
+ * the rate on the next new lower frame). */
 int smgi_upper_update_splice(smgi_upper* u, const smgi_lower* lower,
                              const smgi_step_in* in, uint32_t* rng,
                              const float* shown, float dt, int new_frame);
