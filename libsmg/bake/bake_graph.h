@@ -17,6 +17,7 @@
 
 #include "bake_clip.h"
 #include "bake_roles.h"
+#include "printf_check.h"
 #include "smg.h"
 #include "smg_bake.h"
 #include "smg_format.h"
@@ -159,9 +160,7 @@ typedef struct smgb_bake {
 
 /* ---- bake_pipeline.c ------------------------------------------------------ */
 void smgb_fail(smgb_bake* b, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    SMG_PRINTF_CHECK(2, 3)
     ;
 void smgb_progress(smgb_bake* b, float fraction);
 void smgb_bake_free(smgb_bake* b);
