@@ -63,6 +63,20 @@ $(CSHARP_SAMPLE_DLL): $(UNITY_SAMPLE_SRC) $(CSHARP_UNITY_DLL)
 $(CSHARP_TEST_EXE): $(sort $(wildcard tests/csharp/*.cs)) $(CSHARP_INTEROP_DLL)
 	$(MCS) $(MCS_FLAGS) -unsafe -r:$(CSHARP_INTEROP_DLL) -r:System.Core.dll -out:$@ $(filter %.cs,$^)
 
+# The package's own tests (bindings/unity/Tests/Runtime, NUnit: Unity's
+# Test Runner runs them in the editor) with Debian's NUnit 2.6 console
+# runner, beside a copy of Smg.Interop.dll; they load $(DEFAULT_BLOB).
+NUNIT_FRAMEWORK := /usr/lib/cli/nunit.framework-2.6.3/nunit.framework.dll
+NUNIT_CONSOLE ?= nunit-console
+CSHARP_PKG_TEST_DIR := $(CSHARP_BUILD)/package-tests
+CSHARP_PKG_TEST_DLL := $(CSHARP_PKG_TEST_DIR)/Smg.Tests.Runtime.dll
+CSHARP_PKG_TEST_SRC := $(sort $(wildcard $(UNITY_DIR)/Tests/Runtime/*.cs))
+
+$(CSHARP_PKG_TEST_DLL): $(CSHARP_PKG_TEST_SRC) $(CSHARP_INTEROP_DLL)
+	@mkdir -p $(dir $@)
+	cp $(CSHARP_INTEROP_DLL) $(CSHARP_PKG_TEST_DIR)/
+	$(MCS) $(MCS_FLAGS) -target:library -r:$(CSHARP_PKG_TEST_DIR)/Smg.Interop.dll -r:$(NUNIT_FRAMEWORK) -out:$@ $(CSHARP_PKG_TEST_SRC)
+
 $(CSHARP_BENCH_EXE): bench/BenchCsharp.cs $(CSHARP_INTEROP_DLL)
 	$(MCS) $(MCS_FLAGS) -unsafe -r:$(CSHARP_INTEROP_DLL) -out:$@ $<
 
@@ -84,12 +98,16 @@ $(CSHARP_BENCH_C): bench/bench_csharp_c.c include/smg.h $(LIBSMG_SO)
 	$(CC) $(CSTD) $(WARN) $(OPT) $(CPPFLAGS_COMMON) $< -o $@ $(LIBSMG_SO)
 
 .PHONY: test-csharp bench-csharp unity-package
-test-csharp: $(CSHARP_SAMPLE_DLL) $(CSHARP_TEST_EXE) $(CSHARP_LAYOUT) $(CSHARP_REPLAY) $(LIBSMG_SO) $(CSHARP_BLOBS)
+test-csharp: $(CSHARP_SAMPLE_DLL) $(CSHARP_TEST_EXE) $(CSHARP_PKG_TEST_DLL) $(CSHARP_LAYOUT) $(CSHARP_REPLAY) $(LIBSMG_SO) $(CSHARP_BLOBS)
 	@$(if $(filter $(CMU_BLOB),$(CSHARP_BLOBS)),,echo "test-csharp: $(SMG_SHARED)/mocap/cmu absent: CMU replay skipped")
 	@$(CSHARP_LAYOUT) > $(CSHARP_BUILD)/layout.txt
 	@nm -D --defined-only $(LIBSMG_SO) | awk '$$2 == "T" {print $$3}' > $(CSHARP_BUILD)/exports.txt
 	$(CSHARP_RUN) $(CSHARP_TEST_EXE) --layout $(CSHARP_BUILD)/layout.txt --exports $(CSHARP_BUILD)/exports.txt \
 	  --replay $(CSHARP_REPLAY) --frames $(CSHARP_FRAMES) $(addprefix --blob ,$(CSHARP_BLOBS)) --library $(LIBSMG_SO)
+	@cd $(CSHARP_PKG_TEST_DIR) && LD_LIBRARY_PATH=$(abspath $(BUILD)) SMG_TEST_BLOB=$(abspath $(DEFAULT_BLOB)) \
+	  $(NUNIT_CONSOLE) -nologo -noshadow -labels -xml=package-tests.xml Smg.Tests.Runtime.dll > package-tests.log 2>&1 \
+	  && grep -E '^(\*\*\*\*\*|Tests run)' package-tests.log \
+	  || { cat package-tests.log; echo "test-csharp: FAILED: package tests (bindings/unity/Tests/Runtime)"; exit 1; }
 
 bench-csharp: $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) $(LIBSMG_SO) $(DEFAULT_BLOB)
 	$(CSHARP_RUN) $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) 7 $(DEFAULT_BLOB) $(wildcard $(CMU_BLOB))

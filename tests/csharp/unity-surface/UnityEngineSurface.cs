@@ -24,6 +24,7 @@ namespace UnityEngine
 
     public class Behaviour : Component
     {
+        public extern bool enabled { get; set; }
     }
 
     public class MonoBehaviour : Behaviour
@@ -129,7 +130,23 @@ namespace UnityEngine
     {
         public static extern void Log(object message);
         public static extern void LogError(object message);
+        public static extern void LogError(object message, Object context);
         public static extern void LogWarning(object message, Object context);
+    }
+
+    public enum RuntimeInitializeLoadType
+    {
+        AfterSceneLoad = 0,
+        BeforeSceneLoad = 1,
+        AfterAssembliesLoaded = 2,
+        BeforeSplashScreen = 3,
+        SubsystemRegistration = 4,
+    }
+
+    [AttributeUsage(AttributeTargets.Method, AllowMultiple = false)]
+    public class RuntimeInitializeOnLoadMethodAttribute : Attribute
+    {
+        public extern RuntimeInitializeOnLoadMethodAttribute(RuntimeInitializeLoadType loadType);
     }
 
     public class Gizmos
