@@ -13,8 +13,8 @@
 #                        frame; the Unity layer and sample type-checked
 #   make bench-csharp    (part of `make bench`) managed step + pose per
 #                        character vs the same calls from C, medians, ratio
-#   make unity-package   puts the Linux libsmg.so into the package's
-#                        Plugins/Linux/x86_64 (git-ignored) for Unity
+#   make unity-package   the installable package in build/unity/package
+#                        (add it from disk; `make dist` packs it)
 
 MCS ?= mcs
 MONO ?= mono
@@ -112,7 +112,16 @@ test-csharp: $(CSHARP_SAMPLE_DLL) $(CSHARP_TEST_EXE) $(CSHARP_PKG_TEST_DLL) $(CS
 bench-csharp: $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) $(LIBSMG_SO) $(DEFAULT_BLOB)
 	$(CSHARP_RUN) $(CSHARP_BENCH_EXE) $(CSHARP_BENCH_C) 7 $(DEFAULT_BLOB) $(wildcard $(CMU_BLOB))
 
-unity-package: $(LIBSMG_SO)
-	@mkdir -p $(UNITY_DIR)/Plugins/Linux/x86_64
-	cp $(LIBSMG_SO) $(UNITY_DIR)/Plugins/Linux/x86_64/libsmg.so
-	@echo "unity-package: $(UNITY_DIR) is ready to add from disk (Linux plugin only; README.md: other platforms)"
+# The installable package, staged in $(UNITY_STAGE) (Unity's tarball root
+# is a folder named "package"): the sources plus LICENSE.md, both native
+# plugins, the sample's graph and scene and a .meta for every asset
+# (tools/unity_package.py). The Windows DLL comes from mk/windows.mk,
+# included after this file: named by path here.
+UNITY_STAGE := $(BUILD)/unity/package
+UNITY_SRC := $(shell find $(UNITY_DIR) -type f 2>/dev/null)
+UNITY_WIN_DLL := $(BUILD)/windows/libsmg.dll
+
+unity-package: $(UNITY_STAGE)/package.json
+$(UNITY_STAGE)/package.json: $(UNITY_SRC) tools/unity_package.py LICENSE include/smg.h $(LIBSMG_SO) $(UNITY_WIN_DLL) $(DEFAULT_BLOB)
+	python3 tools/unity_package.py --src $(UNITY_DIR) --out $(UNITY_STAGE) --header include/smg.h \
+	  --license LICENSE --linux-so $(LIBSMG_SO) --windows-dll $(UNITY_WIN_DLL) --graph $(DEFAULT_BLOB)
