@@ -45,6 +45,7 @@ dist-linux: $(LIBSMG_A) $(LIBSMG_SO) $(LIBSMG_BAKE_A) $(SMG_BAKE) $(SMG_SYNTH)
 	@rm -rf $(DIST_STAGE)/linux && mkdir -p $(DIST_STAGE)/linux $(DIST_DIR)
 	$(MAKE) --no-print-directory install PREFIX=/usr DESTDIR=$(abspath $(DIST_STAGE)/linux/root) >/dev/null
 	@mv $(DIST_STAGE)/linux/root/usr $(DIST_STAGE)/linux/$(DIST_LINUX)
+	@strip --strip-unneeded $(DIST_STAGE)/linux/$(DIST_LINUX)/lib/libsmg.so.$(LIB_VERSION) $(DIST_STAGE)/linux/$(DIST_LINUX)/bin/*
 	@sed -i 's|^prefix=.*|prefix=$${pcfiledir}/../..|; s|^libdir=.*|libdir=$${prefix}/lib|; s|^includedir=.*|includedir=$${prefix}/include|' \
 	  $(DIST_STAGE)/linux/$(DIST_LINUX)/lib/pkgconfig/*.pc
 	@cp -r $(DIST_DOCS) $(DIST_STAGE)/linux/$(DIST_LINUX)/
@@ -69,12 +70,12 @@ dist-windows: $(DIST_WIN_FILES)
 	  find $(DIST_WINDOWS) | LC_ALL=C sort | zip -X -q -@ $(abspath $(DIST_DIR))/$(DIST_WINDOWS).zip
 
 dist-unity: $(DIST_DIR)/$(DIST_UNITY)
-$(DIST_DIR)/$(DIST_UNITY): $(DIST_UNITY_STAGE)/package.json
+$(DIST_DIR)/$(DIST_UNITY): $(DIST_UNITY_STAGE).stamp
 	@mkdir -p $(DIST_DIR)
 	$(DIST_TAR) -C $(dir $(DIST_UNITY_STAGE)) -cf - package | gzip -n9 > $@
 
 # the tarball is checked as a user would get it, from a build of its own
-test-unity-package: $(DIST_UNITY_STAGE)/package.json
+test-unity-package: $(DIST_UNITY_STAGE).stamp
 	@rm -rf $(DIST_STAGE)/unity-test && mkdir -p $(DIST_STAGE)/unity-test
 	@$(DIST_TAR) -C $(dir $(DIST_UNITY_STAGE)) -cf - package | gzip -n9 > $(DIST_STAGE)/unity-test/$(DIST_UNITY)
 	@python3 tests/dist/check_unity_tarball.py $(DIST_STAGE)/unity-test/$(DIST_UNITY) $(SMG_VERSION_STR)

@@ -121,7 +121,8 @@ UNITY_STAGE := $(BUILD)/unity/package
 UNITY_SRC := $(shell find $(UNITY_DIR) -type f 2>/dev/null)
 UNITY_WIN_DLL := $(BUILD)/windows/libsmg.dll
 
-unity-package: $(UNITY_STAGE)/package.json
-$(UNITY_STAGE)/package.json: $(UNITY_SRC) tools/unity_package.py LICENSE include/smg.h $(LIBSMG_SO) $(UNITY_WIN_DLL) $(DEFAULT_BLOB)
+unity-package: $(UNITY_STAGE).stamp
+$(UNITY_STAGE).stamp: $(UNITY_SRC) tools/unity_package.py LICENSE include/smg.h $(LIBSMG_SO) $(UNITY_WIN_DLL) $(DEFAULT_BLOB)
 	python3 tools/unity_package.py --src $(UNITY_DIR) --out $(UNITY_STAGE) --header include/smg.h \
 	  --license LICENSE --linux-so $(LIBSMG_SO) --windows-dll $(UNITY_WIN_DLL) --graph $(DEFAULT_BLOB)
+	@touch $@

@@ -26,6 +26,9 @@ WIN_CPPFLAGS := -D__USE_MINGW_ANSI_STDIO=1 $(CPPFLAGS_COMMON)
 WIN_CFLAGS_LIB := $(CSTD) $(WARN) $(OPT) $(MATHFLAGS) $(WIN_CPPFLAGS) -Ilibsmg/runtime
 WIN_CFLAGS_TOOL := $(CSTD) $(WARN) $(OPT) $(WIN_CPPFLAGS) -Ilibsmg/bake -Ilibsmg/runtime
 WIN_LDFLAGS_EXE := -static
+# what ships (the DLL and the two programs) is linked stripped, and without
+# the link time in its PE header, so the same sources give the same bytes
+WIN_LDFLAGS_SHIP := -s -Wl,--no-insert-timestamp
 
 WIN_LIBSMG_DLL := $(WIN_BUILD)/libsmg.dll
 WIN_LIBSMG_IMPLIB := $(WIN_BUILD)/libsmg.dll.a
@@ -82,7 +85,7 @@ $(WIN_BUILD)/obj/libsmg/bake/%.o: libsmg/bake/%.c $(LIB_HDR) $(BAKE_HDR)
 
 # libgcc inside the DLL: users ship libsmg.dll alone
 $(WIN_LIBSMG_DLL): $(WIN_DLL_OBJ)
-	$(WIN_CC) -shared -static-libgcc -Wl,--out-implib,$(WIN_LIBSMG_IMPLIB) -o $@ $^
+	$(WIN_CC) -shared -static-libgcc $(WIN_LDFLAGS_SHIP) -Wl,--out-implib,$(WIN_LIBSMG_IMPLIB) -o $@ $^
 $(WIN_LIBSMG_IMPLIB): $(WIN_LIBSMG_DLL)
 
 $(WIN_LIBSMG_A): $(WIN_LIB_OBJ)
@@ -96,10 +99,10 @@ $(WIN_LIBSMG_BAKE_A): $(WIN_BAKE_OBJ)
 	$(WIN_AR) rcs $@ $^
 
 $(WIN_SMG_SYNTH): tools/smg_synth.c $(WIN_LIBSMG_A) include/smg.h
-	$(WIN_CC) $(WIN_CFLAGS_TOOL) $(WIN_LDFLAGS_EXE) $< -o $@ $(WIN_LIBSMG_A)
+	$(WIN_CC) $(WIN_CFLAGS_TOOL) $(WIN_LDFLAGS_EXE) $(WIN_LDFLAGS_SHIP) $< -o $@ $(WIN_LIBSMG_A)
 
 $(WIN_SMG_BAKE): tools/smg_bake.c $(WIN_LIBSMG_BAKE_A) $(WIN_LIBSMG_A) $(LIB_HDR) $(BAKE_HDR)
-	$(WIN_CC) $(WIN_CFLAGS_TOOL) $(WIN_LDFLAGS_EXE) $< -o $@ $(WIN_LIBSMG_BAKE_A) $(WIN_LIBSMG_A) -lpthread
+	$(WIN_CC) $(WIN_CFLAGS_TOOL) $(WIN_LDFLAGS_EXE) $(WIN_LDFLAGS_SHIP) $< -o $@ $(WIN_LIBSMG_BAKE_A) $(WIN_LIBSMG_A) -lpthread
 
 $(WIN_HARNESS_OBJ): tests/windows/cmocka_harness.c tests/windows/cmocka.h
 	@mkdir -p $(dir $@)
