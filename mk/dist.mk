@@ -52,13 +52,14 @@ dist-linux: $(LIBSMG_A) $(LIBSMG_SO) $(LIBSMG_BAKE_A) $(SMG_BAKE) $(SMG_SYNTH)
 	$(DIST_TAR) -C $(DIST_STAGE)/linux -cf - $(DIST_LINUX) | gzip -n9 > $(DIST_DIR)/$(DIST_LINUX).tar.gz
 
 # MinGW users link the import library (-lsmg finds libsmg.dll.a) or
-# libsmg.a; MSVC users link libsmg.dll through their own import library
+# libsmg.a; MSVC users make an import library from libsmg.def
 # (docs/windows.md).
 dist-windows: $(DIST_WIN_FILES)
 	@rm -rf $(DIST_STAGE)/windows && mkdir -p $(DIST_STAGE)/windows/$(DIST_WINDOWS) $(DIST_DIR)
 	@cd $(DIST_STAGE)/windows/$(DIST_WINDOWS) && mkdir -p bin lib/pkgconfig include
 	cp $(DIST_WIN_BUILD)/libsmg.dll $(DIST_WIN_BUILD)/smg-synth.exe $(DIST_WIN_BUILD)/smg-bake.exe $(DIST_STAGE)/windows/$(DIST_WINDOWS)/bin/
-	cp $(DIST_WIN_BUILD)/libsmg.dll.a $(DIST_WIN_BUILD)/libsmg.a $(DIST_WIN_BUILD)/libsmg_bake.a $(DIST_STAGE)/windows/$(DIST_WINDOWS)/lib/
+	cp $(DIST_WIN_BUILD)/libsmg.dll.a $(DIST_WIN_BUILD)/libsmg.def $(DIST_WIN_BUILD)/libsmg.a $(DIST_WIN_BUILD)/libsmg_bake.a \
+	  $(DIST_STAGE)/windows/$(DIST_WINDOWS)/lib/
 	cp include/smg.h include/smg_bake.h $(DIST_STAGE)/windows/$(DIST_WINDOWS)/include/
 	@printf '%s\n' 'prefix=$${pcfiledir}/../..' 'libdir=$${prefix}/lib' 'includedir=$${prefix}/include' '' \
 	  'Name: smg' 'Description: Splicing Motion Graphs runtime (path-following characters from motion capture)' \

@@ -2,7 +2,8 @@
 # Wine (docs/windows.md).
 #
 #   make windows       $(WIN_BUILD)/libsmg.dll (+ libsmg.dll.a import
-#                      library), libsmg.a, smg-synth.exe, smg-bake.exe
+#                      library, libsmg.def), libsmg.a, smg-synth.exe,
+#                      smg-bake.exe
 #   make test-windows  (part of `make test`) libsmg.dll exports only smg_*;
 #                      the runtime and core unit tests as Windows programs
 #                      under Wine; smg-synth.exe writes the same bytes as
@@ -32,6 +33,8 @@ WIN_LDFLAGS_SHIP := -s -Wl,--no-insert-timestamp
 
 WIN_LIBSMG_DLL := $(WIN_BUILD)/libsmg.dll
 WIN_LIBSMG_IMPLIB := $(WIN_BUILD)/libsmg.dll.a
+# the export list, for MSVC's `lib /def:libsmg.def` (docs/windows.md)
+WIN_LIBSMG_DEF := $(WIN_BUILD)/libsmg.def
 WIN_LIBSMG_A := $(WIN_BUILD)/libsmg.a
 WIN_LIBSMG_BAKE_A := $(WIN_BUILD)/libsmg_bake.a
 WIN_SMG_SYNTH := $(WIN_BUILD)/smg-synth.exe
@@ -85,8 +88,9 @@ $(WIN_BUILD)/obj/libsmg/bake/%.o: libsmg/bake/%.c $(LIB_HDR) $(BAKE_HDR)
 
 # libgcc inside the DLL: users ship libsmg.dll alone
 $(WIN_LIBSMG_DLL): $(WIN_DLL_OBJ)
-	$(WIN_CC) -shared -static-libgcc $(WIN_LDFLAGS_SHIP) -Wl,--out-implib,$(WIN_LIBSMG_IMPLIB) -o $@ $^
-$(WIN_LIBSMG_IMPLIB): $(WIN_LIBSMG_DLL)
+	$(WIN_CC) -shared -static-libgcc $(WIN_LDFLAGS_SHIP) -Wl,--out-implib,$(WIN_LIBSMG_IMPLIB) \
+	  -Wl,--output-def,$(WIN_LIBSMG_DEF) -o $@ $^
+$(WIN_LIBSMG_IMPLIB) $(WIN_LIBSMG_DEF): $(WIN_LIBSMG_DLL)
 
 $(WIN_LIBSMG_A): $(WIN_LIB_OBJ)
 	@mkdir -p $(dir $@)
