@@ -10,7 +10,9 @@
 #                        has the CMU clips), error paths, handle lifetime
 #                        under GC churn, threads, the left-handed frame
 #                        conversion vs libsmg's matrices, no allocation per
-#                        frame; the Unity layer and sample type-checked
+#                        frame; the Unity layer and sample type-checked;
+#                        the package's NUnit tests (Tests/Runtime) run
+#                        with nunit-console
 #   make bench-csharp    (part of `make bench`) managed step + pose per
 #                        character vs the same calls from C, medians, ratio
 #   make unity-package   the installable package in build/unity/package
