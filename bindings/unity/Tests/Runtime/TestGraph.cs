@@ -1,7 +1,6 @@
 // The graph blob the package tests load: $SMG_TEST_BLOB (make test-csharp
 // sets it), else the synthetic default graph the package's sample carries
-// (Samples~/PathFollower/Graph, read in place from the package folder,
-// which is where Unity's Test Runner runs from).
+// (Samples~/PathFollower/Graph, read in place from the package's folder).
 using System;
 using System.IO;
 using NUnit.Framework;
@@ -17,9 +16,12 @@ namespace Smg.Tests
             get
             {
                 string env = Environment.GetEnvironmentVariable("SMG_TEST_BLOB");
-                string path = !string.IsNullOrEmpty(env) ? env : InPackage;
+                // Unity resolves a package's "Packages/NAME/..." path to
+                // where the package really is (its cache, a local folder)
+                // in Path.GetFullPath
+                string path = System.IO.Path.GetFullPath(!string.IsNullOrEmpty(env) ? env : InPackage);
                 if (!File.Exists(path))
-                    Assert.Ignore("no graph blob at " + System.IO.Path.GetFullPath(path) + " (set SMG_TEST_BLOB)");
+                    Assert.Ignore("no graph blob at " + path + " (set SMG_TEST_BLOB)");
                 return path;
             }
         }
