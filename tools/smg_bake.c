@@ -22,6 +22,17 @@
 #include "smg_bake.h"
 #include "smg_format.h"
 
+/* A buffer aligned as the blob reader requires (16 bytes). 64-bit
+ * Windows has no posix_memalign, and its malloc already aligns to 16. */
+static void* alloc16(size_t size) {
+#ifdef _WIN32
+  return malloc(size);
+#else
+  void* p;
+  return posix_memalign(&p, 16, size) == 0 ? p : NULL;
+#endif
+}
+
 static void usage(FILE* fp) {
   fprintf(fp,
       "usage: smg-bake -m MANIFEST -o OUT.smg [options]\n"
@@ -163,7 +174,8 @@ static int info(const char* path) {
     fclose(f);
     return 1;
   }
-  if (posix_memalign(&data, 16, size > 0 ? (size_t)size : 16) != 0) {
+  data = alloc16(size > 0 ? (size_t)size : 16);
+  if (!data) {
     fclose(f);
     fprintf(stderr, "smg-bake: out of memory\n");
     return 1;

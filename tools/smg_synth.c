@@ -340,7 +340,7 @@ int main(int argc, char** argv) {
     goto done;
   }
   if (csv_file) {
-    csv = fopen(csv_file, "w");
+    csv = fopen(csv_file, "wb");
     if (!csv) {
       fprintf(stderr, "smg-synth: cannot write %s\n", csv_file);
       goto done;
@@ -374,7 +374,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  out = fopen(out_file, "w");
+  out = fopen(out_file, "wb");
   if (!out) {
     fprintf(stderr, "smg-synth: cannot write %s: %s\n", out_file,
             strerror(errno));

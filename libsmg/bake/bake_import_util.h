@@ -16,14 +16,13 @@
 #include <stdio.h>
 
 #include "bake_report.h"
+#include "printf_check.h"
 
 #define SMGB_PI 3.14159265358979323846
 
 /* Printf into err->message (err may be NULL). */
 static inline void smgb_imp_errorf(smgb_error* err, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    SMG_PRINTF_CHECK(2, 3)
     ;
 static inline void smgb_imp_errorf(smgb_error* err, const char* fmt, ...) {
   va_list ap;

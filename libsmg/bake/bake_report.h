@@ -20,6 +20,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "printf_check.h"
 #include "smg_bake.h"
 
 /* Error detail filled by failing importers: file, line and problem. */
@@ -55,14 +56,10 @@ void smgb_report_free(smgb_report* r);
 
 /* Record an error / a warning (printf format). */
 void smgb_fail(smgb_report* r, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    SMG_PRINTF_CHECK(2, 3)
     ;
 void smgb_warn(smgb_report* r, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    SMG_PRINTF_CHECK(2, 3)
     ;
 
 /* Problems recorded from now on start with "PLACE: " (e.g. "clip 3

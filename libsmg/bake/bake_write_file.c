@@ -7,9 +7,50 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#ifdef _WIN32
+#include <io.h>
+#include <windows.h>
+#endif
 
 #include "bake_desc.h"
 #include "smg_bake.h"
+
+/* The platform parts of writing a file in place. Windows has no file mode
+ * bits to keep, flushes a descriptor with _commit, and its rename() refuses
+ * an existing target: MoveFileEx replaces it (one call, atomic on NTFS
+ * within a directory). */
+#ifdef _WIN32
+static void keep_mode(int fd, const char* path) {
+  (void)fd;
+  (void)path;
+}
+static int sync_fd(int fd) { return _commit(fd); }
+static int replace_file(const char* from, const char* to) {
+  return MoveFileExA(from, to, MOVEFILE_REPLACE_EXISTING |
+                                   MOVEFILE_WRITE_THROUGH) ? 0 : -1;
+}
+static const char* path_base(const char* path) {
+  const char* slash = strrchr(path, '/');
+  const char* back = strrchr(path, '\\');
+  if (back && (!slash || back > slash)) slash = back;
+  return slash ? slash + 1 : path;
+}
+#else
+/* mkstemp makes it private (0600): keep the old file's mode, else the
+ * usual 0644 */
+static void keep_mode(int fd, const char* path) {
+  struct stat st;
+  fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644);
+}
+static int sync_fd(int fd) { return fsync(fd); }
+static int replace_file(const char* from, const char* to) {
+  return rename(from, to);
+}
+static const char* path_base(const char* path) {
+  const char* slash = strrchr(path, '/');
+  return slash ? slash + 1 : path;
+}
+#endif
 
 /* The blob goes to a fresh temporary file beside `path` (same directory,
  * so the rename cannot cross file systems), is flushed to the disk, and
@@ -21,7 +62,6 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
                                size_t error_size) {
   char tmp[4096];
   const char* base;
-  struct stat st;
   FILE* f;
   size_t n;
   int fd, ok;
@@ -32,8 +72,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
       snprintf(error, error_size, "smg_bake_write_file: no blob or no path");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  base = strrchr(path, '/');
-  base = base ? base + 1 : path;
+  base = path_base(path);
   if (snprintf(tmp, sizeof tmp, "%.*s.%s.XXXXXX", (int)(base - path), path,
                base) >= (int)sizeof tmp) {
     if (error && error_size)
@@ -47,9 +86,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
                path, strerror(errno));
     return SMG_ERROR_IO;
   }
-  /* mkstemp makes it private (0600): keep the old file's mode, else the
-   * usual 0644 */
-  fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644);
+  keep_mode(fd, path);
   f = fdopen(fd, "wb");
   if (!f) {
     close(fd);
@@ -59,7 +96,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
     return SMG_ERROR_IO;
   }
   n = fwrite(result->blob, 1, result->blob_size, f);
-  ok = n == result->blob_size && fflush(f) == 0 && fsync(fd) == 0;
+  ok = n == result->blob_size && fflush(f) == 0 && sync_fd(fd) == 0;
   if (fclose(f) != 0 || !ok) {
     remove(tmp);
     if (error && error_size)
@@ -67,7 +104,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
                "unchanged", tmp, path);
     return SMG_ERROR_IO;
   }
-  if (rename(tmp, path) != 0) {
+  if (replace_file(tmp, path) != 0) {
     remove(tmp);
     if (error && error_size)
       snprintf(error, error_size, "%s: cannot rename to %s", tmp, path);

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "blob.h"
+#include "printf_check.h"
 #include "quat_pack.h"
 
 /* Largest section alignment accepted (powers of two from 16 up to this). */
@@ -35,9 +36,7 @@ typedef struct reader {
   size_t error_size;
 } reader;
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 3, 4)))
-#endif
+SMG_PRINTF_CHECK(3, 4)
 static smg_result fail(reader* r, smg_result code, const char* fmt, ...) {
   va_list ap;
   if (r->error && r->error_size > 0) {

@@ -4,13 +4,12 @@
 #ifndef SMG_LOG_H
 #define SMG_LOG_H
 
+#include "printf_check.h"
 #include "smg.h"
 
 /* Logging through an optional logger; printf-style, one line. */
 void smgi_log(const smg_logger* logger, unsigned level, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
+    SMG_PRINTF_CHECK(3, 4)
     ;
 
 #endif /* SMG_LOG_H */

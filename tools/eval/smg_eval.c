@@ -159,7 +159,13 @@ static void write_header(eval_ctx* ctx, const char* shared) {
           "| Commit | `%s%s` |\n"
           "| Date | %s |\n"
           "| Load average (1/5/15 min) at start | %s |\n"
-          "| Data | `%s` (%s); `%s` (%s) |\n\n",
+          "| Data | `%s` (%s); `%s` (%s) |\n"
+          "| Data licences | CMU: \"The data used in this project was "
+          "obtained from mocap.cs.cmu.edu. The database was created with "
+          "funding from NSF EIA-0196217.\" Bandai Namco: Bandai Namco "
+          "Research Motion Dataset, Bandai Namco Research Inc., CC BY-NC-ND "
+          "4.0; its clips are read at run time, never redistributed. "
+          "libsmg's MIT licence covers the code, not the data |\n\n",
           cpu, cores, mem, kernel[0] ? kernel : "unknown OS",
           commit[0] ? commit : "unknown", dirty[0] ? "-dirty" : "", date,
           load[0] ? load : "unknown", data,

@@ -19,21 +19,36 @@ namespace UnityEngine
     public class Component : Object
     {
         public extern Transform transform { get; }
+        public extern GameObject gameObject { get; }
+        public extern T GetComponent<T>();
         public extern T[] GetComponentsInChildren<T>(bool includeInactive);
     }
 
     public class Behaviour : Component
     {
+        public extern bool enabled { get; set; }
     }
 
     public class MonoBehaviour : Behaviour
     {
     }
 
+    public sealed class GameObject : Object
+    {
+        public extern GameObject(string name);
+        public extern Transform transform { get; }
+        public extern T AddComponent<T>() where T : Component;
+    }
+
     public class Transform : Component
     {
         public extern Vector3 position { get; set; }
         public extern Quaternion rotation { get; set; }
+        public extern Vector3 localPosition { get; set; }
+        public extern Quaternion localRotation { get; set; }
+        public extern Matrix4x4 worldToLocalMatrix { get; }
+        public extern Matrix4x4 localToWorldMatrix { get; }
+        public extern void SetParent(Transform parent, bool worldPositionStays);
         public extern Vector3 eulerAngles { get; set; }
         public extern void SetPositionAndRotation(Vector3 position, Quaternion rotation);
         public extern Vector3 TransformPoint(Vector3 position);
@@ -46,12 +61,54 @@ namespace UnityEngine
 
     public class Renderer : Component
     {
+        public extern Material sharedMaterial { get; set; }
+    }
+
+    public class SkinnedMeshRenderer : Renderer
+    {
+        public extern Mesh sharedMesh { get; set; }
+        public extern Transform[] bones { get; set; }
+        public extern Transform rootBone { get; set; }
+        public extern bool updateWhenOffscreen { get; set; }
+    }
+
+    public sealed class Mesh : Object
+    {
+        public extern Mesh();
+        public extern Vector3[] vertices { get; set; }
+        public extern int[] triangles { get; set; }
+        public extern BoneWeight[] boneWeights { get; set; }
+        public extern Matrix4x4[] bindposes { get; set; }
+        public extern void RecalculateNormals();
+        public extern void RecalculateBounds();
+    }
+
+    public struct BoneWeight
+    {
+        public extern int boneIndex0 { get; set; }
+        public extern float weight0 { get; set; }
+    }
+
+    public struct Matrix4x4
+    {
+        public static extern Matrix4x4 operator *(Matrix4x4 lhs, Matrix4x4 rhs);
+    }
+
+    public class Material : Object
+    {
+        public extern Material(Shader shader);
+    }
+
+    public sealed class Shader : Object
+    {
+        public static extern Shader Find(string name);
     }
 
     public class LineRenderer : Renderer
     {
         public extern int positionCount { get; set; }
         public extern bool useWorldSpace { get; set; }
+        public extern float widthMultiplier { get; set; }
         public extern int GetPositions(Vector3[] positions);
         public extern Vector3 GetPosition(int index);
         public extern void SetPosition(int index, Vector3 position);
@@ -77,13 +134,20 @@ namespace UnityEngine
         public static extern Vector3 Lerp(Vector3 a, Vector3 b, float t);
         public static extern float Distance(Vector3 a, Vector3 b);
         public static extern Vector3 up { get; }
+        public static extern Vector3 right { get; }
+        public extern float magnitude { get; }
+        public extern Vector3 normalized { get; }
+        public static extern Vector3 Cross(Vector3 lhs, Vector3 rhs);
         public static extern Vector3 operator +(Vector3 a, Vector3 b);
+        public static extern Vector3 operator -(Vector3 a, Vector3 b);
+        public static extern Vector3 operator *(Vector3 a, float d);
     }
 
     public struct Quaternion
     {
         public float x, y, z, w;
         public extern Quaternion(float x, float y, float z, float w);
+        public static extern Quaternion identity { get; }
         public static extern Quaternion Inverse(Quaternion rotation);
         public static extern Quaternion Euler(float x, float y, float z);
         public static extern Quaternion operator *(Quaternion lhs, Quaternion rhs);
@@ -111,6 +175,8 @@ namespace UnityEngine
         public static extern float Clamp(float value, float min, float max);
         public static extern int Max(int a, int b);
         public static extern float Min(float a, float b);
+        public static extern float Max(float a, float b);
+        public static extern float Abs(float f);
         public static extern float Sin(float f);
         public static extern int NextPowerOfTwo(int value);
     }
@@ -129,7 +195,23 @@ namespace UnityEngine
     {
         public static extern void Log(object message);
         public static extern void LogError(object message);
+        public static extern void LogError(object message, Object context);
         public static extern void LogWarning(object message, Object context);
+    }
+
+    public enum RuntimeInitializeLoadType
+    {
+        AfterSceneLoad = 0,
+        BeforeSceneLoad = 1,
+        AfterAssembliesLoaded = 2,
+        BeforeSplashScreen = 3,
+        SubsystemRegistration = 4,
+    }
+
+    [AttributeUsage(AttributeTargets.Method, AllowMultiple = false)]
+    public class RuntimeInitializeOnLoadMethodAttribute : Attribute
+    {
+        public extern RuntimeInitializeOnLoadMethodAttribute(RuntimeInitializeLoadType loadType);
     }
 
     public class Gizmos
@@ -170,5 +252,11 @@ namespace UnityEngine
     [AttributeUsage(AttributeTargets.Class, Inherited = false, AllowMultiple = false)]
     public sealed class DisallowMultipleComponent : Attribute
     {
+    }
+
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true, Inherited = true)]
+    public sealed class RequireComponent : Attribute
+    {
+        public extern RequireComponent(Type requiredComponent);
     }
 }

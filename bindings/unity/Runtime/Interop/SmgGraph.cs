@@ -35,6 +35,9 @@ namespace Smg
         SmgHookContext hooks;
         IntPtr blobBlock; // aligned copy of the bytes given to LoadMemory
         uint jointCount;
+        readonly SmgNameIndex jointIndex = new SmgNameIndex();
+        readonly SmgNameIndex styleIndex = new SmgNameIndex();
+        readonly SmgNameIndex actionIndex = new SmgNameIndex();
 
         SmgGraph() : base(IntPtr.Zero, true)
         {
@@ -156,9 +159,12 @@ namespace Smg
         }
 
         /// <summary>Joint index by name; false when the skeleton has no
-        /// such joint.</summary>
+        /// such joint. Allocates nothing after a name's first lookup.</summary>
         public bool TryFindJoint(string name, out int index)
         {
+            ThrowIfDisposed();
+            if (jointIndex.TryGet(name, out index))
+                return index >= 0;
             byte[] utf8 = SmgUtf8.Encode(name);
             uint i;
             SmgResult r;
@@ -166,8 +172,12 @@ namespace Smg
                 r = SmgNative.smg_graph_find_joint(this, p, out i);
             index = r == SmgResult.Ok ? (int)i : -1;
             if (r == SmgResult.ErrorNotFound)
+            {
+                jointIndex.Add(name, -1);
                 return false;
+            }
             SmgException.Check(r, "smg_graph_find_joint");
+            jointIndex.Add(name, index);
             return true;
         }
 
@@ -179,13 +189,19 @@ namespace Smg
         }
 
         /// <summary>Style index by name (SmgException ErrorUnknownStyle
-        /// when the graph has none).</summary>
+        /// when the graph has none). Allocates nothing after a name's first
+        /// successful lookup.</summary>
         public uint FindStyle(string name)
         {
+            int known;
+            ThrowIfDisposed();
+            if (styleIndex.TryGet(name, out known))
+                return (uint)known;
             byte[] utf8 = SmgUtf8.Encode(name);
             uint style;
             fixed (byte* p = utf8)
                 SmgException.Check(SmgNative.smg_graph_find_style(this, p, out style), "smg_graph_find_style");
+            styleIndex.Add(name, (int)style);
             return style;
         }
 
@@ -197,14 +213,28 @@ namespace Smg
         }
 
         /// <summary>Action index by name (SmgException ErrorUnknownAction
-        /// when the graph has none).</summary>
+        /// when the graph has none). Allocates nothing after a name's first
+        /// successful lookup.</summary>
         public uint FindAction(string name)
         {
+            int known;
+            ThrowIfDisposed();
+            if (actionIndex.TryGet(name, out known))
+                return (uint)known;
             byte[] utf8 = SmgUtf8.Encode(name);
             uint action;
             fixed (byte* p = utf8)
                 SmgException.Check(SmgNative.smg_graph_find_action(this, p, out action), "smg_graph_find_action");
+            actionIndex.Add(name, (int)action);
             return action;
+        }
+
+        // what a call through the disposed handle would throw, also when the
+        // answer is remembered
+        void ThrowIfDisposed()
+        {
+            if (IsClosed)
+                throw new ObjectDisposedException(nameof(SmgGraph));
         }
 
         /// <summary>Bytes a character with this desc would allocate.</summary>

@@ -5,6 +5,7 @@
 // character alive until the lease is disposed; nothing here checks it.
 using System;
 using System.Runtime.InteropServices;
+using System.Threading;
 
 namespace Smg
 {
@@ -25,13 +26,15 @@ namespace Smg
         public static extern SmgResult smg_character_get_model_matrices(IntPtr character, SmgSpace space, float* matrices, uint jointCount);
     }
 
-    /// <summary>A character's native pointer, valid (the character cannot
-    /// be released) until Dispose. A struct so that jobs can hold the
-    /// pointer; dispose each lease exactly once.</summary>
-    public struct SmgCharacterPointer : IDisposable
+    /// <summary>A lease on a character's native pointer: the character
+    /// cannot be released until the lease is disposed (or, when forgotten,
+    /// finalized). A class, so copies share one lease and a second Dispose
+    /// does nothing. Jobs, which may hold only blittable fields, take
+    /// <c>Value</c> (an IntPtr) and the lease stays with managed code.</summary>
+    public sealed class SmgCharacterPointer : IDisposable
     {
         public readonly IntPtr Value;
-        readonly SmgCharacter owner;
+        SmgCharacter owner;
 
         internal SmgCharacterPointer(IntPtr value, SmgCharacter owner)
         {
@@ -39,9 +42,25 @@ namespace Smg
             this.owner = owner;
         }
 
+        /// <summary>True until the first Dispose.</summary>
+        public bool IsHeld => Volatile.Read(ref owner) != null;
+
         public void Dispose()
         {
-            owner?.DangerousRelease();
+            Release();
+            GC.SuppressFinalize(this);
+        }
+
+        ~SmgCharacterPointer()
+        {
+            Release();
+        }
+
+        // exactly one caller gets the owner, however many threads dispose
+        void Release()
+        {
+            SmgCharacter o = Interlocked.Exchange(ref owner, null);
+            o?.DangerousRelease();
         }
     }
 }

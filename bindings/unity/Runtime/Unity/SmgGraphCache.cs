@@ -1,8 +1,11 @@
-// One SmgGraph per graph asset, shared by every component that uses it
-// (a graph is immutable and shareable; loading it once per character would
-// waste its memory). Counted: the last Release disposes it, and the native
-// graph then goes away with its last character (SmgGraph's lifetime rule).
-using System.Collections.Generic;
+// One SmgGraph per graph asset, shared by every component that uses it,
+// through this domain's SmgGraphRegistry (counted and thread-safe: the
+// last Release disposes the graph; the native graph then goes away with
+// its last character).
+//
+// With domain reload off (Enter Play Mode Options), statics outlive a play
+// session: the registry is cleared when a session starts, so graphs left
+// from the last one are disposed and assets edited since are loaded again.
 using System.IO;
 using UnityEngine;
 
@@ -10,19 +13,12 @@ namespace Smg.Unity
 {
     public static class SmgGraphCache
     {
-        sealed class Entry
-        {
-            public SmgGraph Graph;
-            public int Users;
-        }
-
-        static readonly Dictionary<string, Entry> Graphs = new Dictionary<string, Entry>();
-
         /// <summary>The graph in a TextAsset (import a blob as NAME.smg.bytes
         /// so Unity makes it a TextAsset).</summary>
         public static SmgGraph Acquire(TextAsset asset)
         {
-            return Acquire("asset:" + asset.GetInstanceID(), () => SmgGraph.LoadMemory(asset.bytes, Options(asset.name)));
+            return SmgGraphRegistry.Shared.Acquire("asset:" + asset.GetInstanceID(),
+                                                   () => SmgGraph.LoadMemory(asset.bytes, Options(asset.name)));
         }
 
         /// <summary>A blob under Application.streamingAssetsPath, read as a
@@ -32,34 +28,18 @@ namespace Smg.Unity
         public static SmgGraph AcquireStreamingAsset(string relativePath)
         {
             string path = Path.Combine(Application.streamingAssetsPath, relativePath);
-            return Acquire("file:" + path, () => SmgGraph.LoadFile(path, Options(relativePath)));
+            return SmgGraphRegistry.Shared.Acquire("file:" + path, () => SmgGraph.LoadFile(path, Options(relativePath)));
         }
 
         public static void Release(SmgGraph graph)
         {
-            foreach (var pair in Graphs)
-            {
-                if (pair.Value.Graph != graph)
-                    continue;
-                if (--pair.Value.Users == 0)
-                {
-                    Graphs.Remove(pair.Key);
-                    graph.Dispose();
-                }
-                return;
-            }
+            SmgGraphRegistry.Shared.Release(graph);
         }
 
-        static SmgGraph Acquire(string key, System.Func<SmgGraph> load)
+        [RuntimeInitializeOnLoadMethod(RuntimeInitializeLoadType.SubsystemRegistration)]
+        static void StartSession()
         {
-            Entry e;
-            if (!Graphs.TryGetValue(key, out e))
-            {
-                e = new Entry { Graph = load() };
-                Graphs.Add(key, e);
-            }
-            ++e.Users;
-            return e.Graph;
+            SmgGraphRegistry.Shared.Clear();
         }
 
         // libsmg's explanation of a bad blob goes to the console.

@@ -116,9 +116,13 @@ namespace Smg.Unity
         float groundY;
         readonly List<SmgPathMarker> pendingTransitions = new List<SmgPathMarker>();
         readonly List<SmgPathMarker> pendingSplices = new List<SmgPathMarker>();
+        SmgFailOnce frameGuard;
+        Action stepFrame;
 
         void Start()
         {
+            frameGuard = new SmgFailOnce(e => Debug.LogError(name + ": SmgPathCharacter stopped: " + e, this));
+            stepFrame = StepFrame;
             Graph = LoadGraph();
             MapBones();
             Character = SmgCharacter.Create(Graph, Desc());
@@ -141,10 +145,19 @@ namespace Smg.Unity
             Graph = null;
         }
 
+        // A failure (a bad marker name, a path libsmg refuses, ...) is
+        // logged once and disables the component, instead of throwing again
+        // every frame.
         void Update()
         {
             if (Character == null)
                 return;
+            if (!frameGuard.Run(stepFrame))
+                enabled = false;
+        }
+
+        void StepFrame()
+        {
             if (pathLine != null && followLineChanges)
                 SyncLine();
             AddReachedMarkers();

@@ -25,6 +25,19 @@ namespace Smg.Samples
 
         readonly List<Vector3> points = new List<Vector3>();
 
+        // Before the character's Start: it follows this line from its
+        // first frame (a scene may leave Line empty: one is made here).
+        void Awake()
+        {
+            if (line == null)
+            {
+                line = gameObject.AddComponent<LineRenderer>();
+                line.widthMultiplier = 0.05f;
+            }
+            if (character.pathLine == null)
+                character.pathLine = line;
+        }
+
         void Start()
         {
             line.useWorldSpace = true;
