@@ -31,7 +31,7 @@ GODOT_EXT := $(GODOT_BUILD)/libsmg_godot.so
 # C11 for _Static_assert/_Alignas and the dumped header; the header itself is
 # a system include so its style does not meet our -Wpedantic -Werror.
 GODOT_CFLAGS := -std=c11 $(WARN) $(OPT) -fPIC -fvisibility=hidden -D_POSIX_C_SOURCE=200809L \
-	-Iinclude -isystem $(GODOT_API_DIR) -I$(GODOT_BUILD)/gen
+	-Iinclude -Ilibsmg/runtime -isystem $(GODOT_API_DIR) -I$(GODOT_BUILD)/gen
 GODOT_DEFAULT_SMG := $(BUILD)/default.smg
 GODOT_TEST_PROJ := $(GODOT_BUILD)/test-project
 GODOT_TEST_LOG := $(GODOT_BUILD)/test-godot.log
