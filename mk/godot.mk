@@ -217,3 +217,10 @@ $(GODOT_ADDON_ZIP): $(GODOT_EXT) $(GODOT_DLL) $(GODOT_ADDON_FILES) $(GODOT_DOCS)
 		$(GODOT_DIR)/doc_classes $(GODOT_LICENSE)
 
 godot-addon-zip: $(GODOT_ADDON_ZIP)
+
+# The zip installed into a fresh project and opened, run and inspected
+# (bindings/godot/test/addon_test.sh).
+test-godot-addon: $(GODOT_ADDON_ZIP) $(GODOT_DEFAULT_SMG)
+	@GODOT_GD="$(GODOT_GD)" GODOT_TIMEOUT=$(GODOT_TIMEOUT) WIN_OBJDUMP=$(WIN_OBJDUMP) \
+		sh $(GODOT_DIR)/test/addon_test.sh $(GODOT_ADDON_ZIP) $(GODOT_DEFAULT_SMG) $(GODOT_BUILD)/addon-test \
+		$(GODOT_LICENSE)

@@ -1,7 +1,7 @@
-/* smg_gd_docs.c - the class reference (the XML files in doc_classes/, compiled in by
- * tools/gen_docs.py) handed to the editor's help, so F1 and the inspector
- * tooltips document SmgGraph, SmgCharacter, SmgSkeletonModifier and
- * SmgGraphLoader like built-in classes. */
+/* smg_gd_docs.c - the class reference (the XML files in doc_classes/,
+ * compiled in by tools/gen_docs.py) handed to the editor's help, so F1 and
+ * the inspector tooltips document SmgGraph, SmgCharacter,
+ * SmgSkeletonModifier and SmgGraphLoader like built-in classes. */
 #include <stdint.h>
 
 #include "smg_gd_docs.h"
