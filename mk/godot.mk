@@ -194,10 +194,12 @@ $(GODOT_WIN)/obj/libsmg/%.o: libsmg/%.c $(LIB_HDR)
 
 $(GODOT_WIN)/obj/godot/%.o: $(GODOT_DIR)/src/%.c $(GODOT_HDR) $(GODOT_GEN) $(GODOT_DOCS_GEN) $(GODOT_IFACE) include/smg.h
 	@mkdir -p $(dir $@)
-	$(WIN_CC) $(filter-out -fPIC -fvisibility=hidden -D_POSIX_C_SOURCE=200809L,$(GODOT_CFLAGS)) $(GODOT_WIN_DEFS) -c $< -o $@
+	$(WIN_CC) $(GODOT_CFLAGS) $(GODOT_WIN_DEFS) -c $< -o $@
 
+# Linked stripped and without the link time in its PE header: it is built
+# for the addon zip, whose bytes depend only on the sources.
 $(GODOT_DLL): $(GODOT_WIN_OBJ) $(GODOT_WIN_LIB_OBJ)
-	$(WIN_CC) -shared -static-libgcc -Wl,--no-undefined -o $@ $^
+	$(WIN_CC) -shared -static-libgcc -s -Wl,--no-insert-timestamp -Wl,--no-undefined -o $@ $^
 
 godot-dll: $(GODOT_DLL)
 
@@ -209,11 +211,18 @@ GODOT_ADDON_VERSION := $(shell sed -n 's/^\#define SMG_VERSION_\(MAJOR\|MINOR\|P
 GODOT_ADDON_ZIP := $(BUILD)/dist/libsmg-godot-addon-$(GODOT_ADDON_VERSION).zip
 GODOT_LICENSE := $(wildcard LICENSE)
 
-$(GODOT_ADDON_ZIP): $(GODOT_EXT) $(GODOT_DLL) $(GODOT_ADDON_FILES) $(GODOT_DOCS) $(GODOT_LICENSE) \
+# The Linux library as shipped: without debug information (the one under
+# test keeps it).
+GODOT_EXT_SHIP := $(GODOT_BUILD)/ship/libsmg_godot.linux.x86_64.so
+$(GODOT_EXT_SHIP): $(GODOT_EXT)
+	@mkdir -p $(dir $@)
+	strip --strip-unneeded -o $@ $<
+
+$(GODOT_ADDON_ZIP): $(GODOT_EXT_SHIP) $(GODOT_DLL) $(GODOT_ADDON_FILES) $(GODOT_DOCS) $(GODOT_LICENSE) \
 		$(GODOT_DIR)/tools/pack_addon.py
 	@mkdir -p $(dir $@)
 	@[ -n "$(GODOT_LICENSE)" ] || echo "godot-addon-zip: warning: no LICENSE at the repository root, none packed" >&2
-	python3 $(GODOT_DIR)/tools/pack_addon.py $@ $(GODOT_ADDON_SRC) $(GODOT_EXT) $(GODOT_DLL) \
+	python3 $(GODOT_DIR)/tools/pack_addon.py $@ $(GODOT_ADDON_SRC) $(GODOT_EXT_SHIP) $(GODOT_DLL) \
 		$(GODOT_DIR)/doc_classes $(GODOT_LICENSE)
 
 godot-addon-zip: $(GODOT_ADDON_ZIP)

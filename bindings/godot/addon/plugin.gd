@@ -7,4 +7,6 @@ extends EditorPlugin
 
 func _enter_tree() -> void:
 	if not ClassDB.class_exists("SmgCharacter"):
-		push_error("libsmg: the extension is not loaded on %s %s; this addon ships libraries for linux.x86_64 and windows.x86_64 (see addons/libsmg/smg.gdextension)" % [OS.get_name(), Engine.get_architecture_name()])
+		push_error(("libsmg: the extension is not loaded on %s %s; this addon ships libraries for "
+			+ "linux.x86_64 and windows.x86_64 (see addons/libsmg/smg.gdextension)")
+			% [OS.get_name(), Engine.get_architecture_name()])
