@@ -11,13 +11,15 @@
 #  3. the class reference in the zip describes exactly the registered API
 #     (Godot's --doctool --gdextension-docs changes nothing, nothing empty);
 #  4. the Windows DLL in the zip must be a PE32+ x86-64 DLL exporting exactly
-#     the entry symbol and importing only Windows' own DLLs (objdump -p);
+#     the entry symbol and importing only Windows' own DLLs (objdump -p), and
+#     load under Wine as Godot loads it (GODOT_DLL_LOADER, test/dll_load.c);
 #  5. the zip's LICENSE must be the repository's, when one is given.
 # Every Godot run is wrapped in `timeout` and judged by its exact pass line
 # (Godot exits 0 even after a script error).
 #
 # Environment: GODOT_GD (default ../gd), GODOT_TIMEOUT (seconds per run,
-# default 300), WIN_OBJDUMP (default x86_64-w64-mingw32-objdump).
+# default 300), WIN_OBJDUMP (default x86_64-w64-mingw32-objdump),
+# GODOT_DLL_LOADER (dll_load.exe) and GODOT_WINE (the command running it).
 set -eu
 ZIP=$1
 GRAPH=$2
@@ -27,6 +29,8 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 GD=${GODOT_GD:-$HERE/../gd}
 TMO=${GODOT_TIMEOUT:-300}
 OBJDUMP=${WIN_OBJDUMP:-x86_64-w64-mingw32-objdump}
+GODOT_WINE=${GODOT_WINE:-wine}
+GODOT_DLL_LOADER=${GODOT_DLL_LOADER:?GODOT_DLL_LOADER: the dll_load.exe to run under Wine}
 abs() { (cd "$(dirname "$1")" && printf '%s/%s\n' "$(pwd)" "$(basename "$1")"); }
 fail() { echo "test-godot-addon: $*" >&2; exit 1; }
 planned() { sed -n 's/^const PLANNED := \([0-9]*\).*/\1/p' "$1"; }
@@ -108,6 +112,14 @@ for d in $imports; do
 	esac
 done
 echo "exports: $exports; imports: $imports"
+
+echo "== the Windows DLL loaded under Wine (test/dll_load.c)"
+W=$(printf 'Z:%s' "$DLL" | tr / '\\')
+set +e
+$GODOT_WINE "$GODOT_DLL_LOADER" "$W" 2>"$PROJ/dll_load.err" | tr -d '\r' > "$PROJ/dll_load.log"
+set -e
+cat "$PROJ/dll_load.log"
+grep -qx "dll: 5 passed, 0 failed" "$PROJ/dll_load.log" || fail "the DLL did not load and answer as Godot expects under Wine"
 
 if [ -n "$LICENSE" ]; then
 	cmp -s "$LICENSE" "$PROJ/addons/libsmg/LICENSE" || fail "addons/libsmg/LICENSE is not the repository's $LICENSE"
