@@ -4,7 +4,7 @@
 #   make godot-ext         $(BUILD)/godot/libsmg_godot.so
 #   make test-godot        headless Godot test (part of `make test`)
 #   make test-godot-asan   the same with the extension and libsmg under ASan
-#   make godot-demo        copies the extension and graph into the demo project
+#   make godot-demo        installs the addon and a graph into the demo project
 #   make godot-screenshot  docs/img/godot-demo.png of the demo under Xvfb
 #   make godot-dll         $(BUILD)/godot/windows/libsmg_godot.dll (MinGW-w64)
 #   make godot-addon-zip   $(BUILD)/dist/libsmg-godot-addon-VERSION.zip, the
@@ -35,6 +35,8 @@ GODOT_OBJ := $(GODOT_SRC:$(GODOT_DIR)/src/%.c=$(GODOT_BUILD)/obj/%.o)
 GODOT_EXT := $(GODOT_BUILD)/libsmg_godot.so
 # C11 for _Static_assert/_Alignas and the dumped header; the header itself is
 # a system include so its style does not meet our -Wpedantic -Werror.
+# libsmg/runtime: the runtime's header-only quaternion math (rmath.h), which
+# the bone map shares rather than keeping a copy.
 GODOT_CFLAGS := -std=c11 $(WARN) $(OPT) -fPIC -fvisibility=hidden -D_POSIX_C_SOURCE=200809L \
 	-Iinclude -Ilibsmg/runtime -isystem $(GODOT_API_DIR) -I$(GODOT_BUILD)/gen
 GODOT_DEFAULT_SMG := $(BUILD)/default.smg
@@ -43,7 +45,7 @@ GODOT_TEST_LOG := $(GODOT_BUILD)/test-godot.log
 GODOT_TEST_EDITOR_LOG := $(GODOT_BUILD)/test-godot-editor.log
 GODOT_DEMO := $(GODOT_DIR)/demo
 # What goes into addons/libsmg/ as is (plugin.cfg, plugin.gd,
-# smg.gdextension, icons); the libraries are added by who installs it.
+# smg.gdextension, icons); whoever installs it adds the libraries.
 GODOT_ADDON_SRC := $(GODOT_DIR)/addon
 GODOT_ADDON_FILES := $(shell find $(GODOT_ADDON_SRC) -type f)
 
