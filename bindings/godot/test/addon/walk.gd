@@ -44,11 +44,14 @@ func check_install() -> void:
 		if lib != "" and FileAccess.file_exists(lib):
 			libs.append(key)
 	check(libs.size() == 4, "libraries for linux and windows, debug and release, all present (%s)" % [libs])
+	# each icon a class of ours, and an SVG Godot's renderer draws
 	var icons := []
 	for cls in cfg.get_section_keys("icons"):
-		if ClassDB.class_exists(cls) and FileAccess.file_exists(cfg.get_value("icons", cls)):
+		var icon := Image.new()
+		var svg := FileAccess.get_file_as_bytes(cfg.get_value("icons", cls))
+		if ClassDB.class_exists(cls) and icon.load_svg_from_buffer(svg) == OK and icon.get_width() == 16:
 			icons.append(cls)
-	check(icons.size() == 3, "an icon for each class shown in the editor (%s)" % [icons])
+	check(icons.size() == 3, "a 16x16 SVG icon for each class shown in the editor (%s)" % [icons])
 
 
 func _process(_delta: float) -> void:
