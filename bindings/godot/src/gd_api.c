@@ -71,6 +71,8 @@ bool gd_api_load(GDExtensionInterfaceGetProcAddress get_proc, GDExtensionClassLi
 	LOAD(classdb_register_extension_class_signal);
 	LOAD(classdb_unregister_extension_class);
 #undef LOAD
+	gd.editor_help_load_xml_from_utf8_chars_and_len = (GDExtensionsInterfaceEditorHelpLoadXmlFromUtf8CharsAndLen)(
+		void (*)(void))get_proc("editor_help_load_xml_from_utf8_chars_and_len");
 	return ok;
 }
 

@@ -84,6 +84,8 @@ typedef struct gd_interface {
 	GDExtensionInterfaceClassdbRegisterExtensionClassPropertyGroup classdb_register_extension_class_property_group;
 	GDExtensionInterfaceClassdbRegisterExtensionClassSignal classdb_register_extension_class_signal;
 	GDExtensionInterfaceClassdbUnregisterExtensionClass classdb_unregister_extension_class;
+	/* optional (NULL when missing): only the editor shows class docs */
+	GDExtensionsInterfaceEditorHelpLoadXmlFromUtf8CharsAndLen editor_help_load_xml_from_utf8_chars_and_len;
 } gd_interface;
 
 extern gd_interface gd;

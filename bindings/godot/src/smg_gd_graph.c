@@ -33,7 +33,7 @@ void smg_gd_blob_release(smg_gd_blob *b) {
 		GD_ERR("SmgGraph: graph not destroyed: %s", smg_result_string(r));
 		return;
 	}
-	free(b->mem);
+	free(b->alloc);
 	free(b);
 }
 
@@ -77,16 +77,17 @@ static int64_t load_blob(const char *path, smg_gd_blob **out) {
 			open_err ? "open failed" : "empty file", (long long)open_err);
 		return open_err ? GD_ERR_FILE_CANT_READ : GD_ERR_FILE_CORRUPT;
 	}
-	size_t alloc = ((size_t)size + 63u) & ~(size_t)63u;
+	/* aligned by hand: C11's aligned_alloc is missing from Windows' C library */
 	smg_gd_blob *b = calloc(1, sizeof *b);
-	void *mem = aligned_alloc(64, alloc);
-	if (!b || !mem) {
+	void *alloc = malloc((size_t)size + 63u);
+	if (!b || !alloc) {
 		free(b);
-		free(mem);
+		free(alloc);
 		gd_packed_destroy(&bytes, GDEXTENSION_VARIANT_TYPE_PACKED_BYTE_ARRAY);
 		GD_ERR("SmgGraph: out of memory reading '%s' (%lld bytes)", path, (long long)size);
 		return GD_ERR_OUT_OF_MEMORY;
 	}
+	void *mem = (void *)(((uintptr_t)alloc + 63u) & ~(uintptr_t)63u);
 	memcpy(mem, gd_packed_bytes_data(&bytes), (size_t)size);
 	gd_packed_destroy(&bytes, GDEXTENSION_VARIANT_TYPE_PACKED_BYTE_ARRAY);
 
@@ -98,7 +99,7 @@ static int64_t load_blob(const char *path, smg_gd_blob **out) {
 	smg_graph *graph = NULL;
 	smg_result r = smg_graph_load_memory(mem, (size_t)size, &desc, &graph);
 	if (r != SMG_OK) {
-		free(mem);
+		free(alloc);
 		free(b);
 		GD_ERR("SmgGraph: '%s' is not a valid libsmg graph: %s", path, smg_result_string(r));
 		return r == SMG_ERROR_OUT_OF_MEMORY ? GD_ERR_OUT_OF_MEMORY : GD_ERR_FILE_CORRUPT;
@@ -108,7 +109,7 @@ static int64_t load_blob(const char *path, smg_gd_blob **out) {
 	info.struct_size = sizeof info;
 	smg_graph_get_info(graph, &info);
 	b->graph = graph;
-	b->mem = mem;
+	b->alloc = alloc;
 	b->refs = 1;
 	b->joint_count = info.joint_count;
 	*out = b;

@@ -13,7 +13,8 @@
  * holder destroys its characters before letting go. */
 typedef struct smg_gd_blob {
 	smg_graph *graph;
-	void *mem;
+	void *alloc; /* holds the blob bytes the graph uses in place
+	              * (64-byte aligned inside) */
 	uint32_t refs;
 	uint32_t joint_count;
 } smg_gd_blob;

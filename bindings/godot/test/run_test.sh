@@ -2,7 +2,7 @@
 # run_test.sh EXT.so GRAPH.smg PROJECT_DIR LOG [EDITOR_LOG]
 #
 # Builds a throw-away copy of the test project in PROJECT_DIR (Godot writes
-# .godot/ into it) with the extension and the graph, runs test_smg.gd
+# .godot/ into it) with the addon (EXT as its Linux library) and the graph, runs test_smg.gd
 # headless at a fixed 30 fps and lets check_log.sh decide (Godot exits 0
 # even after script errors). With EDITOR_LOG it then opens the test scene in
 # the headless editor and fails on a crash or if the scene did not open, and
@@ -27,13 +27,21 @@ abs() { (cd "$(dirname "$1")" && printf '%s/%s\n' "$(pwd)" "$(basename "$1")"); 
 GRAPH_ABS=$(abs "$GRAPH")
 LOG_ABS=$(abs "$LOG")
 
+# The addon as users install it (addons/libsmg/, ../addon) with EXT as its
+# Linux library, listed in .godot/extension_list.cfg: written here because
+# `godot --import` would crash (Godot issue #111048).
+install_addon() {
+	mkdir -p "$1/addons/libsmg/bin" "$1/.godot"
+	cp -R "$HERE/../addon/." "$1/addons/libsmg/"
+	cp "$EXT" "$1/addons/libsmg/bin/libsmg_godot.linux.x86_64.so"
+	echo 'res://addons/libsmg/smg.gdextension' > "$1/.godot/extension_list.cfg"
+}
+
 rm -rf "$PROJ"
-mkdir -p "$PROJ/bin" "$PROJ/.godot"
-cp "$HERE/project.godot" "$HERE"/*.gd "$HERE"/*.tscn "$HERE/../demo/smg.gdextension" "$PROJ/"
-cp "$EXT" "$PROJ/bin/libsmg_godot.so"
+mkdir -p "$PROJ"
+cp "$HERE/project.godot" "$HERE"/*.gd "$HERE"/*.tscn "$PROJ/"
+install_addon "$PROJ"
 cp "$GRAPH" "$PROJ/default.smg"
-# Written here because `godot --import` would crash (Godot issue #111048).
-echo 'res://smg.gdextension' > "$PROJ/.godot/extension_list.cfg"
 
 echo "== godot headless test ($LOG)"
 set +e
@@ -92,14 +100,12 @@ fi
 DEMO_PROJ=$PROJ-demo
 DEMO_LOG=$(abs "$EDITOR_LOG" | sed 's/-editor\.log$//; s/\.log$//')-demo.log
 rm -rf "$DEMO_PROJ"
-mkdir -p "$DEMO_PROJ/bin" "$DEMO_PROJ/.godot"
-cp "$HERE/../demo/project.godot" "$HERE/../demo"/*.gd "$HERE/../demo"/*.tscn "$HERE/../demo/smg.gdextension" \
-	"$HERE/demo_input.gd" "$DEMO_PROJ/"
-cp "$EXT" "$DEMO_PROJ/bin/libsmg_godot.so"
+mkdir -p "$DEMO_PROJ"
+cp "$HERE/../demo/project.godot" "$HERE/../demo"/*.gd "$HERE/../demo"/*.tscn "$HERE/demo_input.gd" "$DEMO_PROJ/"
+install_addon "$DEMO_PROJ"
 cp "$GRAPH" "$DEMO_PROJ/default.smg"
 # The demo draws the generated body when it is there (capsules otherwise).
 [ -z "${GODOT_BODY:-}" ] || cp "$GODOT_BODY" "$DEMO_PROJ/body.gltf"
-echo 'res://smg.gdextension' > "$DEMO_PROJ/.godot/extension_list.cfg"
 echo "== godot demo input test ($DEMO_LOG)"
 set +e
 (cd "$DEMO_PROJ" && env ${GODOT_PRELOAD:+LD_PRELOAD=$GODOT_PRELOAD} timeout "$TMO" $GD --headless --fixed-fps 30 \
