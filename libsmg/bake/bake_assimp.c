@@ -28,6 +28,7 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <errno.h>
+#include <signal.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -304,26 +305,35 @@ static double guess_unit(const smgb_skeleton* s, double hips_height) {
 /* assimp is a large parser of untrusted files, and some malformed ones
  * crash it (fuzzing found a NULL dereference in assimp 5.2's glTF 2 reader;
  * docs/reliability.md). Where processes can be forked, each file is first
- * read by a child process: if the child dies of a signal, the import fails
- * with an error naming the file instead of taking the baker down. The
- * child only parses and exits; the real import follows in this process.
- * Returns 1 when the file can be read here (or no probe is possible). */
+ * read by a child process: if the child does not finish cleanly, the
+ * import fails with an error naming the file instead of taking the baker
+ * down. The child only parses and exits; the real import follows in this
+ * process. Returns 1 when the file can be read here (or no probe is
+ * possible). */
 static int assimp_survives(const char* path, const struct aiPropertyStore* props) {
 #if SMGB_ASSIMP_PROBE
+  /* The child dies of the signal itself, whatever handler the host
+   * process installed: a sanitizer's, a fuzzer's or an engine's crash
+   * reporter would report the crash as the host's own and exit. */
+  static const int fatal[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
   int status = 0;
+  size_t i;
   pid_t pid;
   fflush(NULL); /* nothing buffered is written twice */
   pid = fork();
   if (pid < 0) return 1; /* no probe: import directly */
   if (pid == 0) {
-    const struct aiScene* s = aiImportFileExWithProperties(
-        path, aiProcess_ValidateDataStructure, NULL, props);
+    const struct aiScene* s;
+    for (i = 0; i < sizeof fatal / sizeof fatal[0]; ++i)
+      signal(fatal[i], SIG_DFL);
+    s = aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure,
+                                     NULL, props);
     if (s) aiReleaseImport(s);
     _exit(0);
   }
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return 1;
-  return !WIFSIGNALED(status);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 #else
   (void)path;
   (void)props;
