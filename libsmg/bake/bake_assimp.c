@@ -43,6 +43,7 @@
 
 #include "bake_clip.h"
 #include "bake_import_util.h"
+#include "bake_math.h"
 
 #define SMGB_ASSIMP_MAX_JOINTS 512u
 #define SMGB_ASSIMP_MAX_FRAMES 10000000u
@@ -108,7 +109,7 @@ static int affine_rotation(const affine* a, double* scale, double q[4]) {
     Y[i] /= sy;
     Z[i] /= sz;
   }
-  smgb_qfrom_axes(X, Y, Z, q);
+  smgb_q_from_axes(X, Y, Z, q);
   *scale = s;
   return 1;
 }
@@ -192,23 +193,16 @@ fail:
 
 /* ---- sampling ------------------------------------------------------------- */
 
-static uint32_t key_index_vec(const struct aiVectorKey* k, uint32_t n,
-                              double t) {
+/* The last of n keys (n >= 2) whose time is at or before t. Both key
+ * types start with their time: `time` points at the first key's, `stride`
+ * is the key size. */
+static uint32_t key_before(const double* time, size_t stride, uint32_t n,
+                           double t) {
+  const char* base = (const char*)time;
   uint32_t lo = 0, hi = n - 1;
   while (hi - lo > 1) {
     uint32_t mid = (lo + hi) / 2;
-    if (k[mid].mTime <= t) lo = mid;
-    else hi = mid;
-  }
-  return lo;
-}
-
-static uint32_t key_index_quat(const struct aiQuatKey* k, uint32_t n,
-                               double t) {
-  uint32_t lo = 0, hi = n - 1;
-  while (hi - lo > 1) {
-    uint32_t mid = (lo + hi) / 2;
-    if (k[mid].mTime <= t) lo = mid;
+    if (*(const double*)(base + (size_t)mid * stride) <= t) lo = mid;
     else hi = mid;
   }
   return lo;
@@ -229,7 +223,7 @@ static int sample_position(const struct aiNodeAnim* ch, double t, double o[3]) {
     o[0] = k[n - 1].mValue.x; o[1] = k[n - 1].mValue.y; o[2] = k[n - 1].mValue.z;
     return 1;
   }
-  i = key_index_vec(k, n, t);
+  i = key_before(&k[0].mTime, sizeof *k, n, t);
   u = (k[i + 1].mTime > k[i].mTime)
           ? (t - k[i].mTime) / (k[i + 1].mTime - k[i].mTime) : 0.0;
   o[0] = k[i].mValue.x + (k[i + 1].mValue.x - k[i].mValue.x) * u;
@@ -248,21 +242,21 @@ static int sample_rotation(const struct aiNodeAnim* ch, double t, double q[4]) {
   if (n == 1 || t <= k[0].mTime) i = 0, u = 0.0;
   else if (t >= k[n - 1].mTime) i = n - 1, u = 0.0;
   else {
-    i = key_index_quat(k, n, t);
+    i = key_before(&k[0].mTime, sizeof *k, n, t);
     u = (k[i + 1].mTime > k[i].mTime)
             ? (t - k[i].mTime) / (k[i + 1].mTime - k[i].mTime) : 0.0;
   }
   a[0] = k[i].mValue.x; a[1] = k[i].mValue.y;
   a[2] = k[i].mValue.z; a[3] = k[i].mValue.w;
-  smgb_qnormalize(a);
+  smgb_q_normalize(a);
   if (u <= 0.0) {
     memcpy(q, a, sizeof a);
     return 1;
   }
   b[0] = k[i + 1].mValue.x; b[1] = k[i + 1].mValue.y;
   b[2] = k[i + 1].mValue.z; b[3] = k[i + 1].mValue.w;
-  smgb_qnormalize(b);
-  smgb_qslerp(a, b, u, q);
+  smgb_q_normalize(b);
+  smgb_q_slerp(a, b, u, q);
   return 1;
 }
 
@@ -286,20 +280,11 @@ static int finite_channel(const struct aiNodeAnim* ch) {
   return 1;
 }
 
+/* Units from the leg length, else the hips height. */
 static double guess_unit(const smgb_skeleton* s, double hips_height) {
-  static const double units[5] = {1.0, 0.01, 0.001, 0.0254, 0.056444};
-  double size = smgb_skeleton_leg_length(s), best = 1.0, err = 1e300;
-  int i;
+  double size = smgb_skeleton_leg_length(s);
   if (!(size > 0.0)) size = fabs(hips_height) * 0.9;
-  if (!(size > 0.0)) return 1.0;
-  for (i = 0; i < 5; ++i) {
-    double e = fabs(log(size * units[i] / 0.85));
-    if (e < err) {
-      err = e;
-      best = units[i];
-    }
-  }
-  return best;
+  return smgb_unit_from_leg(size);
 }
 
 /* assimp is a large parser of untrusted files, and some malformed ones
@@ -599,7 +584,7 @@ static smg_result read_joint(assimp_import* a, uint32_t i, int32_t j) {
     double X[3] = {local.m[0], local.m[3], local.m[6]};
     double Y[3] = {local.m[1], local.m[4], local.m[7]};
     double Z[3] = {local.m[2], local.m[5], local.m[8]};
-    smgb_qfrom_axes(X, Y, Z, a->rest_q + 4 * j);
+    smgb_q_from_axes(X, Y, Z, a->rest_q + 4 * j);
   }
   a->rest_t[3 * j + 0] = local.t[0];
   a->rest_t[3 * j + 1] = local.t[1];
@@ -738,9 +723,9 @@ static void sample_frames(assimp_import* a) {
         pose[0] = (float)p[0];
         pose[1] = (float)p[1];
         pose[2] = (float)p[2];
-        smgb_qmul(a->parent_q, q, q);
+        smgb_q_mul(a->parent_q, q, q);
       }
-      smgb_qnormalize(q);
+      smgb_q_normalize(q);
       pose[3 + 4 * i + 0] = (float)q[0];
       pose[3 + 4 * i + 1] = (float)q[1];
       pose[3 + 4 * i + 2] = (float)q[2];

@@ -33,6 +33,7 @@
 
 #include "bake_clip.h"
 #include "bake_import_util.h"
+#include "bake_math.h"
 
 #define SMGB_BVH_MAX_JOINTS 512u
 #define SMGB_BVH_MAX_FRAMES 10000000u
@@ -68,18 +69,6 @@ typedef struct bvh_lexer {
 static int is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' ||
          c == '\f';
-}
-
-/* ASCII case-insensitive equality: exporters disagree on "End Site" vs
- * "End site", "Xrotation" vs "XRotation". */
-static int ieq(const char* a, const char* b) {
-  for (; *a && *b; ++a, ++b) {
-    char x = *a, y = *b;
-    if (x >= 'A' && x <= 'Z') x = (char)(x - 'A' + 'a');
-    if (y >= 'A' && y <= 'Z') y = (char)(y - 'A' + 'a');
-    if (x != y) return 0;
-  }
-  return *a == *b;
 }
 
 /* Next whitespace-separated token ('{' and '}' always stand alone).
@@ -226,7 +215,7 @@ static int lex_number(bvh_lexer* lx, const char* what, double* out) {
 static int lex_expect(bvh_lexer* lx, const char* word, const char* context) {
   int r = lex_next(lx);
   if (r < 0) return 0;
-  if (r == 0 || !ieq(lx->tok, word)) {
+  if (r == 0 || !smgb_name_ieq(lx->tok, word)) {
     smgb_imp_errorf(lx->err, "%s:%u: expected '%s' %s, found '%s'", lx->name,
                     lx->tok_line, word, context, tok_show(lx));
     return 0;
@@ -239,7 +228,7 @@ static int channel_from_name(const char* s) {
                                        "Xrotation", "Yrotation", "Zrotation"};
   int i;
   for (i = 0; i < 6; ++i)
-    if (ieq(s, names[i])) return i;
+    if (smgb_name_ieq(s, names[i])) return i;
   return -1;
 }
 
@@ -359,7 +348,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       return 0;
     }
     if (in_end_site) {
-      if (ieq(lx->tok, "OFFSET") && !end_site_offset) {
+      if (smgb_name_ieq(lx->tok, "OFFSET") && !end_site_offset) {
         double tmp[3];
         if (!parse_offset(lx, tmp)) return 0;
         end_site_offset = 1;
@@ -379,7 +368,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       continue;
     }
-    if (ieq(lx->tok, "OFFSET")) {
+    if (smgb_name_ieq(lx->tok, "OFFSET")) {
       if (j->has_offset || j->has_children) {
         smgb_imp_errorf(lx->err, "%s:%u: misplaced or repeated OFFSET in '%s'",
                         lx->name, lx->tok_line, j->name);
@@ -387,7 +376,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       if (!parse_offset(lx, j->offset)) return 0;
       j->has_offset = 1;
-    } else if (ieq(lx->tok, "CHANNELS")) {
+    } else if (smgb_name_ieq(lx->tok, "CHANNELS")) {
       if (j->has_channels || j->has_children) {
         smgb_imp_errorf(lx->err,
                         "%s:%u: misplaced or repeated CHANNELS in '%s'",
@@ -395,7 +384,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
         return 0;
       }
       if (!parse_channels(lx, h, j)) return 0;
-    } else if (ieq(lx->tok, "JOINT") || ieq(lx->tok, "End") ||
+    } else if (smgb_name_ieq(lx->tok, "JOINT") || smgb_name_ieq(lx->tok, "End") ||
                strcmp(lx->tok, "}") == 0) {
       if (!j->has_offset) {
         smgb_imp_errorf(lx->err, "%s:%u: joint '%s' has no OFFSET", lx->name,
@@ -494,12 +483,12 @@ static void joint_rotation(const bvh_joint* j, const double* row, double q[4]) {
     int ch = j->channels[c];
     if (ch > CH_ZPOS) {
       double r[4];
-      smgb_qaxis(ch - CH_XROT, row[j->first_channel + c] * (SMGB_PI / 180.0),
+      smgb_q_axis(ch - CH_XROT, row[j->first_channel + c] * (SMGB_M_PI / 180.0),
                  r);
-      smgb_qmul(q, r, q);
+      smgb_q_mul(q, r, q);
     }
   }
-  smgb_qnormalize(q);
+  smgb_q_normalize(q);
 }
 
 /* Local translation of joint ji: its OFFSET with position channels
@@ -526,8 +515,8 @@ static void row_to_pose(const bvh_hier* h, const double* row, double scale,
     float* o = pose + 3 + 4 * (ji - h->root);
     joint_rotation(&h->joints[ji], row, q);
     if (ji == h->root && h->root > 0) {
-      smgb_qmul(h->fold_q, q, q);
-      smgb_qnormalize(q);
+      smgb_q_mul(h->fold_q, q, q);
+      smgb_q_normalize(q);
     }
     o[0] = (float)q[0];
     o[1] = (float)q[1];
@@ -536,7 +525,7 @@ static void row_to_pose(const bvh_hier* h, const double* row, double scale,
   }
   joint_translation(&h->joints[h->root], row, root);
   if (h->root > 0) {
-    smgb_qrot(h->fold_q, root, root);
+    smgb_q_rotate(h->fold_q, root, root);
     root[0] += h->fold_t[0];
     root[1] += h->fold_t[1];
     root[2] += h->fold_t[2];
@@ -554,13 +543,10 @@ static float rate_from_frame_time(double ft) {
   return (float)rate;
 }
 
-/* Guess file units -> metres from the rest skeleton: pick the common unit
- * (m, cm, mm, inch, CMU's 1/0.45 inch) that makes the leg (or, without named
- * legs, the hips height) closest to a human's ~0.85 m in log scale. */
+/* Guess file units -> metres from the rest skeleton's leg (or, without
+ * named legs, the hips height): smgb_unit_from_leg. */
 static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
-  static const double units[5] = {1.0, 0.01, 0.001, 0.0254, 0.056444};
-  double size = 0.0, best = 1.0, best_err = 1e300;
-  int i;
+  double size = 0.0;
   smgb_skeleton s;
   float(*offs)[3];
   char(*names)[SMGB_NAME_MAX];
@@ -593,15 +579,7 @@ static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
       if (r->channels[k] == CH_YPOS && first_row)
         size = fabs(first_row[r->first_channel + k]) * 0.9;
   }
-  if (!(size > 0.0)) return 1.0;
-  for (i = 0; i < 5; ++i) {
-    double e = fabs(log(size * units[i] / 0.85));
-    if (e < best_err) {
-      best_err = e;
-      best = units[i];
-    }
-  }
-  return best;
+  return smgb_unit_from_leg(size);
 }
 
 /* Is column `col` constant over the clip (to float rounding)? */
@@ -648,12 +626,12 @@ static void fold_static_root(bvh_hier* h, const double* rows,
     if (!child_moves) return;
     joint_translation(j, rows, t);
     joint_rotation(j, rows, q);
-    smgb_qrot(h->fold_q, t, t);
+    smgb_q_rotate(h->fold_q, t, t);
     h->fold_t[0] += t[0];
     h->fold_t[1] += t[1];
     h->fold_t[2] += t[2];
-    smgb_qmul(h->fold_q, q, h->fold_q);
-    smgb_qnormalize(h->fold_q);
+    smgb_q_mul(h->fold_q, q, h->fold_q);
+    smgb_q_normalize(h->fold_q);
     h->root++;
   }
 }
@@ -769,8 +747,8 @@ static smg_result read_motion_header(bvh_lexer* lx, const bvh_hier* h,
                                      bvh_motion* m) {
   smg_result r;
   if (lex_next(lx) < 0) return SMG_ERROR_PARSE;
-  if (!ieq(lx->tok, "MOTION")) {
-    if (ieq(lx->tok, "ROOT"))
+  if (!smgb_name_ieq(lx->tok, "MOTION")) {
+    if (smgb_name_ieq(lx->tok, "ROOT"))
       smgb_imp_errorf(lx->err, "%s:%u: more than one ROOT is not supported",
                       lx->name, lx->tok_line);
     else
@@ -1157,10 +1135,10 @@ smg_result smgb_bvh_save(const char* path, const smgb_clip* clip,
       double q[4], z, y, x;
       q[0] = pose[3 + 4 * j]; q[1] = pose[4 + 4 * j];
       q[2] = pose[5 + 4 * j]; q[3] = pose[6 + 4 * j];
-      smgb_qnormalize(q);
-      smgb_qto_euler_zyx(q, &z, &y, &x);
-      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_PI),
-              y * (180.0 / SMGB_PI), x * (180.0 / SMGB_PI));
+      smgb_q_normalize(q);
+      smgb_q_to_euler_zyx(q, &z, &y, &x);
+      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_M_PI),
+              y * (180.0 / SMGB_M_PI), x * (180.0 / SMGB_M_PI));
     }
     fputc('\n', fp);
   }
