@@ -290,35 +290,52 @@ static double guess_unit(const smgb_skeleton* s, double hips_height) {
 /* assimp is a large parser of untrusted files, and some malformed ones
  * crash it (fuzzing found a NULL dereference in assimp 5.2's glTF 2 reader;
  * docs/reliability.md). Where processes can be forked, each file is first
- * read by a child process: if the child does not finish cleanly, the
- * import fails with an error naming the file instead of taking the baker
- * down. The child only parses and exits; the real import follows in this
- * process. Returns 1 when the file can be read here (or no probe is
- * possible). */
-static int assimp_survives(const char* path, const struct aiPropertyStore* props) {
+ * read by a child process, which reports over a pipe that assimp returned;
+ * without that report the import fails with an error naming the file
+ * instead of taking the baker down. The child only parses and exits; the
+ * real import follows in this process. Returns 1 when the file can be
+ * read here (or no probe is possible). */
+static int assimp_survives(const char* path, struct aiPropertyStore* props) {
 #if SMGB_ASSIMP_PROBE
   /* The child dies of the signal itself, whatever handler the host
    * process installed: a sanitizer's, a fuzzer's or an engine's crash
-   * reporter would report the crash as the host's own and exit. */
+   * reporter would take the crash as the host's own. Its exit status is
+   * not the verdict (a sanitizer's handler or a leak checker may exit
+   * with an error code of its own); the report sent after the parse is. */
   static const int fatal[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
-  int status = 0;
+  int fds[2], status = 0;
+  char parsed = 0;
+  ssize_t n;
   size_t i;
   pid_t pid;
+  if (pipe(fds) != 0) return 1; /* no probe: import directly */
   fflush(NULL); /* nothing buffered is written twice */
   pid = fork();
-  if (pid < 0) return 1; /* no probe: import directly */
+  if (pid < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    return 1;
+  }
   if (pid == 0) {
     const struct aiScene* s;
+    close(fds[0]);
     for (i = 0; i < sizeof fatal / sizeof fatal[0]; ++i)
       signal(fatal[i], SIG_DFL);
     s = aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure,
                                      NULL, props);
     if (s) aiReleaseImport(s);
+    if (props) aiReleasePropertyStore(props);
+    parsed = 1;
+    if (write(fds[1], &parsed, 1) != 1) _exit(1);
     _exit(0);
   }
+  close(fds[1]);
+  do n = read(fds[0], &parsed, 1);
+  while (n < 0 && errno == EINTR);
+  close(fds[0]);
   while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return 1;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (errno != EINTR) break;
+  return n == 1 && parsed == 1;
 #else
   (void)path;
   (void)props;
