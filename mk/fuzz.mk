@@ -19,8 +19,14 @@
 #                     with the target's seeds and the committed inputs.
 #                     Needs clang; clang is optional for everything else.
 #                     Extra libFuzzer flags: FUZZ_ARGS="-jobs=2 ...".
-# A campaign and its record: docs/fuzzing.md. Every finding gets its input
-# committed in tests/fuzz/regress/<name>/ so test-fuzz replays it forever.
+# A campaign and its record: docs/reliability.md. Every finding gets its
+# input committed in tests/fuzz/regress/<name>/ so test-fuzz replays it
+# forever. fuzz-assimp keeps running past files that crash assimp itself:
+# smgb_assimp_load reads each file in a child process first (also in the
+# libFuzzer build), the target counts such inputs and prints the count at
+# exit; an out-of-memory report of libFuzzer from that child (an
+# assimp-oom-* artifact) is assimp's own allocation, and the file is
+# refused.
 
 FUZZ_TARGET_SRC := $(sort $(filter-out tests/fuzz/fuzz_driver.c,$(wildcard tests/fuzz/fuzz_*.c)))
 FUZZ_NAMES := $(patsubst tests/fuzz/fuzz_%.c,%,$(FUZZ_TARGET_SRC))

@@ -18,6 +18,7 @@
 
 #include "bake_analyze.h"
 #include "bake_manifest.h"
+#include "bake_options.h"
 #include "blob.h"
 #include "smg_bake.h"
 #include "smg_format.h"
@@ -33,6 +34,8 @@ static void* alloc16(size_t size) {
 #endif
 }
 
+/* The defaults quoted come from bake_options.h, the one place they are
+ * set. */
 static void usage(FILE* fp) {
   fprintf(fp,
       "usage: smg-bake -m MANIFEST -o OUT.smg [options]\n"
@@ -58,19 +61,26 @@ static void usage(FILE* fp) {
       "  --target-unit M        rig file units in metres (default: guess)\n"
       "options:\n"
       "  -o, --output FILE      blob to write\n"
-      "  --frame-rate HZ        working frame rate (default 30 or the\n"
+      "  --frame-rate HZ        working frame rate (default %g or the\n"
       "                         manifest's)\n"
       "  --no-mirror            do not add mirrored clips\n"
-      "  --window S             transition window, seconds (default 0.333)\n"
+      "  --window S             transition window, seconds (default %.3g)\n"
       "  --percentile P         transition candidates kept, percent of local\n"
-      "                         minima per style pair (default 30)\n"
+      "                         minima per style pair (default %g)\n"
       "  --threshold M          absolute transition distance cap, metres\n"
-      "  --max-edge S           longest merged edge, seconds (default 1)\n"
-      "  --splice-percentile P  splice candidates kept per action (30)\n"
-      "  --splices-per-region N best splices per 0.5 s region (2)\n"
-      "  --threads N            worker threads (default 2)\n"
+      "  --max-edge S           longest merged edge, seconds (default %g)\n"
+      "  --splice-percentile P  splice candidates kept per action (%g)\n"
+      "  --splices-per-region N best splices per %g s region (%u)\n"
+      "  --threads N            worker threads (default %u, at most %u)\n"
       "  -q, --quiet            no progress output\n"
-      "  -h, --help\n");
+      "  -h, --help\n",
+      (double)SMGB_DEFAULT_FRAME_RATE, (double)SMGB_DEFAULT_WINDOW_SECONDS,
+      (double)SMGB_DEFAULT_TRANSITION_PERCENTILE,
+      (double)SMGB_DEFAULT_MAX_EDGE_SECONDS,
+      (double)SMGB_DEFAULT_SPLICE_PERCENTILE,
+      (double)SMGB_DEFAULT_SPLICE_REGION_SECONDS,
+      SMGB_DEFAULT_SPLICES_PER_REGION, SMGB_DEFAULT_THREADS,
+      SMGB_MAX_THREADS);
 }
 
 /* ---- progress ------------------------------------------------------------- */
@@ -303,7 +313,7 @@ static int parse_u32(const char* opt, const char* s, uint32_t* out) {
  * then how many errors there were when more than one. */
 static void print_problems(const char* manifest, const smg_bake_result* res) {
   const char* line = res->problems;
-  while (line && *line) {
+  while (*line) {
     const char* end = strchr(line, '\n');
     int n = end ? (int)(end - line) : (int)strlen(line);
     fprintf(stderr, "smg-bake: %s%s%.*s\n", manifest ? manifest : "",

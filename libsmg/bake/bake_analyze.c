@@ -352,7 +352,7 @@ smg_result smgb_analyze_file(const char* path, const char* reference,
       return r;
     }
   }
-  if (!(frame_rate > 0.0f)) frame_rate = 30.0f;
+  if (!(frame_rate > 0.0f)) frame_rate = SMGB_DEFAULT_FRAME_RATE;
   r = smgb_analyze_clip(&clip, frame_rate, skip_first_frame ? 1u : 0u, 0.0f,
                         0.0f, &a, err);
   if (r != SMG_OK) {

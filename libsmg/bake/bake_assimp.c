@@ -28,6 +28,7 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <errno.h>
+#include <signal.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -42,6 +43,7 @@
 
 #include "bake_clip.h"
 #include "bake_import_util.h"
+#include "bake_math.h"
 
 #define SMGB_ASSIMP_MAX_JOINTS 512u
 #define SMGB_ASSIMP_MAX_FRAMES 10000000u
@@ -107,7 +109,7 @@ static int affine_rotation(const affine* a, double* scale, double q[4]) {
     Y[i] /= sy;
     Z[i] /= sz;
   }
-  smgb_qfrom_axes(X, Y, Z, q);
+  smgb_q_from_axes(X, Y, Z, q);
   *scale = s;
   return 1;
 }
@@ -191,23 +193,16 @@ fail:
 
 /* ---- sampling ------------------------------------------------------------- */
 
-static uint32_t key_index_vec(const struct aiVectorKey* k, uint32_t n,
-                              double t) {
+/* The last of n keys (n >= 2) whose time is at or before t. Both key
+ * types start with their time: `time` points at the first key's, `stride`
+ * is the key size. */
+static uint32_t key_before(const double* time, size_t stride, uint32_t n,
+                           double t) {
+  const char* base = (const char*)time;
   uint32_t lo = 0, hi = n - 1;
   while (hi - lo > 1) {
     uint32_t mid = (lo + hi) / 2;
-    if (k[mid].mTime <= t) lo = mid;
-    else hi = mid;
-  }
-  return lo;
-}
-
-static uint32_t key_index_quat(const struct aiQuatKey* k, uint32_t n,
-                               double t) {
-  uint32_t lo = 0, hi = n - 1;
-  while (hi - lo > 1) {
-    uint32_t mid = (lo + hi) / 2;
-    if (k[mid].mTime <= t) lo = mid;
+    if (*(const double*)(base + (size_t)mid * stride) <= t) lo = mid;
     else hi = mid;
   }
   return lo;
@@ -228,7 +223,7 @@ static int sample_position(const struct aiNodeAnim* ch, double t, double o[3]) {
     o[0] = k[n - 1].mValue.x; o[1] = k[n - 1].mValue.y; o[2] = k[n - 1].mValue.z;
     return 1;
   }
-  i = key_index_vec(k, n, t);
+  i = key_before(&k[0].mTime, sizeof *k, n, t);
   u = (k[i + 1].mTime > k[i].mTime)
           ? (t - k[i].mTime) / (k[i + 1].mTime - k[i].mTime) : 0.0;
   o[0] = k[i].mValue.x + (k[i + 1].mValue.x - k[i].mValue.x) * u;
@@ -247,21 +242,21 @@ static int sample_rotation(const struct aiNodeAnim* ch, double t, double q[4]) {
   if (n == 1 || t <= k[0].mTime) i = 0, u = 0.0;
   else if (t >= k[n - 1].mTime) i = n - 1, u = 0.0;
   else {
-    i = key_index_quat(k, n, t);
+    i = key_before(&k[0].mTime, sizeof *k, n, t);
     u = (k[i + 1].mTime > k[i].mTime)
             ? (t - k[i].mTime) / (k[i + 1].mTime - k[i].mTime) : 0.0;
   }
   a[0] = k[i].mValue.x; a[1] = k[i].mValue.y;
   a[2] = k[i].mValue.z; a[3] = k[i].mValue.w;
-  smgb_qnormalize(a);
+  smgb_q_normalize(a);
   if (u <= 0.0) {
     memcpy(q, a, sizeof a);
     return 1;
   }
   b[0] = k[i + 1].mValue.x; b[1] = k[i + 1].mValue.y;
   b[2] = k[i + 1].mValue.z; b[3] = k[i + 1].mValue.w;
-  smgb_qnormalize(b);
-  smgb_qslerp(a, b, u, q);
+  smgb_q_normalize(b);
+  smgb_q_slerp(a, b, u, q);
   return 1;
 }
 
@@ -285,45 +280,62 @@ static int finite_channel(const struct aiNodeAnim* ch) {
   return 1;
 }
 
+/* Units from the leg length, else the hips height. */
 static double guess_unit(const smgb_skeleton* s, double hips_height) {
-  static const double units[5] = {1.0, 0.01, 0.001, 0.0254, 0.056444};
-  double size = smgb_skeleton_leg_length(s), best = 1.0, err = 1e300;
-  int i;
+  double size = smgb_skeleton_leg_length(s);
   if (!(size > 0.0)) size = fabs(hips_height) * 0.9;
-  if (!(size > 0.0)) return 1.0;
-  for (i = 0; i < 5; ++i) {
-    double e = fabs(log(size * units[i] / 0.85));
-    if (e < err) {
-      err = e;
-      best = units[i];
-    }
-  }
-  return best;
+  return smgb_unit_from_leg(size);
 }
 
 /* assimp is a large parser of untrusted files, and some malformed ones
  * crash it (fuzzing found a NULL dereference in assimp 5.2's glTF 2 reader;
  * docs/reliability.md). Where processes can be forked, each file is first
- * read by a child process: if the child dies of a signal, the import fails
- * with an error naming the file instead of taking the baker down. The
- * child only parses and exits; the real import follows in this process.
- * Returns 1 when the file can be read here (or no probe is possible). */
-static int assimp_survives(const char* path, const struct aiPropertyStore* props) {
+ * read by a child process, which reports over a pipe that assimp returned;
+ * without that report the import fails with an error naming the file
+ * instead of taking the baker down. The child only parses and exits; the
+ * real import follows in this process. Returns 1 when the file can be
+ * read here (or no probe is possible). */
+static int assimp_survives(const char* path, struct aiPropertyStore* props) {
 #if SMGB_ASSIMP_PROBE
-  int status = 0;
+  /* The child dies of the signal itself, whatever handler the host
+   * process installed: a sanitizer's, a fuzzer's or an engine's crash
+   * reporter would take the crash as the host's own. Its exit status is
+   * not the verdict (a sanitizer's handler or a leak checker may exit
+   * with an error code of its own); the report sent after the parse is. */
+  static const int fatal[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+  int fds[2], status = 0;
+  char parsed = 0;
+  ssize_t n;
+  size_t i;
   pid_t pid;
+  if (pipe(fds) != 0) return 1; /* no probe: import directly */
   fflush(NULL); /* nothing buffered is written twice */
   pid = fork();
-  if (pid < 0) return 1; /* no probe: import directly */
+  if (pid < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    return 1;
+  }
   if (pid == 0) {
-    const struct aiScene* s = aiImportFileExWithProperties(
-        path, aiProcess_ValidateDataStructure, NULL, props);
+    const struct aiScene* s;
+    close(fds[0]);
+    for (i = 0; i < sizeof fatal / sizeof fatal[0]; ++i)
+      signal(fatal[i], SIG_DFL);
+    s = aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure,
+                                     NULL, props);
     if (s) aiReleaseImport(s);
+    if (props) aiReleasePropertyStore(props);
+    parsed = 1;
+    if (write(fds[1], &parsed, 1) != 1) _exit(1);
     _exit(0);
   }
+  close(fds[1]);
+  do n = read(fds[0], &parsed, 1);
+  while (n < 0 && errno == EINTR);
+  close(fds[0]);
   while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return 1;
-  return !WIFSIGNALED(status);
+    if (errno != EINTR) break;
+  return n == 1 && parsed == 1;
 #else
   (void)path;
   (void)props;
@@ -331,337 +343,406 @@ static int assimp_survives(const char* path, const struct aiPropertyStore* props
 #endif
 }
 
-smg_result smgb_assimp_load(const char* path, float unit_scale,
-                            uint32_t animation_index, smgb_clip* out,
-                            smgb_error* err) {
-  const struct aiScene* scene = NULL;
-  struct aiPropertyStore* props = NULL;
-  const struct aiAnimation* anim;
-  flat_nodes nodes = {NULL, 0, 0};
-  smgb_clip clip;
-  smg_result res = SMG_ERROR_PARSE;
-  uint32_t i, c, J = 0, frames, f, stride, densest = 0;
-  int32_t root = -1;
-  double tps, t_min = 1e300, t_max = -1e300, rate, parent_scale, parent_q[4];
-  double scale, hips_y;
-  affine parent_global;
-  int32_t* joint_node = NULL;
-  double* rest_q = NULL;
-  double* rest_t = NULL;
-  const struct aiNodeAnim** chans = NULL;
-  const char* base;
+/* ---- import, step by step ------------------------------------------------ */
 
-  if (err) err->message[0] = '\0';
-  memset(&clip, 0, sizeof clip);
-  if (!path || !out || !isfinite(unit_scale) || unit_scale < 0.0f ||
-      unit_scale > 1e3f) {
-    smgb_imp_errorf(err, "%s: invalid argument to smgb_assimp_load",
-                    path ? path : "(null)");
-    return SMG_ERROR_INVALID_ARGUMENT;
+/* One file's import: the scene and what the steps below derive from it. */
+typedef struct assimp_import {
+  const char* path;
+  smgb_error* err;
+  const struct aiScene* scene;
+  const struct aiAnimation* anim;
+  double tps;                  /* animation ticks per second */
+  flat_nodes nodes;
+  int32_t root;                /* skeleton root (index in nodes) */
+  uint32_t J;
+  affine parent_global;        /* global transform of the root's parent */
+  double parent_scale, parent_q[4];
+  double* rest_q;              /* per joint: rest rotation */
+  double* rest_t;              /* per joint: rest translation */
+  const struct aiNodeAnim** chans; /* per joint: channel or NULL */
+  double t_min, t_max;         /* key time range, ticks */
+  uint32_t densest;            /* joint with the most rotation keys */
+  double rate;                 /* sampling rate, Hz */
+  smgb_clip clip;
+} assimp_import;
+
+/* The file read by assimp (after the probe: a file that crashes assimp
+ * is refused without reading it here). */
+static smg_result open_scene(assimp_import* a) {
+  struct aiPropertyStore* props;
+  FILE* fp = fopen(a->path, "rb");
+  if (!fp) {
+    smgb_imp_errorf(a->err, "%s: cannot open file", a->path);
+    return SMG_ERROR_IO;
   }
-  {
-    FILE* fp = fopen(path, "rb");
-    if (!fp) {
-      smgb_imp_errorf(err, "%s: cannot open file", path);
-      return SMG_ERROR_IO;
-    }
-    fclose(fp);
-  }
+  fclose(fp);
   props = aiCreatePropertyStore();
   if (props)
     aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, 0);
-  if (!assimp_survives(path, props)) {
+  if (!assimp_survives(a->path, props)) {
     if (props) aiReleasePropertyStore(props);
-    smgb_imp_errorf(err, "%s: assimp crashed reading the file (a malformed "
-                    "glTF/GLB/FBX file); nothing was imported", path);
+    smgb_imp_errorf(a->err, "%s: assimp crashed reading the file (a "
+                    "malformed glTF/GLB/FBX file); nothing was imported",
+                    a->path);
     return SMG_ERROR_PARSE;
   }
-  scene = aiImportFileExWithProperties(path, aiProcess_ValidateDataStructure,
-                                       NULL, props);
+  a->scene = aiImportFileExWithProperties(
+      a->path, aiProcess_ValidateDataStructure, NULL, props);
   if (props) aiReleasePropertyStore(props);
-  if (!scene) {
-    smgb_imp_errorf(err, "%s: assimp could not read the file: %s", path,
-                    aiGetErrorString());
+  if (!a->scene) {
+    smgb_imp_errorf(a->err, "%s: assimp could not read the file: %s",
+                    a->path, aiGetErrorString());
     return SMG_ERROR_PARSE;
   }
-  if (!scene->mRootNode || scene->mNumAnimations == 0 || !scene->mAnimations) {
-    smgb_imp_errorf(err, "%s: the file has no skeletal animation", path);
-    goto done;
-  }
-  if (animation_index >= scene->mNumAnimations) {
-    smgb_imp_errorf(err, "%s: animation %u requested, the file has %u", path,
-                    animation_index, scene->mNumAnimations);
-    res = SMG_ERROR_OUT_OF_RANGE;
-    goto done;
-  }
-  anim = scene->mAnimations[animation_index];
-  if (!anim || anim->mNumChannels == 0 || !anim->mChannels) {
-    smgb_imp_errorf(err, "%s: animation %u has no node channels", path,
-                    animation_index);
-    goto done;
-  }
-  tps = anim->mTicksPerSecond > 0.0 && isfinite(anim->mTicksPerSecond)
-            ? anim->mTicksPerSecond : 25.0; /* assimp's documented default */
+  return SMG_OK;
+}
 
-  if (!flatten(scene->mRootNode, &nodes)) {
-    smgb_imp_errorf(err, "%s: node hierarchy too large or out of memory", path);
-    res = SMG_ERROR_CAPACITY;
-    goto done;
+/* The requested animation and its tick rate. */
+static smg_result pick_animation(assimp_import* a, uint32_t index) {
+  const struct aiScene* scene = a->scene;
+  if (!scene->mRootNode || scene->mNumAnimations == 0 || !scene->mAnimations) {
+    smgb_imp_errorf(a->err, "%s: the file has no skeletal animation",
+                    a->path);
+    return SMG_ERROR_PARSE;
   }
-  /* Attach channels to nodes by name. */
-  for (c = 0; c < anim->mNumChannels; ++c) {
-    const struct aiNodeAnim* ch = anim->mChannels[c];
+  if (index >= scene->mNumAnimations) {
+    smgb_imp_errorf(a->err, "%s: animation %u requested, the file has %u",
+                    a->path, index, scene->mNumAnimations);
+    return SMG_ERROR_OUT_OF_RANGE;
+  }
+  a->anim = scene->mAnimations[index];
+  if (!a->anim || a->anim->mNumChannels == 0 || !a->anim->mChannels) {
+    smgb_imp_errorf(a->err, "%s: animation %u has no node channels", a->path,
+                    index);
+    return SMG_ERROR_PARSE;
+  }
+  a->tps = a->anim->mTicksPerSecond > 0.0 && isfinite(a->anim->mTicksPerSecond)
+               ? a->anim->mTicksPerSecond
+               : 25.0; /* assimp's documented default */
+  return SMG_OK;
+}
+
+/* The node hierarchy flattened, each animation channel attached to the
+ * node of its name, and the bones of skinned meshes marked (an unanimated
+ * root bone above the animated joints still belongs to the skeleton;
+ * static leaf bones such as BVH end sites do not). */
+static smg_result read_nodes(assimp_import* a) {
+  const struct aiScene* scene = a->scene;
+  flat_nodes* nodes = &a->nodes;
+  uint32_t i, c;
+  if (!flatten(scene->mRootNode, nodes)) {
+    smgb_imp_errorf(a->err, "%s: node hierarchy too large or out of memory",
+                    a->path);
+    return SMG_ERROR_CAPACITY;
+  }
+  for (c = 0; c < a->anim->mNumChannels; ++c) {
+    const struct aiNodeAnim* ch = a->anim->mChannels[c];
     if (!ch) continue;
     if (!finite_channel(ch)) {
-      smgb_imp_errorf(err, "%s: channel '%.60s' has non-finite or huge keys",
-                      path, ch->mNodeName.data);
-      goto done;
+      smgb_imp_errorf(a->err, "%s: channel '%.60s' has non-finite or huge "
+                      "keys", a->path, ch->mNodeName.data);
+      return SMG_ERROR_PARSE;
     }
-    for (i = 0; i < nodes.count; ++i) {
-      if (nodes.v[i].channel < 0 &&
-          strcmp(nodes.v[i].node->mName.data, ch->mNodeName.data) == 0) {
-        nodes.v[i].channel = (int32_t)c;
+    for (i = 0; i < nodes->count; ++i) {
+      if (nodes->v[i].channel < 0 &&
+          strcmp(nodes->v[i].node->mName.data, ch->mNodeName.data) == 0) {
+        nodes->v[i].channel = (int32_t)c;
         break;
       }
     }
   }
-  /* Bones of skinned meshes: an unanimated root bone above the animated
-   * joints still belongs to the skeleton (static leaf bones such as BVH end
-   * sites do not). */
   for (c = 0; c < scene->mNumMeshes && scene->mMeshes; ++c) {
     const struct aiMesh* mesh = scene->mMeshes[c];
     unsigned b;
     if (!mesh || !mesh->mBones) continue;
     for (b = 0; b < mesh->mNumBones; ++b) {
       if (!mesh->mBones[b]) continue;
-      for (i = 0; i < nodes.count; ++i) {
-        if (strcmp(nodes.v[i].node->mName.data, mesh->mBones[b]->mName.data) == 0) {
-          nodes.v[i].bone = 1;
+      for (i = 0; i < nodes->count; ++i) {
+        if (strcmp(nodes->v[i].node->mName.data,
+                   mesh->mBones[b]->mName.data) == 0) {
+          nodes->v[i].bone = 1;
           break;
         }
       }
     }
   }
-  /* Skeleton root: the lowest common ancestor of all animated nodes,
-   * raised to the topmost bone above it. */
-  for (i = 0; i < nodes.count; ++i) {
-    int32_t a, b;
-    if (nodes.v[i].channel < 0) continue;
+  return SMG_OK;
+}
+
+/* Skeleton root: the lowest common ancestor of all animated nodes, raised
+ * to the topmost bone above it. */
+static smg_result find_root(assimp_import* a) {
+  const flat_nodes* nodes = &a->nodes;
+  int32_t root = -1;
+  uint32_t i;
+  for (i = 0; i < nodes->count; ++i) {
+    int32_t x, y;
+    if (nodes->v[i].channel < 0) continue;
     if (root < 0) {
       root = (int32_t)i;
       continue;
     }
     /* LCA by walking up (depth-first order: ancestors have lower index). */
-    a = root;
-    b = (int32_t)i;
-    while (a != b) {
-      if (a > b) a = nodes.v[a].parent;
-      else b = nodes.v[b].parent;
-      if (a < 0 || b < 0) break;
+    x = root;
+    y = (int32_t)i;
+    while (x != y) {
+      if (x > y) x = nodes->v[x].parent;
+      else y = nodes->v[y].parent;
+      if (x < 0 || y < 0) break;
     }
-    root = a >= 0 && b >= 0 ? a : 0;
+    root = x >= 0 && y >= 0 ? x : 0;
   }
   if (root < 0) {
-    smgb_imp_errorf(err, "%s: no animation channel matches a node", path);
-    goto done;
+    smgb_imp_errorf(a->err, "%s: no animation channel matches a node",
+                    a->path);
+    return SMG_ERROR_PARSE;
   }
-  while (nodes.v[root].parent >= 0 && nodes.v[nodes.v[root].parent].bone)
-    root = nodes.v[root].parent;
-  /* Keep animated nodes under the root and their ancestors up to it. */
-  for (i = nodes.count; i-- > (uint32_t)root;) {
-    int32_t p;
-    if (nodes.v[i].channel < 0 && !nodes.v[i].keep && (int32_t)i != root)
-      continue;
-    nodes.v[i].keep = 1;
-    p = nodes.v[i].parent;
-    if ((int32_t)i != root && p >= root) nodes.v[p].keep = 1;
-  }
-  for (i = (uint32_t)root; i < nodes.count; ++i) {
-    int32_t a = (int32_t)i;
-    if (!nodes.v[i].keep) continue;
-    while (a > root) a = nodes.v[a].parent; /* is it below the root? */
-    if (a != root) {
-      nodes.v[i].keep = 0;
-      continue;
-    }
-    if (J >= SMGB_ASSIMP_MAX_JOINTS) {
-      smgb_imp_errorf(err, "%s: skeleton has more than %u joints", path,
-                      SMGB_ASSIMP_MAX_JOINTS);
-      res = SMG_ERROR_CAPACITY;
-      goto done;
-    }
-    nodes.v[i].joint = (int32_t)J++;
-  }
-  /* Global transform of the root's parent. */
-  memset(&parent_global, 0, sizeof parent_global);
-  parent_global.m[0] = parent_global.m[4] = parent_global.m[8] = 1.0;
-  {
-    int32_t a = nodes.v[root].parent;
-    while (a >= 0) {
-      affine local;
-      affine_from_ai(&nodes.v[a].node->mTransformation, &local);
-      affine_mul(&local, &parent_global, &parent_global);
-      a = nodes.v[a].parent;
-    }
-  }
-  if (!affine_rotation(&parent_global, &parent_scale, parent_q)) {
-    smgb_imp_errorf(err,
-                    "%s: the nodes above the skeleton root mirror or scale "
-                    "non-uniformly (unsupported)",
-                    path);
-    res = SMG_ERROR_UNSUPPORTED;
-    goto done;
-  }
+  while (nodes->v[root].parent >= 0 && nodes->v[nodes->v[root].parent].bone)
+    root = nodes->v[root].parent;
+  a->root = root;
+  return SMG_OK;
+}
 
-  /* Per-joint data. */
-  joint_node = (int32_t*)malloc(sizeof *joint_node * J);
-  rest_q = (double*)malloc(sizeof *rest_q * 4 * J);
-  rest_t = (double*)malloc(sizeof *rest_t * 3 * J);
-  chans = (const struct aiNodeAnim**)calloc(J, sizeof *chans);
-  clip.skeleton.joint_count = J;
-  clip.skeleton.names = (char(*)[SMGB_NAME_MAX])calloc(J, SMGB_NAME_MAX);
-  clip.skeleton.parents = (int32_t*)malloc(sizeof(int32_t) * J);
-  clip.skeleton.offsets = (float(*)[3])malloc(sizeof(float) * 3 * J);
-  if (!joint_node || !rest_q || !rest_t || !chans || !clip.skeleton.names ||
-      !clip.skeleton.parents || !clip.skeleton.offsets) {
-    smgb_imp_errorf(err, "%s: out of memory", path);
-    res = SMG_ERROR_OUT_OF_MEMORY;
-    goto done;
+/* Joints: the animated nodes under the root and their ancestors up to it,
+ * numbered in depth-first order. */
+static smg_result number_joints(assimp_import* a) {
+  flat_nodes* nodes = &a->nodes;
+  int32_t root = a->root;
+  uint32_t i;
+  for (i = nodes->count; i-- > (uint32_t)root;) {
+    int32_t p;
+    if (nodes->v[i].channel < 0 && !nodes->v[i].keep && (int32_t)i != root)
+      continue;
+    nodes->v[i].keep = 1;
+    p = nodes->v[i].parent;
+    if ((int32_t)i != root && p >= root) nodes->v[p].keep = 1;
   }
-  for (i = (uint32_t)root; i < nodes.count; ++i) {
-    int32_t j = nodes.v[i].joint, k;
+  for (i = (uint32_t)root; i < nodes->count; ++i) {
+    int32_t x = (int32_t)i;
+    if (!nodes->v[i].keep) continue;
+    while (x > root) x = nodes->v[x].parent; /* is it below the root? */
+    if (x != root) {
+      nodes->v[i].keep = 0;
+      continue;
+    }
+    if (a->J >= SMGB_ASSIMP_MAX_JOINTS) {
+      smgb_imp_errorf(a->err, "%s: skeleton has more than %u joints",
+                      a->path, SMGB_ASSIMP_MAX_JOINTS);
+      return SMG_ERROR_CAPACITY;
+    }
+    nodes->v[i].joint = (int32_t)a->J++;
+  }
+  return SMG_OK;
+}
+
+/* The nodes above the root (an FBX "Armature" with its axis conversion
+ * and centimetre scale) as one uniform scale and rotation. */
+static smg_result above_root(assimp_import* a) {
+  int32_t x = a->nodes.v[a->root].parent;
+  memset(&a->parent_global, 0, sizeof a->parent_global);
+  a->parent_global.m[0] = a->parent_global.m[4] = a->parent_global.m[8] = 1.0;
+  while (x >= 0) {
     affine local;
-    double s;
-    const char* nm;
-    if (j < 0) continue;
-    joint_node[j] = (int32_t)i;
-    nm = nodes.v[i].node->mName.data;
-    if (strlen(nm) >= SMGB_NAME_MAX || nm[0] == '\0') {
-      smgb_imp_errorf(err, "%s: joint name '%.60s' is empty or longer than %d "
-                      "characters", path, nm, SMGB_NAME_MAX - 1);
-      goto done;
-    }
-    for (k = 0; k < j; ++k) {
-      if (strcmp(clip.skeleton.names[k], nm) == 0) {
-        smgb_imp_errorf(err, "%s: duplicate joint name '%s'", path, nm);
-        goto done;
-      }
-    }
-    memcpy(clip.skeleton.names[j], nm, strlen(nm) + 1);
-    clip.skeleton.parents[j] =
-        (int32_t)i == root ? -1 : nodes.v[nodes.v[i].parent].joint;
-    affine_from_ai(&nodes.v[i].node->mTransformation, &local);
-    if (!affine_rotation(&local, &s, rest_q + 4 * j)) {
-      /* A scaled joint: keep its rotation only (scale ignored). */
-      double X[3] = {local.m[0], local.m[3], local.m[6]};
-      double Y[3] = {local.m[1], local.m[4], local.m[7]};
-      double Z[3] = {local.m[2], local.m[5], local.m[8]};
-      smgb_qfrom_axes(X, Y, Z, rest_q + 4 * j);
-    }
-    rest_t[3 * j + 0] = local.t[0];
-    rest_t[3 * j + 1] = local.t[1];
-    rest_t[3 * j + 2] = local.t[2];
-    if (nodes.v[i].channel >= 0) {
-      const struct aiNodeAnim* ch = anim->mChannels[nodes.v[i].channel];
-      chans[j] = ch;
-      if (ch->mNumRotationKeys > 0) {
-        if (ch->mRotationKeys[0].mTime < t_min) t_min = ch->mRotationKeys[0].mTime;
-        if (ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime > t_max)
-          t_max = ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime;
-        if (!chans[densest] || ch->mNumRotationKeys > chans[densest]->mNumRotationKeys)
-          densest = (uint32_t)j;
-      }
-      if (ch->mNumPositionKeys > 0) {
-        if (ch->mPositionKeys[0].mTime < t_min) t_min = ch->mPositionKeys[0].mTime;
-        if (ch->mPositionKeys[ch->mNumPositionKeys - 1].mTime > t_max)
-          t_max = ch->mPositionKeys[ch->mNumPositionKeys - 1].mTime;
-      }
-    }
+    affine_from_ai(&a->nodes.v[x].node->mTransformation, &local);
+    affine_mul(&local, &a->parent_global, &a->parent_global);
+    x = a->nodes.v[x].parent;
   }
-  if (!(t_max >= t_min)) t_min = t_max = 0.0;
-  /* Frame rate from the densest rotation channel's key spacing. */
-  rate = 30.0;
-  if (chans[densest] && chans[densest]->mNumRotationKeys >= 2) {
-    const struct aiNodeAnim* ch = chans[densest];
+  if (!affine_rotation(&a->parent_global, &a->parent_scale, a->parent_q)) {
+    smgb_imp_errorf(a->err, "%s: the nodes above the skeleton root mirror or "
+                    "scale non-uniformly (unsupported)", a->path);
+    return SMG_ERROR_UNSUPPORTED;
+  }
+  return SMG_OK;
+}
+
+/* The key time range, and the joint with the densest rotation keys. */
+static void note_key_times(assimp_import* a, uint32_t j,
+                           const struct aiNodeAnim* ch) {
+  if (ch->mNumRotationKeys > 0) {
+    const struct aiQuatKey* k = ch->mRotationKeys;
+    if (k[0].mTime < a->t_min) a->t_min = k[0].mTime;
+    if (k[ch->mNumRotationKeys - 1].mTime > a->t_max)
+      a->t_max = k[ch->mNumRotationKeys - 1].mTime;
+    if (!a->chans[a->densest] ||
+        ch->mNumRotationKeys > a->chans[a->densest]->mNumRotationKeys)
+      a->densest = j;
+  }
+  if (ch->mNumPositionKeys > 0) {
+    const struct aiVectorKey* k = ch->mPositionKeys;
+    if (k[0].mTime < a->t_min) a->t_min = k[0].mTime;
+    if (k[ch->mNumPositionKeys - 1].mTime > a->t_max)
+      a->t_max = k[ch->mNumPositionKeys - 1].mTime;
+  }
+}
+
+/* Joint j (node i): its unique name, parent, rest transform, channel. */
+static smg_result read_joint(assimp_import* a, uint32_t i, int32_t j) {
+  const node_info* n = &a->nodes.v[i];
+  smgb_skeleton* s = &a->clip.skeleton;
+  const char* nm = n->node->mName.data;
+  affine local;
+  double scale;
+  int32_t k;
+  if (strlen(nm) >= SMGB_NAME_MAX || nm[0] == '\0') {
+    smgb_imp_errorf(a->err, "%s: joint name '%.60s' is empty or longer than "
+                    "%d characters", a->path, nm, SMGB_NAME_MAX - 1);
+    return SMG_ERROR_PARSE;
+  }
+  for (k = 0; k < j; ++k)
+    if (strcmp(s->names[k], nm) == 0) {
+      smgb_imp_errorf(a->err, "%s: duplicate joint name '%s'", a->path, nm);
+      return SMG_ERROR_PARSE;
+    }
+  memcpy(s->names[j], nm, strlen(nm) + 1);
+  s->parents[j] = (int32_t)i == a->root ? -1 : a->nodes.v[n->parent].joint;
+  affine_from_ai(&n->node->mTransformation, &local);
+  if (!affine_rotation(&local, &scale, a->rest_q + 4 * j)) {
+    /* A scaled joint: keep its rotation only (scale ignored). */
+    double X[3] = {local.m[0], local.m[3], local.m[6]};
+    double Y[3] = {local.m[1], local.m[4], local.m[7]};
+    double Z[3] = {local.m[2], local.m[5], local.m[8]};
+    smgb_q_from_axes(X, Y, Z, a->rest_q + 4 * j);
+  }
+  a->rest_t[3 * j + 0] = local.t[0];
+  a->rest_t[3 * j + 1] = local.t[1];
+  a->rest_t[3 * j + 2] = local.t[2];
+  if (n->channel >= 0) {
+    const struct aiNodeAnim* ch = a->anim->mChannels[n->channel];
+    a->chans[j] = ch;
+    note_key_times(a, (uint32_t)j, ch);
+  }
+  return SMG_OK;
+}
+
+/* Every joint: the skeleton's names and parents, rest transforms and
+ * channels. */
+static smg_result read_joints(assimp_import* a) {
+  uint32_t i, J = a->J;
+  smgb_skeleton* s = &a->clip.skeleton;
+  smg_result r;
+  a->rest_q = (double*)malloc(sizeof *a->rest_q * 4 * J);
+  a->rest_t = (double*)malloc(sizeof *a->rest_t * 3 * J);
+  a->chans = (const struct aiNodeAnim**)calloc(J, sizeof *a->chans);
+  s->joint_count = J;
+  s->names = (char(*)[SMGB_NAME_MAX])calloc(J, SMGB_NAME_MAX);
+  s->parents = (int32_t*)malloc(sizeof(int32_t) * J);
+  s->offsets = (float(*)[3])malloc(sizeof(float) * 3 * J);
+  if (!a->rest_q || !a->rest_t || !a->chans || !s->names ||
+      !s->parents || !s->offsets) {
+    smgb_imp_errorf(a->err, "%s: out of memory", a->path);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  a->t_min = 1e300;
+  a->t_max = -1e300;
+  for (i = (uint32_t)a->root; i < a->nodes.count; ++i) {
+    int32_t j = a->nodes.v[i].joint;
+    if (j >= 0 && (r = read_joint(a, i, j)) != SMG_OK) return r;
+  }
+  if (!(a->t_max >= a->t_min)) a->t_min = a->t_max = 0.0;
+  return SMG_OK;
+}
+
+/* Sampling rate from the densest rotation channel's key spacing (snapped
+ * to an integer rate), and the clip's frames allocated. */
+static smg_result frame_timing(assimp_import* a) {
+  const struct aiNodeAnim* ch = a->chans[a->densest];
+  double nf;
+  uint32_t frames;
+  a->rate = 30.0;
+  if (ch && ch->mNumRotationKeys >= 2) {
     double span = ch->mRotationKeys[ch->mNumRotationKeys - 1].mTime -
                   ch->mRotationKeys[0].mTime;
     if (span > 0.0) {
-      double r = (ch->mNumRotationKeys - 1) * tps / span, ri = floor(r + 0.5);
-      rate = (ri >= 1.0 && fabs(r - ri) <= 1e-3 * ri) ? ri : r;
+      double r = (ch->mNumRotationKeys - 1) * a->tps / span,
+             ri = floor(r + 0.5);
+      a->rate = (ri >= 1.0 && fabs(r - ri) <= 1e-3 * ri) ? ri : r;
     }
   }
   /* Sparse keyframes (hand animation: a few keys per second) are sampled
    * at 30 Hz so the interpolation between keys is kept. */
-  if (rate < 24.0) rate = 30.0;
-  if (!(rate >= 1.0) || rate > 1000.0) {
-    smgb_imp_errorf(err, "%s: implausible key rate %.3g per second", path, rate);
-    goto done;
+  if (a->rate < 24.0) a->rate = 30.0;
+  if (!(a->rate >= 1.0) || a->rate > 1000.0) {
+    smgb_imp_errorf(a->err, "%s: implausible key rate %.3g per second",
+                    a->path, a->rate);
+    return SMG_ERROR_PARSE;
   }
-  {
-    double nf = floor((t_max - t_min) / tps * rate + 1e-6) + 1.0;
-    if (nf > SMGB_ASSIMP_MAX_FRAMES ||
-        nf * SMGB_STRIDE(J) * sizeof(float) > (double)SMGB_ASSIMP_MAX_POSE_BYTES) {
-      smgb_imp_errorf(err, "%s: animation too long (%.0f frames)", path, nf);
-      res = SMG_ERROR_CAPACITY;
-      goto done;
-    }
-    frames = (uint32_t)nf;
+  nf = floor((a->t_max - a->t_min) / a->tps * a->rate + 1e-6) + 1.0;
+  if (nf > SMGB_ASSIMP_MAX_FRAMES ||
+      nf * SMGB_STRIDE(a->J) * sizeof(float) >
+          (double)SMGB_ASSIMP_MAX_POSE_BYTES) {
+    smgb_imp_errorf(a->err, "%s: animation too long (%.0f frames)", a->path,
+                    nf);
+    return SMG_ERROR_CAPACITY;
   }
-  stride = SMGB_STRIDE(J);
-  clip.poses = (float*)malloc(sizeof(float) * (size_t)frames * stride);
-  if (!clip.poses) {
-    smgb_imp_errorf(err, "%s: out of memory for %u frames", path, frames);
-    res = SMG_ERROR_OUT_OF_MEMORY;
-    goto done;
+  frames = (uint32_t)nf;
+  a->clip.poses =
+      (float*)malloc(sizeof(float) * (size_t)frames * SMGB_STRIDE(a->J));
+  if (!a->clip.poses) {
+    smgb_imp_errorf(a->err, "%s: out of memory for %u frames", a->path,
+                    frames);
+    return SMG_ERROR_OUT_OF_MEMORY;
   }
-  clip.frame_count = frames;
-  clip.frame_rate = (float)rate;
+  a->clip.frame_count = frames;
+  a->clip.frame_rate = (float)a->rate;
+  return SMG_OK;
+}
 
-  /* Offsets (file units, times the parents' uniform scale) from the first
-   * frame; non-root translation must stay constant. */
-  for (i = 0; i < J; ++i) {
-    double t0[3] = {rest_t[3 * i], rest_t[3 * i + 1], rest_t[3 * i + 2]};
+/* Offsets (file units, times the parents' uniform scale) from the first
+ * frame; non-root translation must stay constant. */
+static smg_result read_offsets(assimp_import* a) {
+  smgb_skeleton* s = &a->clip.skeleton;
+  uint32_t i;
+  for (i = 0; i < a->J; ++i) {
+    const struct aiNodeAnim* ch = a->chans[i];
+    double t0[3] = {a->rest_t[3 * i], a->rest_t[3 * i + 1],
+                    a->rest_t[3 * i + 2]};
     /* The root's offset is informational (its position is per frame): keep
      * the rest transform, as the BVH reader keeps the root OFFSET. */
-    if (i > 0) sample_position(chans[i], t_min, t0);
-    clip.skeleton.offsets[i][0] = (float)(t0[0] * parent_scale);
-    clip.skeleton.offsets[i][1] = (float)(t0[1] * parent_scale);
-    clip.skeleton.offsets[i][2] = (float)(t0[2] * parent_scale);
-    if (i > 0 && chans[i] && chans[i]->mNumPositionKeys > 1) {
+    if (i > 0) sample_position(ch, a->t_min, t0);
+    s->offsets[i][0] = (float)(t0[0] * a->parent_scale);
+    s->offsets[i][1] = (float)(t0[1] * a->parent_scale);
+    s->offsets[i][2] = (float)(t0[2] * a->parent_scale);
+    if (i > 0 && ch && ch->mNumPositionKeys > 1) {
       uint32_t k;
-      double tol = 1e-4 + 1e-2 * sqrt(t0[0] * t0[0] + t0[1] * t0[1] + t0[2] * t0[2]);
-      for (k = 0; k < chans[i]->mNumPositionKeys; ++k) {
-        const struct aiVector3D* v = &chans[i]->mPositionKeys[k].mValue;
+      double tol =
+          1e-4 + 1e-2 * sqrt(t0[0] * t0[0] + t0[1] * t0[1] + t0[2] * t0[2]);
+      for (k = 0; k < ch->mNumPositionKeys; ++k) {
+        const struct aiVector3D* v = &ch->mPositionKeys[k].mValue;
         if (fabs(v->x - t0[0]) > tol || fabs(v->y - t0[1]) > tol ||
             fabs(v->z - t0[2]) > tol) {
-          smgb_imp_errorf(err,
-                          "%s: joint '%s' has animated translation (key %u); "
-                          "only the root may translate",
-                          path, clip.skeleton.names[i], k);
-          res = SMG_ERROR_UNSUPPORTED;
-          goto done;
+          smgb_imp_errorf(a->err, "%s: joint '%s' has animated translation "
+                          "(key %u); only the root may translate",
+                          a->path, s->names[i], k);
+          return SMG_ERROR_UNSUPPORTED;
         }
       }
     }
   }
-  for (f = 0; f < frames; ++f) {
-    double t = t_min + f * tps / rate;
-    float* pose = clip.poses + (size_t)f * stride;
-    if (t > t_max) t = t_max;
-    for (i = 0; i < J; ++i) {
-      double q[4] = {rest_q[4 * i], rest_q[4 * i + 1], rest_q[4 * i + 2],
-                     rest_q[4 * i + 3]};
-      sample_rotation(chans[i], t, q);
+  return SMG_OK;
+}
+
+/* Every frame sampled: root position through the nodes above the root,
+ * rotations slerped, each quaternion on the side of its predecessor. */
+static void sample_frames(assimp_import* a) {
+  uint32_t f, i, stride = SMGB_STRIDE(a->J);
+  for (f = 0; f < a->clip.frame_count; ++f) {
+    double t = a->t_min + f * a->tps / a->rate;
+    float* pose = a->clip.poses + (size_t)f * stride;
+    if (t > a->t_max) t = a->t_max;
+    for (i = 0; i < a->J; ++i) {
+      const double* rq = a->rest_q + 4 * i;
+      double q[4] = {rq[0], rq[1], rq[2], rq[3]};
+      sample_rotation(a->chans[i], t, q);
       if (i == 0) {
-        double p[3] = {rest_t[0], rest_t[1], rest_t[2]};
-        sample_position(chans[0], t, p);
-        affine_point(&parent_global, p, p);
+        double p[3] = {a->rest_t[0], a->rest_t[1], a->rest_t[2]};
+        sample_position(a->chans[0], t, p);
+        affine_point(&a->parent_global, p, p);
         pose[0] = (float)p[0];
         pose[1] = (float)p[1];
         pose[2] = (float)p[2];
-        smgb_qmul(parent_q, q, q);
+        smgb_q_mul(a->parent_q, q, q);
       }
-      smgb_qnormalize(q);
+      smgb_q_normalize(q);
       pose[3 + 4 * i + 0] = (float)q[0];
       pose[3 + 4 * i + 1] = (float)q[1];
       pose[3 + 4 * i + 2] = (float)q[2];
@@ -675,33 +756,65 @@ smg_result smgb_assimp_load(const char* path, float unit_scale,
       }
     }
   }
-  /* Units. */
-  hips_y = clip.poses[1];
-  scale = unit_scale > 0.0f ? unit_scale : guess_unit(&clip.skeleton, hips_y);
-  for (i = 0; i < J; ++i) {
-    clip.skeleton.offsets[i][0] = (float)(clip.skeleton.offsets[i][0] * scale);
-    clip.skeleton.offsets[i][1] = (float)(clip.skeleton.offsets[i][1] * scale);
-    clip.skeleton.offsets[i][2] = (float)(clip.skeleton.offsets[i][2] * scale);
+}
+
+/* File units to metres: unit_scale, or a guess from the leg length. */
+static void to_metres(assimp_import* a, float unit_scale) {
+  smgb_clip* c = &a->clip;
+  uint32_t f, i, stride = SMGB_STRIDE(a->J);
+  double scale = unit_scale > 0.0f ? unit_scale
+                                   : guess_unit(&c->skeleton, c->poses[1]);
+  for (i = 0; i < a->J; ++i) {
+    c->skeleton.offsets[i][0] = (float)(c->skeleton.offsets[i][0] * scale);
+    c->skeleton.offsets[i][1] = (float)(c->skeleton.offsets[i][1] * scale);
+    c->skeleton.offsets[i][2] = (float)(c->skeleton.offsets[i][2] * scale);
   }
-  for (f = 0; f < frames; ++f) {
-    float* pose = clip.poses + (size_t)f * stride;
+  for (f = 0; f < c->frame_count; ++f) {
+    float* pose = c->poses + (size_t)f * stride;
     pose[0] = (float)(pose[0] * scale);
     pose[1] = (float)(pose[1] * scale);
     pose[2] = (float)(pose[2] * scale);
   }
-  base = strrchr(path, '/');
-  snprintf(clip.name, sizeof clip.name, "%s", base ? base + 1 : path);
-  *out = clip;
-  memset(&clip, 0, sizeof clip);
-  res = SMG_OK;
+}
 
-done:
-  smgb_clip_free(&clip);
-  free(nodes.v);
-  free(joint_node);
-  free(rest_q);
-  free(rest_t);
-  free((void*)chans);
-  if (scene) aiReleaseImport(scene);
-  return res;
+smg_result smgb_assimp_load(const char* path, float unit_scale,
+                            uint32_t animation_index, smgb_clip* out,
+                            smgb_error* err) {
+  assimp_import a;
+  const char* base;
+  smg_result r;
+  if (err) err->message[0] = '\0';
+  if (!path || !out || !isfinite(unit_scale) || unit_scale < 0.0f ||
+      unit_scale > 1e3f) {
+    smgb_imp_errorf(err, "%s: invalid argument to smgb_assimp_load",
+                    path ? path : "(null)");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  memset(&a, 0, sizeof a);
+  a.path = path;
+  a.err = err;
+  r = open_scene(&a);
+  if (r == SMG_OK) r = pick_animation(&a, animation_index);
+  if (r == SMG_OK) r = read_nodes(&a);
+  if (r == SMG_OK) r = find_root(&a);
+  if (r == SMG_OK) r = number_joints(&a);
+  if (r == SMG_OK) r = above_root(&a);
+  if (r == SMG_OK) r = read_joints(&a);
+  if (r == SMG_OK) r = frame_timing(&a);
+  if (r == SMG_OK) r = read_offsets(&a);
+  if (r == SMG_OK) {
+    sample_frames(&a);
+    to_metres(&a, unit_scale);
+    base = strrchr(path, '/');
+    snprintf(a.clip.name, sizeof a.clip.name, "%s", base ? base + 1 : path);
+    *out = a.clip;
+    memset(&a.clip, 0, sizeof a.clip);
+  }
+  smgb_clip_free(&a.clip);
+  free(a.nodes.v);
+  free(a.rest_q);
+  free(a.rest_t);
+  free((void*)a.chans);
+  if (a.scene) aiReleaseImport(a.scene);
+  return r;
 }

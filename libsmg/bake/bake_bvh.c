@@ -33,6 +33,7 @@
 
 #include "bake_clip.h"
 #include "bake_import_util.h"
+#include "bake_math.h"
 
 #define SMGB_BVH_MAX_JOINTS 512u
 #define SMGB_BVH_MAX_FRAMES 10000000u
@@ -68,18 +69,6 @@ typedef struct bvh_lexer {
 static int is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' ||
          c == '\f';
-}
-
-/* ASCII case-insensitive equality: exporters disagree on "End Site" vs
- * "End site", "Xrotation" vs "XRotation". */
-static int ieq(const char* a, const char* b) {
-  for (; *a && *b; ++a, ++b) {
-    char x = *a, y = *b;
-    if (x >= 'A' && x <= 'Z') x = (char)(x - 'A' + 'a');
-    if (y >= 'A' && y <= 'Z') y = (char)(y - 'A' + 'a');
-    if (x != y) return 0;
-  }
-  return *a == *b;
 }
 
 /* Next whitespace-separated token ('{' and '}' always stand alone).
@@ -226,7 +215,7 @@ static int lex_number(bvh_lexer* lx, const char* what, double* out) {
 static int lex_expect(bvh_lexer* lx, const char* word, const char* context) {
   int r = lex_next(lx);
   if (r < 0) return 0;
-  if (r == 0 || !ieq(lx->tok, word)) {
+  if (r == 0 || !smgb_name_ieq(lx->tok, word)) {
     smgb_imp_errorf(lx->err, "%s:%u: expected '%s' %s, found '%s'", lx->name,
                     lx->tok_line, word, context, tok_show(lx));
     return 0;
@@ -239,7 +228,7 @@ static int channel_from_name(const char* s) {
                                        "Xrotation", "Yrotation", "Zrotation"};
   int i;
   for (i = 0; i < 6; ++i)
-    if (ieq(s, names[i])) return i;
+    if (smgb_name_ieq(s, names[i])) return i;
   return -1;
 }
 
@@ -359,7 +348,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       return 0;
     }
     if (in_end_site) {
-      if (ieq(lx->tok, "OFFSET") && !end_site_offset) {
+      if (smgb_name_ieq(lx->tok, "OFFSET") && !end_site_offset) {
         double tmp[3];
         if (!parse_offset(lx, tmp)) return 0;
         end_site_offset = 1;
@@ -379,7 +368,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       continue;
     }
-    if (ieq(lx->tok, "OFFSET")) {
+    if (smgb_name_ieq(lx->tok, "OFFSET")) {
       if (j->has_offset || j->has_children) {
         smgb_imp_errorf(lx->err, "%s:%u: misplaced or repeated OFFSET in '%s'",
                         lx->name, lx->tok_line, j->name);
@@ -387,7 +376,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
       }
       if (!parse_offset(lx, j->offset)) return 0;
       j->has_offset = 1;
-    } else if (ieq(lx->tok, "CHANNELS")) {
+    } else if (smgb_name_ieq(lx->tok, "CHANNELS")) {
       if (j->has_channels || j->has_children) {
         smgb_imp_errorf(lx->err,
                         "%s:%u: misplaced or repeated CHANNELS in '%s'",
@@ -395,7 +384,7 @@ static int parse_hierarchy(bvh_lexer* lx, bvh_hier* h) {
         return 0;
       }
       if (!parse_channels(lx, h, j)) return 0;
-    } else if (ieq(lx->tok, "JOINT") || ieq(lx->tok, "End") ||
+    } else if (smgb_name_ieq(lx->tok, "JOINT") || smgb_name_ieq(lx->tok, "End") ||
                strcmp(lx->tok, "}") == 0) {
       if (!j->has_offset) {
         smgb_imp_errorf(lx->err, "%s:%u: joint '%s' has no OFFSET", lx->name,
@@ -494,12 +483,12 @@ static void joint_rotation(const bvh_joint* j, const double* row, double q[4]) {
     int ch = j->channels[c];
     if (ch > CH_ZPOS) {
       double r[4];
-      smgb_qaxis(ch - CH_XROT, row[j->first_channel + c] * (SMGB_PI / 180.0),
+      smgb_q_axis(ch - CH_XROT, row[j->first_channel + c] * (SMGB_M_PI / 180.0),
                  r);
-      smgb_qmul(q, r, q);
+      smgb_q_mul(q, r, q);
     }
   }
-  smgb_qnormalize(q);
+  smgb_q_normalize(q);
 }
 
 /* Local translation of joint ji: its OFFSET with position channels
@@ -526,8 +515,8 @@ static void row_to_pose(const bvh_hier* h, const double* row, double scale,
     float* o = pose + 3 + 4 * (ji - h->root);
     joint_rotation(&h->joints[ji], row, q);
     if (ji == h->root && h->root > 0) {
-      smgb_qmul(h->fold_q, q, q);
-      smgb_qnormalize(q);
+      smgb_q_mul(h->fold_q, q, q);
+      smgb_q_normalize(q);
     }
     o[0] = (float)q[0];
     o[1] = (float)q[1];
@@ -536,7 +525,7 @@ static void row_to_pose(const bvh_hier* h, const double* row, double scale,
   }
   joint_translation(&h->joints[h->root], row, root);
   if (h->root > 0) {
-    smgb_qrot(h->fold_q, root, root);
+    smgb_q_rotate(h->fold_q, root, root);
     root[0] += h->fold_t[0];
     root[1] += h->fold_t[1];
     root[2] += h->fold_t[2];
@@ -554,13 +543,10 @@ static float rate_from_frame_time(double ft) {
   return (float)rate;
 }
 
-/* Guess file units -> metres from the rest skeleton: pick the common unit
- * (m, cm, mm, inch, CMU's 1/0.45 inch) that makes the leg (or, without named
- * legs, the hips height) closest to a human's ~0.85 m in log scale. */
+/* Guess file units -> metres from the rest skeleton's leg (or, without
+ * named legs, the hips height): smgb_unit_from_leg. */
 static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
-  static const double units[5] = {1.0, 0.01, 0.001, 0.0254, 0.056444};
-  double size = 0.0, best = 1.0, best_err = 1e300;
-  int i;
+  double size = 0.0;
   smgb_skeleton s;
   float(*offs)[3];
   char(*names)[SMGB_NAME_MAX];
@@ -593,15 +579,7 @@ static double guess_unit_scale(const bvh_hier* h, const double* first_row) {
       if (r->channels[k] == CH_YPOS && first_row)
         size = fabs(first_row[r->first_channel + k]) * 0.9;
   }
-  if (!(size > 0.0)) return 1.0;
-  for (i = 0; i < 5; ++i) {
-    double e = fabs(log(size * units[i] / 0.85));
-    if (e < best_err) {
-      best_err = e;
-      best = units[i];
-    }
-  }
-  return best;
+  return smgb_unit_from_leg(size);
 }
 
 /* Is column `col` constant over the clip (to float rounding)? */
@@ -648,12 +626,12 @@ static void fold_static_root(bvh_hier* h, const double* rows,
     if (!child_moves) return;
     joint_translation(j, rows, t);
     joint_rotation(j, rows, q);
-    smgb_qrot(h->fold_q, t, t);
+    smgb_q_rotate(h->fold_q, t, t);
     h->fold_t[0] += t[0];
     h->fold_t[1] += t[1];
     h->fold_t[2] += t[2];
-    smgb_qmul(h->fold_q, q, h->fold_q);
-    smgb_qnormalize(h->fold_q);
+    smgb_q_mul(h->fold_q, q, h->fold_q);
+    smgb_q_normalize(h->fold_q);
     h->root++;
   }
 }
@@ -717,212 +695,189 @@ static int fold_joint_positions(bvh_lexer* lx, bvh_hier* h,
   return 1;
 }
 
-smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
-                          float unit_scale, uint32_t skip_first_frame,
-                          smgb_clip* out, smgb_error* err) {
-  bvh_lexer lx;
-  bvh_hier h;
-  smg_result res = SMG_ERROR_PARSE;
-  double frames_d, ft, scale;
-  uint32_t frames, capacity, nread = 0, first, kept, ji, f;
-  uint32_t frames_line, stride, count;
-  double* rows = NULL;
-  size_t remaining, max_by_bytes;
-  smgb_clip clip;
-  const char* base;
+/* The MOTION section's rows: the declared frame count and time, then
+ * every frame line's channel values (frames * h->channels doubles). */
+typedef struct bvh_motion {
+  uint32_t frames;
+  uint32_t frames_line;  /* for errors about the frame count */
+  double frame_time;     /* seconds */
+  double* rows;
+} bvh_motion;
 
-  if (err) err->message[0] = '\0';
-  if (!out || (!text && size) || (unit_scale != 0.0f && !(unit_scale > 0.0f)) ||
-      !isfinite(unit_scale) || unit_scale > 1e3f) {
-    smgb_imp_errorf(err, "%s: invalid argument to smgb_bvh_parse",
-                    name ? name : "(bvh)");
-    return SMG_ERROR_INVALID_ARGUMENT;
+/* The frame count after "Frames:": a whole, positive number whose poses
+ * fit in memory. */
+static smg_result read_frame_count(bvh_lexer* lx, const bvh_hier* h,
+                                   bvh_motion* m) {
+  /* Not lex_number: a frame count may legitimately exceed 1e6 and then
+   * deserves the "too many frames" capacity error below. */
+  char* endp = NULL;
+  double n;
+  int r = lex_next(lx);
+  if (r < 0) return SMG_ERROR_PARSE;
+  n = r ? strtod(lx->tok, &endp) : 0.0;
+  if (r == 0 || endp != lx->tok + lx->tok_len || !isfinite(n)) {
+    smgb_imp_errorf(lx->err, "%s:%u: frame count '%s' is not a number",
+                    lx->name, lx->tok_line, tok_show(lx));
+    return SMG_ERROR_PARSE;
   }
-  if (!name) name = "(bvh)";
-  memset(&clip, 0, sizeof clip);
-  memset(&h, 0, sizeof h);
-  memset(&lx, 0, sizeof lx);
-  lx.p = text;
-  lx.end = text + size;
-  lx.line = 1;
-  lx.name = name;
-  lx.err = err;
-
-  h.joints = (bvh_joint*)malloc(sizeof *h.joints * SMGB_BVH_MAX_JOINTS);
-  if (!h.joints) {
-    smgb_imp_errorf(err, "%s: out of memory", name);
-    return SMG_ERROR_OUT_OF_MEMORY;
+  if (n != floor(n) || n < 0) {
+    smgb_imp_errorf(lx->err, "%s:%u: frame count '%s' is not a whole number",
+                    lx->name, lx->tok_line, lx->tok);
+    return SMG_ERROR_PARSE;
   }
-  if (!parse_hierarchy(&lx, &h)) goto done;
+  if (n == 0) {
+    smgb_imp_errorf(lx->err, "%s:%u: the clip has zero frames", lx->name,
+                    lx->tok_line);
+    return SMG_ERROR_PARSE;
+  }
+  if (n > SMGB_BVH_MAX_FRAMES ||
+      n * SMGB_STRIDE(h->count) * sizeof(float) >
+          (double)SMGB_BVH_MAX_POSE_BYTES) {
+    smgb_imp_errorf(lx->err, "%s:%u: too many frames (%.0f frames of %u "
+                    "joints exceed the 1 GiB limit)",
+                    lx->name, lx->tok_line, n, h->count);
+    return SMG_ERROR_CAPACITY;
+  }
+  m->frames = (uint32_t)n;
+  return SMG_OK;
+}
 
-  /* MOTION / Frames: N / Frame Time: T */
-  if (lex_next(&lx) < 0) goto done;
-  if (!ieq(lx.tok, "MOTION")) {
-    if (ieq(lx.tok, "ROOT"))
-      smgb_imp_errorf(err, "%s:%u: more than one ROOT is not supported", name,
-                      lx.tok_line);
+/* "MOTION / Frames: N / Frame Time: T", the last on a line of its own. */
+static smg_result read_motion_header(bvh_lexer* lx, const bvh_hier* h,
+                                     bvh_motion* m) {
+  smg_result r;
+  if (lex_next(lx) < 0) return SMG_ERROR_PARSE;
+  if (!smgb_name_ieq(lx->tok, "MOTION")) {
+    if (smgb_name_ieq(lx->tok, "ROOT"))
+      smgb_imp_errorf(lx->err, "%s:%u: more than one ROOT is not supported",
+                      lx->name, lx->tok_line);
     else
-      smgb_imp_errorf(err,
+      smgb_imp_errorf(lx->err,
                       "%s:%u: expected 'MOTION' after the hierarchy, found "
                       "'%s' (missing MOTION section or unbalanced braces)",
-                      name, lx.tok_line, tok_show(&lx));
-    goto done;
+                      lx->name, lx->tok_line, tok_show(lx));
+    return SMG_ERROR_PARSE;
   }
-  if (!lex_expect(&lx, "Frames:", "after MOTION (missing frame count)"))
-    goto done;
-  frames_line = lx.tok_line;
-  {
-    /* Not lex_number: a frame count may legitimately exceed 1e6 and then
-     * deserves the "too many frames" capacity error below. */
-    char* endp = NULL;
-    int r = lex_next(&lx);
-    if (r < 0) goto done;
-    frames_d = r ? strtod(lx.tok, &endp) : 0.0;
-    if (r == 0 || endp != lx.tok + lx.tok_len || !isfinite(frames_d)) {
-      smgb_imp_errorf(err, "%s:%u: frame count '%s' is not a number", name,
-                      lx.tok_line, tok_show(&lx));
-      goto done;
+  if (!lex_expect(lx, "Frames:", "after MOTION (missing frame count)"))
+    return SMG_ERROR_PARSE;
+  m->frames_line = lx->tok_line;
+  if ((r = read_frame_count(lx, h, m)) != SMG_OK) return r;
+  if (!lex_expect(lx, "Frame", "after the frame count (missing Frame Time)") ||
+      !lex_expect(lx, "Time:", "after 'Frame'") ||
+      !lex_number(lx, "frame time", &m->frame_time))
+    return SMG_ERROR_PARSE;
+  if (!(m->frame_time > 0.0) || m->frame_time > 10.0) {
+    smgb_imp_errorf(lx->err, "%s:%u: frame time %s must be in (0, 10] "
+                    "seconds", lx->name, lx->tok_line, lx->tok);
+    return SMG_ERROR_PARSE;
+  }
+  while (lx->p < lx->end && *lx->p != '\n') {
+    if (!is_space(*lx->p)) {
+      smgb_imp_errorf(lx->err, "%s:%u: unexpected text after the frame time",
+                      lx->name, lx->line);
+      return SMG_ERROR_PARSE;
     }
+    lx->p++;
   }
-  if (frames_d != floor(frames_d) || frames_d < 0) {
-    smgb_imp_errorf(err, "%s:%u: frame count '%s' is not a whole number",
-                    name, lx.tok_line, lx.tok);
-    goto done;
+  if (lx->p < lx->end) {
+    lx->p++;
+    lx->line++;
   }
-  if (frames_d == 0) {
-    smgb_imp_errorf(err, "%s:%u: the clip has zero frames", name, lx.tok_line);
-    goto done;
-  }
-  if (frames_d > SMGB_BVH_MAX_FRAMES ||
-      frames_d * SMGB_STRIDE(h.count) * sizeof(float) >
-          (double)SMGB_BVH_MAX_POSE_BYTES) {
-    smgb_imp_errorf(err,
-                    "%s:%u: too many frames (%.0f frames of %u joints exceed "
-                    "the 1 GiB limit)",
-                    name, lx.tok_line, frames_d, h.count);
-    res = SMG_ERROR_CAPACITY;
-    goto done;
-  }
-  frames = (uint32_t)frames_d;
-  if (!lex_expect(&lx, "Frame", "after the frame count (missing Frame Time)"))
-    goto done;
-  if (!lex_expect(&lx, "Time:", "after 'Frame'")) goto done;
-  if (!lex_number(&lx, "frame time", &ft)) goto done;
-  if (!(ft > 0.0) || ft > 10.0) {
-    smgb_imp_errorf(err, "%s:%u: frame time %s must be in (0, 10] seconds",
-                    name, lx.tok_line, lx.tok);
-    goto done;
-  }
-  /* The rest of the Frame Time line must be empty. */
-  while (lx.p < lx.end && *lx.p != '\n') {
-    if (!is_space(*lx.p)) {
-      smgb_imp_errorf(err, "%s:%u: unexpected text after the frame time",
-                      name, lx.line);
-      goto done;
-    }
-    lx.p++;
-  }
-  if (lx.p < lx.end) {
-    lx.p++;
-    lx.line++;
-  }
+  return SMG_OK;
+}
 
+/* Every frame line: as many values as the hierarchy has channels, as many
+ * lines as "Frames:" declares (blank lines skipped). */
+static smg_result read_frame_rows(bvh_lexer* lx, const bvh_hier* h,
+                                  bvh_motion* m) {
   /* Never allocate more than the remaining text could hold: every value
    * takes at least one character plus a separator. */
-  remaining = (size_t)(lx.end - lx.p);
-  max_by_bytes = remaining / (2u * (size_t)h.channels) + 1u;
-  capacity = frames < max_by_bytes ? frames : (uint32_t)max_by_bytes;
-  rows = (double*)malloc(sizeof *rows * (size_t)capacity * h.channels);
-  if (!rows) {
-    smgb_imp_errorf(err, "%s: out of memory for %u frames", name, capacity);
-    res = SMG_ERROR_OUT_OF_MEMORY;
-    goto done;
+  size_t remaining = (size_t)(lx->end - lx->p);
+  size_t max_by_bytes = remaining / (2u * (size_t)h->channels) + 1u;
+  uint32_t nread = 0;
+  uint32_t capacity =
+      m->frames < max_by_bytes ? m->frames : (uint32_t)max_by_bytes;
+  m->rows = (double*)malloc(sizeof *m->rows * (size_t)capacity * h->channels);
+  if (!m->rows) {
+    smgb_imp_errorf(lx->err, "%s: out of memory for %u frames", lx->name,
+                    capacity);
+    return SMG_ERROR_OUT_OF_MEMORY;
   }
-  while (lx.p < lx.end) {
-    uint32_t line = lx.line;
+  while (lx->p < lx->end) {
+    uint32_t line = lx->line;
     long n;
-    double* row = nread < capacity ? rows + (size_t)nread * h.channels : NULL;
+    double* row =
+        nread < capacity ? m->rows + (size_t)nread * h->channels : NULL;
     double scratch[1];
     if (!row) {
       /* Either more lines than Frames: says, or a blank tail. */
-      const char* q = lx.p;
-      while (q < lx.end && *q != '\n' && is_space(*q)) q++;
-      if (q < lx.end && *q != '\n') {
-        smgb_imp_errorf(err,
-                        "%s:%u: more frame lines than 'Frames: %u' (line %u) "
-                        "declares",
-                        name, line, frames, frames_line);
-        goto done;
+      const char* q = lx->p;
+      while (q < lx->end && *q != '\n' && is_space(*q)) q++;
+      if (q < lx->end && *q != '\n') {
+        smgb_imp_errorf(lx->err, "%s:%u: more frame lines than 'Frames: %u' "
+                        "(line %u) declares",
+                        lx->name, line, m->frames, m->frames_line);
+        return SMG_ERROR_PARSE;
       }
-      n = read_row(&lx, scratch, 0);
+      n = read_row(lx, scratch, 0);
     } else {
-      n = read_row(&lx, row, h.channels);
+      n = read_row(lx, row, h->channels);
     }
-    lx.line++;
-    if (n < 0) goto done;
+    lx->line++;
+    if (n < 0) return SMG_ERROR_PARSE;
     if (n == 0) continue; /* blank line */
-    if ((uint32_t)n != h.channels) {
-      smgb_imp_errorf(err,
-                      "%s:%u: frame %u has %s%ld values, the hierarchy "
-                      "declares %u channels",
-                      name, line, nread, (uint32_t)n > h.channels ? "more than " : "",
-                      (uint32_t)n > h.channels ? (long)h.channels : n,
-                      h.channels);
-      goto done;
+    if ((uint32_t)n != h->channels) {
+      smgb_imp_errorf(lx->err, "%s:%u: frame %u has %s%ld values, the "
+                      "hierarchy declares %u channels",
+                      lx->name, line, nread,
+                      (uint32_t)n > h->channels ? "more than " : "",
+                      (uint32_t)n > h->channels ? (long)h->channels : n,
+                      h->channels);
+      return SMG_ERROR_PARSE;
     }
     nread++;
   }
-  if (nread != frames) {
-    smgb_imp_errorf(err,
-                    "%s:%u: file ends after %u frame lines but 'Frames: %u' "
-                    "(line %u) declares %u (truncated file?)",
-                    name, lx.line, nread, frames, frames_line, frames);
-    goto done;
+  if (nread != m->frames) {
+    smgb_imp_errorf(lx->err, "%s:%u: file ends after %u frame lines but "
+                    "'Frames: %u' (line %u) declares %u (truncated file?)",
+                    lx->name, lx->line, nread, m->frames, m->frames_line,
+                    m->frames);
+    return SMG_ERROR_PARSE;
   }
-  fold_static_root(&h, rows, frames);
-  if (!fold_joint_positions(&lx, &h, rows, frames)) {
-    res = SMG_ERROR_UNSUPPORTED;
-    goto done;
-  }
+  return SMG_OK;
+}
 
-  first = skip_first_frame ? 1u : 0u;
-  if (frames <= first) {
-    smgb_imp_errorf(err,
-                    "%s:%u: no frames left after skipping the first (T-pose) "
-                    "frame",
-                    name, frames_line);
-    goto done;
-  }
-  kept = frames - first;
-  scale = unit_scale > 0.0f ? (double)unit_scale
-                            : guess_unit_scale(&h, rows + (size_t)first * h.channels);
-
-  /* Build the clip: joints h.root.. (static joints above were folded). */
-  res = SMG_ERROR_OUT_OF_MEMORY;
-  count = h.count - h.root;
-  clip.skeleton.joint_count = count;
-  clip.skeleton.names =
-      (char(*)[SMGB_NAME_MAX])calloc(count, sizeof *clip.skeleton.names);
-  clip.skeleton.parents = (int32_t*)calloc(count, sizeof(int32_t));
-  clip.skeleton.offsets = (float(*)[3])calloc(count, sizeof *clip.skeleton.offsets);
-  stride = SMGB_STRIDE(count);
-  clip.poses = (float*)malloc(sizeof(float) * (size_t)kept * stride);
-  if (!clip.skeleton.names || !clip.skeleton.parents ||
-      !clip.skeleton.offsets || !clip.poses) {
+/* The clip of joints h->root.. (static joints above were folded) from
+ * rows first.., in metres (`scale` per file unit). */
+static smg_result build_clip(const bvh_hier* h, const bvh_motion* m,
+                             uint32_t first, double scale, const char* name,
+                             smgb_error* err, smgb_clip* clip) {
+  uint32_t ji, f, kept = m->frames - first, count = h->count - h->root;
+  uint32_t stride = SMGB_STRIDE(count);
+  const char* base;
+  clip->skeleton.joint_count = count;
+  clip->skeleton.names =
+      (char(*)[SMGB_NAME_MAX])calloc(count, sizeof *clip->skeleton.names);
+  clip->skeleton.parents = (int32_t*)calloc(count, sizeof(int32_t));
+  clip->skeleton.offsets =
+      (float(*)[3])calloc(count, sizeof *clip->skeleton.offsets);
+  clip->poses = (float*)malloc(sizeof(float) * (size_t)kept * stride);
+  if (!clip->skeleton.names || !clip->skeleton.parents ||
+      !clip->skeleton.offsets || !clip->poses) {
     smgb_imp_errorf(err, "%s: out of memory", name);
-    goto done;
+    return SMG_ERROR_OUT_OF_MEMORY;
   }
   for (ji = 0; ji < count; ++ji) {
-    const bvh_joint* j = &h.joints[h.root + ji];
-    memcpy(clip.skeleton.names[ji], j->name, SMGB_NAME_MAX);
-    clip.skeleton.parents[ji] = ji == 0 ? -1 : j->parent - (int32_t)h.root;
-    clip.skeleton.offsets[ji][0] = (float)(j->offset[0] * scale);
-    clip.skeleton.offsets[ji][1] = (float)(j->offset[1] * scale);
-    clip.skeleton.offsets[ji][2] = (float)(j->offset[2] * scale);
+    const bvh_joint* j = &h->joints[h->root + ji];
+    memcpy(clip->skeleton.names[ji], j->name, SMGB_NAME_MAX);
+    clip->skeleton.parents[ji] = ji == 0 ? -1 : j->parent - (int32_t)h->root;
+    clip->skeleton.offsets[ji][0] = (float)(j->offset[0] * scale);
+    clip->skeleton.offsets[ji][1] = (float)(j->offset[1] * scale);
+    clip->skeleton.offsets[ji][2] = (float)(j->offset[2] * scale);
   }
   for (f = 0; f < kept; ++f) {
-    float* pose = clip.poses + (size_t)f * stride;
-    row_to_pose(&h, rows + (size_t)(f + first) * h.channels, scale, pose);
+    float* pose = clip->poses + (size_t)f * stride;
+    row_to_pose(h, m->rows + (size_t)(f + first) * h->channels, scale, pose);
     if (f > 0) {
       /* Hemisphere continuity: q and -q are the same rotation; keep
        * consecutive frames on the same side so interpolation is short. */
@@ -936,20 +891,74 @@ smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
       }
     }
   }
-  clip.frame_count = kept;
-  clip.frame_rate = rate_from_frame_time(ft);
+  clip->frame_count = kept;
+  clip->frame_rate = rate_from_frame_time(m->frame_time);
   base = strrchr(name, '/');
-  base = base ? base + 1 : name;
-  snprintf(clip.name, sizeof clip.name, "%s", base);
-  *out = clip;
-  memset(&clip, 0, sizeof clip);
-  res = SMG_OK;
+  snprintf(clip->name, sizeof clip->name, "%s", base ? base + 1 : name);
+  return SMG_OK;
+}
 
-done:
+smg_result smgb_bvh_parse(const char* text, size_t size, const char* name,
+                          float unit_scale, uint32_t skip_first_frame,
+                          smgb_clip* out, smgb_error* err) {
+  bvh_lexer lx;
+  bvh_hier h;
+  bvh_motion m;
+  smgb_clip clip;
+  smg_result r;
+  uint32_t first = skip_first_frame ? 1u : 0u;
+
+  if (err) err->message[0] = '\0';
+  if (!out || (!text && size) || (unit_scale != 0.0f && !(unit_scale > 0.0f)) ||
+      !isfinite(unit_scale) || unit_scale > 1e3f) {
+    smgb_imp_errorf(err, "%s: invalid argument to smgb_bvh_parse",
+                    name ? name : "(bvh)");
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  if (!name) name = "(bvh)";
+  memset(&clip, 0, sizeof clip);
+  memset(&h, 0, sizeof h);
+  memset(&m, 0, sizeof m);
+  memset(&lx, 0, sizeof lx);
+  lx.p = text;
+  lx.end = text + size;
+  lx.line = 1;
+  lx.name = name;
+  lx.err = err;
+
+  h.joints = (bvh_joint*)malloc(sizeof *h.joints * SMGB_BVH_MAX_JOINTS);
+  if (!h.joints) {
+    smgb_imp_errorf(err, "%s: out of memory", name);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  r = parse_hierarchy(&lx, &h) ? SMG_OK : SMG_ERROR_PARSE;
+  if (r == SMG_OK) r = read_motion_header(&lx, &h, &m);
+  if (r == SMG_OK) r = read_frame_rows(&lx, &h, &m);
+  if (r == SMG_OK) {
+    fold_static_root(&h, m.rows, m.frames);
+    if (!fold_joint_positions(&lx, &h, m.rows, m.frames))
+      r = SMG_ERROR_UNSUPPORTED;
+  }
+  if (r == SMG_OK && m.frames <= first) {
+    smgb_imp_errorf(err, "%s:%u: no frames left after skipping the first "
+                    "(T-pose) frame", name, m.frames_line);
+    r = SMG_ERROR_PARSE;
+  }
+  if (r == SMG_OK) {
+    double scale =
+        unit_scale > 0.0f
+            ? (double)unit_scale
+            : guess_unit_scale(&h, m.rows + (size_t)first * h.channels);
+    r = build_clip(&h, &m, first, scale, name, err, &clip);
+  }
+  if (r == SMG_OK) {
+    *out = clip;
+    memset(&clip, 0, sizeof clip);
+  }
   smgb_clip_free(&clip);
-  free(rows);
+  free(m.rows);
   free(h.joints);
-  return res;
+  return r;
 }
 
 /* Read a whole file (bounded by SMGB_BVH_MAX_FILE_BYTES). */
@@ -1126,10 +1135,10 @@ smg_result smgb_bvh_save(const char* path, const smgb_clip* clip,
       double q[4], z, y, x;
       q[0] = pose[3 + 4 * j]; q[1] = pose[4 + 4 * j];
       q[2] = pose[5 + 4 * j]; q[3] = pose[6 + 4 * j];
-      smgb_qnormalize(q);
-      smgb_qto_euler_zyx(q, &z, &y, &x);
-      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_PI),
-              y * (180.0 / SMGB_PI), x * (180.0 / SMGB_PI));
+      smgb_q_normalize(q);
+      smgb_q_to_euler_zyx(q, &z, &y, &x);
+      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_M_PI),
+              y * (180.0 / SMGB_M_PI), x * (180.0 / SMGB_M_PI));
     }
     fputc('\n', fp);
   }

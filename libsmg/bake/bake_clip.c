@@ -13,6 +13,7 @@
 #include "bake_clip.h"
 #include "bake_horn.h"
 #include "bake_import_util.h"
+#include "bake_math.h"
 
 /* ---- clip ---------------------------------------------------------------- */
 
@@ -112,7 +113,7 @@ smg_result smgb_clip_resample(const smgb_clip* src, float frame_rate,
         qa[k] = a[3 + 4 * j + k];
         qb[k] = b[3 + 4 * j + k];
       }
-      smgb_qslerp(qa, qb, t, qo);
+      smgb_q_slerp(qa, qb, t, qo);
       /* Stay in qa's hemisphere so the output stays continuous. */
       if (qo[0] * qa[0] + qo[1] * qa[1] + qo[2] * qa[2] + qo[3] * qa[3] < 0)
         for (k = 0; k < 4; ++k) qo[k] = -qo[k];
@@ -136,7 +137,7 @@ static double angle_between(const double a[3], const double b[3]) {
   double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
   double lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
   double c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
-  return acos(c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c) * (180.0 / SMGB_PI);
+  return acos(c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c) * (180.0 / SMGB_M_PI);
 }
 
 /* Shortest rotation taking direction a to direction b. */
@@ -159,7 +160,7 @@ static void shortest_arc(const double a[3], const double b[3], double q[4]) {
     q[2] = (a[0] * b[1] - a[1] * b[0]) / (la * lb);
     q[3] = 1.0 + d;
   }
-  smgb_qnormalize(q);
+  smgb_q_normalize(q);
 }
 
 static int is_identity(const double q[4]) {
@@ -180,7 +181,7 @@ static void mean_rotations(const smgb_clip* c, double (*mean)[4]) {
       sg = sg < 0.0 ? -1.0 : 1.0;
       m[0] += sg * q[0]; m[1] += sg * q[1]; m[2] += sg * q[2]; m[3] += sg * q[3];
     }
-    smgb_qnormalize(m);
+    smgb_q_normalize(m);
   }
 }
 
@@ -254,7 +255,7 @@ static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
         memcpy(from + 3 * (n + i), a + 6 * i + 3, sizeof(double) * 3);
       }
       smgb_horn(from, from + 3 * n, NULL, n, Q[j]);
-      smgb_qnormalize(Q[j]);
+      smgb_q_normalize(Q[j]);
       free(from);
     } else if (mean && a) {
       /* M = Q_parent^-1 (S mean_partner S): the mirrored mean before Q_j.
@@ -263,25 +264,25 @@ static void mirror_corrections(const smgb_clip* c, const int32_t* partner,
        * of (M base)^-1 mean_j about the child's direction. */
       const double* mp = mean[partner[j]];
       double mir[4] = {mp[0], -mp[1], -mp[2], mp[3]}, inv[4], M[4], D[4];
-      smgb_qconj(qp, inv);
-      smgb_qmul(inv, mir, M);
+      smgb_q_conj(qp, inv);
+      smgb_q_mul(inv, mir, M);
       if (n == 0) {
-        smgb_qconj(M, inv);
-        smgb_qmul(inv, mean[j], Q[j]);
+        smgb_q_conj(M, inv);
+        smgb_q_mul(inv, mean[j], Q[j]);
       } else {
         double base[4], axis[3], len, t, tw[4];
         shortest_arc(a, a + 3, base);
-        smgb_qmul(M, base, D);
-        smgb_qconj(D, inv);
-        smgb_qmul(inv, mean[j], D);
+        smgb_q_mul(M, base, D);
+        smgb_q_conj(D, inv);
+        smgb_q_mul(inv, mean[j], D);
         len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
         axis[0] = a[0] / len; axis[1] = a[1] / len; axis[2] = a[2] / len;
         t = 2.0 * atan2(D[0] * axis[0] + D[1] * axis[1] + D[2] * axis[2],
                         D[3]);
-        smgb_qaxis_angle(axis, t, tw);
-        smgb_qmul(base, tw, Q[j]);
+        smgb_q_axis_angle(axis, t, tw);
+        smgb_q_mul(base, tw, Q[j]);
       }
-      smgb_qnormalize(Q[j]);
+      smgb_q_normalize(Q[j]);
     }
   }
   for (j = 0; j < J; ++j) fix[j] = !is_identity(Q[j]);
@@ -369,11 +370,11 @@ smg_result smgb_clip_mirror_partners(const smgb_clip* src,
         double m[4] = {q[0], -q[1], -q[2], q[3]};
         if (p >= 0 && fix[p]) {
           double inv[4];
-          smgb_qconj(Q[p], inv);
-          smgb_qmul(inv, m, m);
+          smgb_q_conj(Q[p], inv);
+          smgb_q_mul(inv, m, m);
         }
-        if (fix[j]) smgb_qmul(m, Q[j], m);
-        smgb_qnormalize(m);
+        if (fix[j]) smgb_q_mul(m, Q[j], m);
+        smgb_q_normalize(m);
         d[0] = (float)m[0];
         d[1] = (float)m[1];
         d[2] = (float)m[2];

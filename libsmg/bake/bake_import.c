@@ -17,24 +17,13 @@
 
 #include "bake_clip.h"
 #include "bake_import.h"
+#include "bake_import_util.h"
 #include "bake_pool.h"
 #include "bake_retarget.h"
 
 static const char* base_name(const char* path) {
   const char* s = strrchr(path, '/');
   return s ? s + 1 : path;
-}
-
-static int has_ext(const char* path, const char* ext) {
-  size_t n = strlen(path), e = strlen(ext);
-  size_t i;
-  if (n < e) return 0;
-  for (i = 0; i < e; ++i) {
-    char c = path[n - e + i];
-    if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
-    if (c != ext[i]) return 0;
-  }
-  return 1;
 }
 
 /* `file` joined to the description's data folder unless absolute. */
@@ -255,7 +244,7 @@ static smg_result read_clip(smgb_bake* b, const smg_bake_desc* desc,
     snprintf(job->name, sizeof job->name, "%.63s",
              d->name ? d->name : base_name(job->path));
     job->source = job->path;
-    if (has_ext(job->path, ".bvh"))
+    if (smgb_has_ext(job->path, ".bvh"))
       r = smgb_bvh_load(job->path, d->unit_scale, d->skip_first_frame,
                         &job->clip, &err);
     else

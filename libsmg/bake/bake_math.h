@@ -1,8 +1,9 @@
 /*
- * bake_math.h - small double-precision helpers for the graph stages of the
- * baker: quaternions (x,y,z,w; v' = q v q*; mul(a,b) applies b then a) and
- * 2-D ground transforms (x, z, heading; heading h faces (sin h, 0, cos h),
- * i.e. a rotation of h about +Y). static inline: no symbols exported.
+ * bake_math.h - the baker's double-precision helpers, for the importers
+ * and the graph stages alike: quaternions (x,y,z,w; v' = q v q*;
+ * mul(a,b) applies b then a) and 2-D ground transforms (x, z, heading;
+ * heading h faces (sin h, 0, cos h), i.e. a rotation of h about +Y).
+ * static inline: no symbols exported.
  */
 #ifndef BAKE_MATH_H
 #define BAKE_MATH_H
@@ -64,6 +65,84 @@ static inline void smgb_q_slerp(const double a[4], const double b[4],
   }
   for (i = 0; i < 4; ++i) o[i] = wa * a[i] + s * wb * b[i];
   smgb_q_normalize(o);
+}
+
+/* Rotation of `radians` about coordinate axis 0 (x), 1 (y) or 2 (z). */
+static inline void smgb_q_axis(int axis, double radians, double q[4]) {
+  double s = sin(0.5 * radians);
+  q[0] = q[1] = q[2] = 0.0;
+  q[axis] = s;
+  q[3] = cos(0.5 * radians);
+}
+
+/* Rotation about an arbitrary unit axis. */
+static inline void smgb_q_axis_angle(const double axis[3], double radians,
+                                    double q[4]) {
+  double s = sin(0.5 * radians);
+  q[0] = axis[0] * s; q[1] = axis[1] * s; q[2] = axis[2] * s;
+  q[3] = cos(0.5 * radians);
+}
+
+/* Euler angles (radians) such that R(q) = Rz(z) * Ry(y) * Rx(x), i.e. the BVH
+ * channel order "Zrotation Yrotation Xrotation". */
+static inline void smgb_q_to_euler_zyx(const double q[4], double* z, double* y,
+                                      double* x) {
+  double qx = q[0], qy = q[1], qz = q[2], qw = q[3];
+  /* Rotation matrix entries needed for R = Rz Ry Rx:
+   * r20 = -sin(y), r21 = cos(y) sin(x), r22 = cos(y) cos(x),
+   * r10 = cos(y) sin(z), r00 = cos(y) cos(z). */
+  double r00 = 1.0 - 2.0 * (qy * qy + qz * qz);
+  double r10 = 2.0 * (qx * qy + qw * qz);
+  double r20 = 2.0 * (qx * qz - qw * qy);
+  double r21 = 2.0 * (qy * qz + qw * qx);
+  double r22 = 1.0 - 2.0 * (qx * qx + qy * qy);
+  double sy = -r20;
+  if (sy > 1.0) sy = 1.0;
+  if (sy < -1.0) sy = -1.0;
+  *y = asin(sy);
+  if (fabs(sy) < 0.9999999) {
+    *x = atan2(r21, r22);
+    *z = atan2(r10, r00);
+  } else {
+    /* Gimbal lock: only z - x (or z + x) is defined; put it all in z. */
+    double r01 = 2.0 * (qx * qy - qw * qz);
+    double r11 = 1.0 - 2.0 * (qx * qx + qz * qz);
+    *x = 0.0;
+    *z = atan2(-r01, r11);
+  }
+}
+
+/* Quaternion of the rotation matrix whose columns are the images of the x,
+ * y and z axes (Shepperd's method: stable for every rotation). */
+static inline void smgb_q_from_axes(const double X[3], const double Y[3],
+                                   const double Z[3], double q[4]) {
+  double m00 = X[0], m11 = Y[1], m22 = Z[2], tr = m00 + m11 + m22;
+  if (tr > 0.0) {
+    double s = sqrt(tr + 1.0) * 2.0;
+    q[3] = 0.25 * s;
+    q[0] = (Y[2] - Z[1]) / s;
+    q[1] = (Z[0] - X[2]) / s;
+    q[2] = (X[1] - Y[0]) / s;
+  } else if (m00 > m11 && m00 > m22) {
+    double s = sqrt(1.0 + m00 - m11 - m22) * 2.0;
+    q[3] = (Y[2] - Z[1]) / s;
+    q[0] = 0.25 * s;
+    q[1] = (Y[0] + X[1]) / s;
+    q[2] = (Z[0] + X[2]) / s;
+  } else if (m11 > m22) {
+    double s = sqrt(1.0 + m11 - m00 - m22) * 2.0;
+    q[3] = (Z[0] - X[2]) / s;
+    q[0] = (Y[0] + X[1]) / s;
+    q[1] = 0.25 * s;
+    q[2] = (Z[1] + Y[2]) / s;
+  } else {
+    double s = sqrt(1.0 + m22 - m00 - m11) * 2.0;
+    q[3] = (X[1] - Y[0]) / s;
+    q[0] = (Z[0] + X[2]) / s;
+    q[1] = (Z[1] + Y[2]) / s;
+    q[2] = 0.25 * s;
+  }
+  smgb_q_normalize(q);
 }
 
 static inline double smgb_wrap_angle(double a) {

@@ -58,48 +58,59 @@ void smgb_pool_derive(smgb_bake* b, uint32_t first, uint32_t count) {
   }
 }
 
+smgb_pool_clip* smgb_pool_new_clip(smgb_bake* b, const char* name,
+                                   uint32_t count, uint32_t label,
+                                   uint32_t flags, uint32_t source_clip) {
+  smgb_pool_clip* c;
+  if (b->clip_count == b->clip_cap) {
+    uint32_t cap = b->clip_cap ? b->clip_cap * 2 : 16;
+    smgb_pool_clip* nc = realloc(b->clips, cap * sizeof *nc);
+    if (!nc) {
+      smgb_fail(&b->report, "out of memory (clip table)");
+      return NULL;
+    }
+    b->clips = nc;
+    b->clip_cap = cap;
+  }
+  c = &b->clips[b->clip_count];
+  memset(c, 0, sizeof *c);
+  snprintf(c->name, sizeof c->name, "%s", name);
+  c->first = b->frame_count;
+  c->count = count;
+  c->label = label;
+  c->flags = flags;
+  c->source_clip = source_clip == SMGI_NONE ? b->clip_count : source_clip;
+  ++b->clip_count;
+  return c;
+}
+
 smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
                               const char* name, uint32_t label,
                               uint32_t flags, uint32_t source_clip) {
   smgb_pool_clip* c;
-  uint32_t f;
+  uint32_t f, index;
   smg_result r;
   if (clip->skeleton.joint_count != b->J) {
     smgb_fail(&b->report, "%s: %u joints, reference skeleton has %u", name,
               clip->skeleton.joint_count, b->J);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  if (b->clip_count == b->clip_cap) {
-    uint32_t cap = b->clip_cap ? b->clip_cap * 2 : 16;
-    smgb_pool_clip* nc = realloc(b->clips, cap * sizeof *nc);
-    if (!nc) {
-      smgb_fail(&b->report, "out of memory (clip table)");
-      return SMG_ERROR_OUT_OF_MEMORY;
-    }
-    b->clips = nc;
-    b->clip_cap = cap;
-  }
   if ((r = smgb_pool_reserve(b, clip->frame_count)) != SMG_OK) return r;
-  c = &b->clips[b->clip_count];
-  memset(c, 0, sizeof *c);
-  snprintf(c->name, sizeof c->name, "%s", name);
-  c->first = b->frame_count;
-  c->count = clip->frame_count;
-  c->label = label;
-  c->flags = flags;
-  c->source_clip = source_clip == SMGI_NONE ? b->clip_count : source_clip;
+  c = smgb_pool_new_clip(b, name, clip->frame_count, label, flags,
+                         source_clip);
+  if (!c) return SMG_ERROR_OUT_OF_MEMORY;
+  index = (uint32_t)(c - b->clips);
   memcpy(b->poses + (size_t)b->frame_count * b->stride, clip->poses,
          (size_t)clip->frame_count * b->stride * sizeof(float));
   for (f = 0; f < clip->frame_count; ++f) {
     smgi_frame* fr = &b->frames[b->frame_count + f];
     memset(fr, 0, sizeof *fr);
-    fr->clip = b->clip_count;
+    fr->clip = index;
     fr->phase = -1.0f;
   }
   b->frame_count += clip->frame_count;
   smgb_pool_derive(b, c->first, c->count);
-  ++b->clip_count;
-  smgb_contacts_clip(b, b->clip_count - 1);
+  smgb_contacts_clip(b, index);
   return SMG_OK;
 }
 

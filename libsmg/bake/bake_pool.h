@@ -14,6 +14,12 @@ smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
                               const char* name, uint32_t label,
                               uint32_t flags, uint32_t source_clip);
 smg_result smgb_pool_reserve(smgb_bake* b, uint32_t frames);
+/* A new entry of the clip table for `count` frames from the pool's end
+ * (the caller appends them); source_clip SMGI_NONE = itself. NULL (and
+ * the failure reported) when the table cannot grow. */
+smgb_pool_clip* smgb_pool_new_clip(smgb_bake* b, const char* name,
+                                   uint32_t count, uint32_t label,
+                                   uint32_t flags, uint32_t source_clip);
 /* Recompute FK positions and root2d of pool frames [first, first+count). */
 void smgb_pool_derive(smgb_bake* b, uint32_t first, uint32_t count);
 uint32_t smgb_pool_clip_of(const smgb_bake* b, uint32_t frame);

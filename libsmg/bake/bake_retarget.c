@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "bake_import_util.h"
+#include "bake_math.h"
 #include "bake_retarget.h"
 
 #define RULE_REST 0    /* unpaired: rest relative to the parent */
@@ -39,17 +40,6 @@
 #define RULE_END 3
 
 /* ---- rigs ------------------------------------------------------------- */
-
-static int has_ext(const char* path, const char* ext) {
-  size_t n = strlen(path), e = strlen(ext), i;
-  if (n < e) return 0;
-  for (i = 0; i < e; ++i) {
-    char c = path[n - e + i];
-    if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
-    if (c != ext[i]) return 0;
-  }
-  return 1;
-}
 
 smg_result smgb_rig_from_pose(const smgb_skeleton* s, const float* pose,
                               smgb_skeleton* out) {
@@ -89,7 +79,7 @@ smg_result smgb_rig_load(const char* path, float unit_scale,
     return SMG_ERROR_INVALID_ARGUMENT;
   }
   memset(&c, 0, sizeof c);
-  if (has_ext(path, ".bvh")) {
+  if (smgb_has_ext(path, ".bvh")) {
     /* BVH rest = the OFFSET pose: offsets are world-aligned already. */
     r = smgb_bvh_load(path, unit_scale, 0, &c, err);
     if (r == SMG_OK) r = smgb_skeleton_copy(&c.skeleton, out);
@@ -157,7 +147,7 @@ static void q_arc(const double u[3], const double v[3], double q[4]) {
   }
   v_cross(u, v, c);
   q[0] = c[0]; q[1] = c[1]; q[2] = c[2]; q[3] = 1.0 + d;
-  smgb_qnormalize(q);
+  smgb_q_normalize(q);
 }
 
 /* Rotation whose columns are the orthonormal frame (lateral, primary,
@@ -173,7 +163,7 @@ static int q_frame(const double primary[3], const double lateral[3],
   x[2] = lateral[2] - d * y[2];
   if (v_len(x) < 0.2 * v_len(lateral) || !v_unit(x)) return 0;
   v_cross(x, y, z);
-  smgb_qfrom_axes(x, y, z, q);
+  smgb_q_from_axes(x, y, z, q);
   return 1;
 }
 
@@ -186,15 +176,7 @@ static const char* bare_name(const char* n) {
 }
 
 static int same_name(const char* a, const char* b) {
-  a = bare_name(a);
-  b = bare_name(b);
-  for (; *a && *b; ++a, ++b) {
-    char x = *a, y = *b;
-    if (x >= 'A' && x <= 'Z') x = (char)(x - 'A' + 'a');
-    if (y >= 'A' && y <= 'Z') y = (char)(y - 'A' + 'a');
-    if (x != y) return 0;
-  }
-  return *a == *b;
+  return smgb_name_ieq(bare_name(a), bare_name(b));
 }
 
 /* map[t] = source joint paired with target joint t, or -1: by body role,
@@ -442,8 +424,8 @@ static void plan_rules(rt_plan* p, const smgb_skeleton* src,
          * motion decides alone, plan_align) */
         p->rest_frame[t] = (uint8_t)q_frame(cs, ls, qs);
         if (p->rest_frame[t]) {
-          smgb_qconj(p->tframe[t], qi);
-          smgb_qmul(qs, qi, p->align[t]);
+          smgb_q_conj(p->tframe[t], qi);
+          smgb_q_mul(qs, qi, p->align[t]);
         }
       }
     }
@@ -537,8 +519,8 @@ static void plan_align(rt_plan* p, const float* fkp, const float* fkw,
       src_dir(fkp, S, f, p->map[t], p->send[t], d);
       if (!v_unit(d)) continue;
       src_rot(fkw, S, f, p->map[t], ws);
-      smgb_qconj(ws, wi);
-      smgb_qrot(wi, d, d);
+      smgb_q_conj(ws, wi);
+      smgb_q_rotate(wi, d, d);
       sum[0] += d[0];
       sum[1] += d[1];
       sum[2] += d[2];
@@ -558,13 +540,13 @@ static void plan_align(rt_plan* p, const float* fkp, const float* fkw,
         src_dir(fkp, S, f, p->fsrc[t][2], p->fsrc[t][1], l);
         if (!q_frame(c, l, tmp)) continue;
         src_rot(fkw, S, f, p->map[t], ws);
-        smgb_qconj(ws, wi);
-        smgb_qmul(wi, tmp, q);
+        smgb_q_conj(ws, wi);
+        smgb_q_mul(wi, tmp, q);
         q_accumulate(sum, q, 1.0);
       }
       if (q_mean(sum)) {
-        smgb_qconj(p->tframe[t], tmp);
-        smgb_qmul(sum, tmp, q);
+        smgb_q_conj(p->tframe[t], tmp);
+        smgb_q_mul(sum, tmp, q);
         /* the identity pose's frame is kept when the motion agrees with
          * it: a frame through helper joints (CMU's pelvis to spine runs
          * through the animated LowerBack) moves with the motion, and its
@@ -577,29 +559,29 @@ static void plan_align(rt_plan* p, const float* fkp, const float* fkw,
       for (f = 0; f < frames; ++f) {
         src_rot(fkw, S, f, p->map[t], ws);
         src_rot(fkw, S, f, p->map[b], q);
-        smgb_qconj(ws, wi);
-        smgb_qmul(wi, q, tmp);
+        smgb_q_conj(ws, wi);
+        smgb_q_mul(wi, q, tmp);
         q_accumulate(sum, tmp, 1.0);
       }
       if (q_mean(sum))
-        smgb_qmul(sum, p->align[b], p->align[t]);
+        smgb_q_mul(sum, p->align[b], p->align[t]);
       else
         memcpy(p->align[t], p->align[b], sizeof tmp);
     } else if (p->rule[t] == RULE_SWING && b >= 0) {
       double r0i[4], ai[4], d;
       q_arc(p->dir[t], p->sdir[t], tmp);
-      smgb_qconj(tmp, r0i);
-      smgb_qconj(p->align[b], ai);
+      smgb_q_conj(tmp, r0i);
+      smgb_q_conj(p->align[b], ai);
       for (f = 0; f < frames; ++f) {
         double wa[4], ls[4], li[4], db[3], sw[4], w;
         /* the source joint seen from its aligned paired ancestor, whose
          * target counterpart is at rest (world-aligned: identity) */
         src_rot(fkw, S, f, p->map[b], wa);
         src_rot(fkw, S, f, p->map[t], ws);
-        smgb_qconj(wa, wi);
-        smgb_qmul(wi, ws, tmp);
-        smgb_qmul(ai, tmp, ls);
-        smgb_qrot(ls, p->sdir[t], db);
+        smgb_q_conj(wa, wi);
+        smgb_q_mul(wi, ws, tmp);
+        smgb_q_mul(ai, tmp, ls);
+        smgb_q_rotate(ls, p->sdir[t], db);
         w = 0.5 * (1.0 + v_dot(db, p->dir[t]));
         w *= w;
         w *= w;
@@ -610,17 +592,17 @@ static void plan_align(rt_plan* p, const float* fkp, const float* fkw,
          * joint: Ls^-1 * arc(rest, bone); its twist about the rest bone
          * relative to the shortest arc between the two bone directions */
         q_arc(p->dir[t], db, sw);
-        smgb_qconj(ls, li);
-        smgb_qmul(li, sw, tmp);
-        smgb_qmul(r0i, tmp, q);
+        smgb_q_conj(ls, li);
+        smgb_q_mul(li, sw, tmp);
+        smgb_q_mul(r0i, tmp, q);
         d = 2.0 * atan2(v_dot(q, p->dir[t]), q[3]);
         sum[0] += w * cos(d);
         sum[1] += w * sin(d);
       }
       if (sum[0] * sum[0] + sum[1] * sum[1] > 1e-24) {
-        smgb_qaxis_angle(p->dir[t], atan2(sum[1], sum[0]), q);
+        smgb_q_axis_angle(p->dir[t], atan2(sum[1], sum[0]), q);
         q_arc(p->dir[t], p->sdir[t], tmp);
-        smgb_qmul(tmp, q, p->align[t]);
+        smgb_q_mul(tmp, q, p->align[t]);
       }
     }
   }
@@ -746,7 +728,7 @@ static void target_positions(const smgb_skeleton* tgt, const double root[3],
   for (t = 1; t < tgt->joint_count; ++t) {
     uint32_t a = (uint32_t)tgt->parents[t];
     double o[3] = {tgt->offsets[t][0], tgt->offsets[t][1], tgt->offsets[t][2]};
-    smgb_qrot(w + 4 * a, o, o);
+    smgb_q_rotate(w + 4 * a, o, o);
     pt[3 * t + 0] = pt[3 * a + 0] + o[0];
     pt[3 * t + 1] = pt[3 * a + 1] + o[1];
     pt[3 * t + 2] = pt[3 * a + 2] + o[2];
@@ -771,7 +753,7 @@ static void solve_leg(const int32_t leg[3], const double goal[3], double* w,
   v_cross(ha, hk, n);
   if (v_len(n) < 1e-6 * a * a) {
     double f[3] = {0.0, 0.0, 1.0};
-    smgb_qrot(w, f, f); /* joint 0 is the pelvis */
+    smgb_q_rotate(w, f, f); /* joint 0 is the pelvis */
     v_cross(ha, f, n);
   }
   if (!v_unit(n)) return;
@@ -780,22 +762,22 @@ static void solve_leg(const int32_t leg[3], const double goal[3], double* w,
   c = (a * a + d * d - b * b) / (2.0 * a * d);
   alpha = acos(c < -1.0 ? -1.0 : c > 1.0 ? 1.0 : c);
   v_unit(hg);
-  smgb_qaxis_angle(n, alpha, qn);
-  smgb_qrot(qn, hg, th); /* new thigh direction */
+  smgb_q_axis_angle(n, alpha, qn);
+  smgb_q_rotate(qn, hg, th); /* new thigh direction */
   v_unit(hk);
   q_arc(hk, th, r1);
   nk[0] = H[0] + a * th[0];
   nk[1] = H[1] + a * th[1];
   nk[2] = H[2] + a * th[2];
   v_unit(ka);
-  smgb_qrot(r1, ka, s1);
+  smgb_q_rotate(r1, ka, s1);
   v_sub(goal, nk, s2);
   if (!v_unit(s2)) return;
   q_arc(s1, s2, r2);
-  smgb_qmul(r1, w + 4 * leg[0], tmp);
+  smgb_q_mul(r1, w + 4 * leg[0], tmp);
   memcpy(w + 4 * leg[0], tmp, sizeof tmp);
-  smgb_qmul(r1, w + 4 * leg[1], tmp);
-  smgb_qmul(r2, tmp, w + 4 * leg[1]);
+  smgb_q_mul(r1, w + 4 * leg[1], tmp);
+  smgb_q_mul(r2, tmp, w + 4 * leg[1]);
 }
 
 static void retarget_frame(const rt_plan* p, const smgb_skeleton* tgt,
@@ -809,16 +791,16 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* tgt,
     int k;
     if (s < 0) continue;
     for (k = 0; k < 4; ++k) ws[k] = sc->ws[4 * s + k];
-    smgb_qmul(ws, p->align[t], w);
+    smgb_q_mul(ws, p->align[t], w);
     if (p->rule[t] == RULE_SWING) {
       int32_t sb = p->send[t];
       double u[3], v[3], q[4], tmp[4];
-      smgb_qrot(w, p->dir[t], u);
+      smgb_q_rotate(w, p->dir[t], u);
       for (k = 0; k < 3; ++k)
         v[k] = (double)sc->ps[3 * sb + k] - sc->ps[3 * s + k];
       if (v_unit(u) && v_unit(v)) {
         q_arc(u, v, q);
-        smgb_qmul(q, w, tmp);
+        smgb_q_mul(q, w, tmp);
         memcpy(w, tmp, sizeof tmp);
       }
     }
@@ -851,10 +833,10 @@ static void retarget_frame(const rt_plan* p, const smgb_skeleton* tgt,
     if (t == 0) {
       memcpy(q, sc->w, sizeof q);
     } else {
-      smgb_qconj(sc->w + 4 * (uint32_t)tgt->parents[t], ci);
-      smgb_qmul(ci, sc->w + 4 * t, q);
+      smgb_q_conj(sc->w + 4 * (uint32_t)tgt->parents[t], ci);
+      smgb_q_mul(ci, sc->w + 4 * t, q);
     }
-    smgb_qnormalize(q);
+    smgb_q_normalize(q);
     for (k = 0; k < 4; ++k) out[3 + 4 * t + k] = (float)q[k];
   }
 }

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bake_import_util.h"
+#include "bake_math.h"
 #include "bake_skeleton.h"
 
 void smgb_skeleton_free(smgb_skeleton* s) {
@@ -81,7 +81,7 @@ void smgb_fk(const smgb_skeleton* s, const float* pose, float* out_positions,
     double q[4], *w = W + 4 * j;
     int k;
     for (k = 0; k < 4; ++k) q[k] = pose[3 + 4 * j + k];
-    smgb_qnormalize(q);
+    smgb_q_normalize(q);
     if (j == 0 || s->parents[j] < 0 || (uint32_t)s->parents[j] >= j) {
       for (k = 0; k < 4; ++k) w[k] = q[k];
       out_positions[3 * j + 0] = pose[0];
@@ -90,11 +90,11 @@ void smgb_fk(const smgb_skeleton* s, const float* pose, float* out_positions,
     } else {
       uint32_t p = (uint32_t)s->parents[j];
       double off[3] = {s->offsets[j][0], s->offsets[j][1], s->offsets[j][2]};
-      smgb_qrot(W + 4 * p, off, off);
+      smgb_q_rotate(W + 4 * p, off, off);
       out_positions[3 * j + 0] = (float)(out_positions[3 * p + 0] + off[0]);
       out_positions[3 * j + 1] = (float)(out_positions[3 * p + 1] + off[1]);
       out_positions[3 * j + 2] = (float)(out_positions[3 * p + 2] + off[2]);
-      smgb_qmul(W + 4 * p, q, w);
+      smgb_q_mul(W + 4 * p, q, w);
     }
     if (out_rotations)
       for (k = 0; k < 4; ++k) out_rotations[4 * j + k] = (float)w[k];

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "bake_import_util.h"
+#include "bake_math.h"
 #include "bake_synthetic.h"
 
 #define J_COUNT 31
@@ -165,9 +166,26 @@ static void foot_at(const gait* g, int f, double t, double a[3],
   footprint(g, f, m + 1.0, p1, &h1);
   a[0] = p0[0] + (p1[0] - p0[0]) * e;
   a[2] = p0[1] + (p1[1] - p0[1]) * e;
-  a[1] = ANKLE_H + g->lift * sin(SMGB_PI * s) * sin(SMGB_PI * s);
+  a[1] = ANKLE_H + g->lift * sin(SMGB_M_PI * s) * sin(SMGB_M_PI * s);
   *heading = h0 + (h1 - h0) * e;
-  *pitch = 0.35 * sin(SMGB_PI * s) * (1.0 - s);
+  *pitch = 0.35 * sin(SMGB_M_PI * s) * (1.0 - s);
+}
+
+/* World rotation of a leg bone along unit direction `b` (its local -Y),
+ * with its local +Z in the leg plane toward `fwd`. */
+static void bone_rotation(const double b[3], const double fwd[3],
+                          double q[4]) {
+  double X[3], Y[3], Z[3], dot, pn;
+  int i;
+  for (i = 0; i < 3; ++i) Y[i] = -b[i];
+  dot = fwd[0] * Y[0] + fwd[1] * Y[1] + fwd[2] * Y[2];
+  for (i = 0; i < 3; ++i) Z[i] = fwd[i] - dot * Y[i];
+  pn = sqrt(Z[0] * Z[0] + Z[1] * Z[1] + Z[2] * Z[2]);
+  for (i = 0; i < 3; ++i) Z[i] /= pn;
+  X[0] = Y[1] * Z[2] - Y[2] * Z[1];
+  X[1] = Y[2] * Z[0] - Y[0] * Z[2];
+  X[2] = Y[0] * Z[1] - Y[1] * Z[0];
+  smgb_q_from_axes(X, Y, Z, q);
 }
 
 /* Two-bone IK: hip at `hip`, ankle target `a`, knee bending toward `fwd`.
@@ -176,7 +194,7 @@ static void leg_ik(const double hip[3], const double a[3], const double fwd[3],
                    double w_thigh[4], double w_shank[4]) {
   double d[3] = {a[0] - hip[0], a[1] - hip[1], a[2] - hip[2]};
   double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  double ax[3], pole[3], pn, x, y, knee[3], b[3], X[3], Y[3], Z[3], dot;
+  double ax[3], pole[3], pn, x, y, knee[3], b[3], dot;
   const double l1 = THIGH, l2 = SHIN, reach = (THIGH + SHIN) * 0.99999;
   int i;
   if (len < 1e-9) len = 1e-9;
@@ -190,28 +208,12 @@ static void leg_ik(const double hip[3], const double a[3], const double fwd[3],
   x = (l1 * l1 - l2 * l2 + len * len) / (2.0 * len);
   y = sqrt(l1 * l1 - x * x > 0.0 ? l1 * l1 - x * x : 0.0);
   for (i = 0; i < 3; ++i) knee[i] = hip[i] + ax[i] * x + pole[i] * y;
-  /* Thigh: local -Y along hip->knee, local +Z in the leg plane toward fwd. */
+  /* Thigh along hip->knee, shank along knee->ankle (the target, up to the
+   * reach clamp). */
   for (i = 0; i < 3; ++i) b[i] = (knee[i] - hip[i]) / l1;
-  for (i = 0; i < 3; ++i) Y[i] = -b[i];
-  dot = fwd[0] * Y[0] + fwd[1] * Y[1] + fwd[2] * Y[2];
-  for (i = 0; i < 3; ++i) Z[i] = fwd[i] - dot * Y[i];
-  pn = sqrt(Z[0] * Z[0] + Z[1] * Z[1] + Z[2] * Z[2]);
-  for (i = 0; i < 3; ++i) Z[i] /= pn;
-  X[0] = Y[1] * Z[2] - Y[2] * Z[1];
-  X[1] = Y[2] * Z[0] - Y[0] * Z[2];
-  X[2] = Y[0] * Z[1] - Y[1] * Z[0];
-  smgb_qfrom_axes(X, Y, Z, w_thigh);
-  /* Shank: local -Y along knee->ankle (the target, up to the reach clamp). */
+  bone_rotation(b, fwd, w_thigh);
   for (i = 0; i < 3; ++i) b[i] = (hip[i] + ax[i] * len - knee[i]) / l2;
-  for (i = 0; i < 3; ++i) Y[i] = -b[i];
-  dot = fwd[0] * Y[0] + fwd[1] * Y[1] + fwd[2] * Y[2];
-  for (i = 0; i < 3; ++i) Z[i] = fwd[i] - dot * Y[i];
-  pn = sqrt(Z[0] * Z[0] + Z[1] * Z[1] + Z[2] * Z[2]);
-  for (i = 0; i < 3; ++i) Z[i] /= pn;
-  X[0] = Y[1] * Z[2] - Y[2] * Z[1];
-  X[1] = Y[2] * Z[0] - Y[0] * Z[2];
-  X[2] = Y[0] * Z[1] - Y[1] * Z[0];
-  smgb_qfrom_axes(X, Y, Z, w_shank);
+  bone_rotation(b, fwd, w_shank);
 }
 
 static void put_q(float* pose, int j, const double q[4]) {
@@ -224,25 +226,25 @@ static void put_q(float* pose, int j, const double q[4]) {
 /* q = Ry(y) * Rx(x) * Rz(z) */
 static void q_yxz(double y, double x, double z, double q[4]) {
   double a[4], b[4];
-  smgb_qaxis(1, y, a);
-  smgb_qaxis(0, x, b);
-  smgb_qmul(a, b, q);
-  smgb_qaxis(2, z, b);
-  smgb_qmul(q, b, q);
+  smgb_q_axis(1, y, a);
+  smgb_q_axis(0, x, b);
+  smgb_q_mul(a, b, q);
+  smgb_q_axis(2, z, b);
+  smgb_q_mul(q, b, q);
 }
 
 /* Arm rotation: lower the arm by `down` (rad, toward -Y), then swing it
  * forward by `fwd` about the x axis; side = +1 left (bone +X), -1 right. */
 static void arm_q(int side, double down, double fwd, double q[4]) {
   double a[4], b[4];
-  smgb_qaxis(0, -fwd, a);
-  smgb_qaxis(2, -side * down, b);
-  smgb_qmul(a, b, q);
+  smgb_q_axis(0, -fwd, a);
+  smgb_q_axis(2, -side * down, b);
+  smgb_q_mul(a, b, q);
 }
 
 /* Elbow flexion (forearm toward +Z in the arm's frame). */
 static void elbow_q(int side, double flex, double q[4]) {
-  smgb_qaxis(1, -side * flex, q);
+  smgb_q_axis(1, -side * flex, q);
 }
 
 /* Upper-body pose for standing actions and locomotion. */
@@ -263,10 +265,10 @@ static void upper_body(const gait* g, smgb_synth_kind kind, double t,
     /* Arms swing opposite to the legs: left arm forward with right foot. */
     for (side = 1; side >= -1; side -= 2) {
       double ph = side > 0 ? gait_phase - 0.5 : gait_phase;
-      double swing = g->arm_swing * cos(2.0 * SMGB_PI * ph);
+      double swing = g->arm_swing * cos(2.0 * SMGB_M_PI * ph);
       arm_q(side, 1.30, swing, q);
       put_q(pose, side > 0 ? J_LARM : J_RARM, q);
-      elbow_q(side, g->elbow + 0.25 * g->elbow * (1.0 + sin(2.0 * SMGB_PI * ph)), q);
+      elbow_q(side, g->elbow + 0.25 * g->elbow * (1.0 + sin(2.0 * SMGB_M_PI * ph)), q);
       put_q(pose, side > 0 ? J_LFOREARM : J_RFOREARM, q);
     }
     return;
@@ -280,17 +282,17 @@ static void upper_body(const gait* g, smgb_synth_kind kind, double t,
     put_q(pose, J_LFOREARM, q);
     up = cyc < 0.8 ? ease(cyc / 0.8) : cyc < 3.0 ? 1.0
          : cyc < 3.8 ? 1.0 - ease((cyc - 3.0) / 0.8) : 0.0;
-    wave = 0.45 * sin(2.0 * SMGB_PI * 2.5 * t) * up;
+    wave = 0.45 * sin(2.0 * SMGB_M_PI * 2.5 * t) * up;
     {
       double down[4], raised[4], el_down[4], el_up[4];
       arm_q(-1, 1.25, 0.05, down);
       arm_q(-1, -0.45, 0.25, raised);
-      smgb_qslerp(down, raised, up, q);
+      smgb_q_slerp(down, raised, up, q);
       put_q(pose, J_RARM, q);
       elbow_q(-1, 0.2, el_down);
       /* Forearm up (toward +Y in the arm frame), waving about the arm. */
-      smgb_qaxis(2, -(1.45 + wave), el_up);
-      smgb_qslerp(el_down, el_up, up, q);
+      smgb_q_axis(2, -(1.45 + wave), el_up);
+      smgb_q_slerp(el_down, el_up, up, q);
       put_q(pose, J_RFOREARM, q);
     }
     return;
@@ -304,19 +306,19 @@ static void upper_body(const gait* g, smgb_synth_kind kind, double t,
     double a[4], b[4];
     arm_q(side, 1.05, 0.75, guard);
     /* Straight forward: +-X bone rotated onto +Z, slightly inward. */
-    smgb_qaxis(1, side > 0 ? -1.45 : 1.45, strike);
-    smgb_qslerp(guard, strike, ext, q);
+    smgb_q_axis(1, side > 0 ? -1.45 : 1.45, strike);
+    smgb_q_slerp(guard, strike, ext, q);
     put_q(pose, side > 0 ? J_LARM : J_RARM, q);
     elbow_q(side, 2.2, a);
     elbow_q(side, 0.08, b);
-    smgb_qslerp(a, b, ext, q);
+    smgb_q_slerp(a, b, ext, q);
     put_q(pose, side > 0 ? J_LFOREARM : J_RFOREARM, q);
   }
   {
     /* Shoulders turn into each punch. */
     double l = fmod(t, 0.9), twist = 0.0;
-    if (l < 0.45) twist = -0.25 * sin(SMGB_PI * l / 0.45);
-    else twist = 0.25 * sin(SMGB_PI * (l - 0.45) / 0.45);
+    if (l < 0.45) twist = -0.25 * sin(SMGB_M_PI * l / 0.45);
+    else twist = 0.25 * sin(SMGB_M_PI * (l - 0.45) / 0.45);
     q_yxz(twist, 0.08, 0.0, q);
     put_q(pose, J_LOWERBACK, q);
   }
@@ -408,20 +410,20 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
       base[0] = 0.0;
       base[1] = 0.0;
       heading = 0.0;
-      sway = g.sway * sin(2.0 * SMGB_PI * ph);
-      H = g.h0 - 0.01 * (1.0 - cos(4.0 * SMGB_PI * ph));
-      yaw_osc = 0.03 * sin(2.0 * SMGB_PI * ph);
-      roll = -0.02 * sin(2.0 * SMGB_PI * ph);
+      sway = g.sway * sin(2.0 * SMGB_M_PI * ph);
+      H = g.h0 - 0.01 * (1.0 - cos(4.0 * SMGB_M_PI * ph));
+      yaw_osc = 0.03 * sin(2.0 * SMGB_M_PI * ph);
+      roll = -0.02 * sin(2.0 * SMGB_M_PI * ph);
     } else {
       ph = frac(t / g.T);
       path_at(&g, g.v * t, base, &heading);
       /* Weight toward the stance foot (left during the first half of the
        * cycle); zero at whole cycles so the root is exactly on the path
        * there, which tests use as ground truth. */
-      sway = g.sway * sin(2.0 * SMGB_PI * ph);
-      H = g.h0 + g.bob_sign * g.bob * cos(4.0 * SMGB_PI * (ph - 0.5 * g.D));
-      yaw_osc = -g.yaw_osc * cos(2.0 * SMGB_PI * ph);
-      roll = -g.roll * cos(2.0 * SMGB_PI * (ph - 0.5 * g.D));
+      sway = g.sway * sin(2.0 * SMGB_M_PI * ph);
+      H = g.h0 + g.bob_sign * g.bob * cos(4.0 * SMGB_M_PI * (ph - 0.5 * g.D));
+      yaw_osc = -g.yaw_osc * cos(2.0 * SMGB_M_PI * ph);
+      roll = -g.roll * cos(2.0 * SMGB_M_PI * (ph - 0.5 * g.D));
     }
     base[0] += sway * cos(heading);
     base[1] += sway * -sin(heading);
@@ -431,7 +433,7 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
     for (side = 0; side < 2; ++side) {
       double o[3] = {side ? -HIP_X : HIP_X, HIP_Y, 0.0}, dx, dz, dh2, lim;
       const double reach = (THIGH + SHIN) * 0.995;
-      smgb_qrot(w0, o, o);
+      smgb_q_rotate(w0, o, o);
       hipbase[side][0] = base[0] + o[0];
       hipbase[side][1] = o[1];
       hipbase[side][2] = base[1] + o[2];
@@ -447,7 +449,7 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
     pose[1] = (float)H;
     pose[2] = (float)base[1];
     put_q(pose, J_HIPS, w0);
-    smgb_qconj(w0, w0inv);
+    smgb_q_conj(w0, w0inv);
 
     for (side = 0; side < 2; ++side) {
       double hip[3], fwd[3], wt[4], ws[4], wf[4], tmp[4], inv[4], q[4];
@@ -460,13 +462,13 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
       leg_ik(hip, a[side], fwd, wt, ws);
       q_yxz(fh[side], fp[side], 0.0, wf);
       /* Local = inverse(parent world) * world; the HipJoint is identity. */
-      smgb_qmul(w0inv, wt, q);
+      smgb_q_mul(w0inv, wt, q);
       put_q(pose, side ? J_RUPLEG : J_LUPLEG, q);
-      smgb_qconj(wt, inv);
-      smgb_qmul(inv, ws, q);
+      smgb_q_conj(wt, inv);
+      smgb_q_mul(inv, ws, q);
       put_q(pose, side ? J_RLEG : J_LLEG, q);
-      smgb_qconj(ws, inv);
-      smgb_qmul(inv, wf, tmp);
+      smgb_q_conj(ws, inv);
+      smgb_q_mul(inv, wf, tmp);
       put_q(pose, side ? J_RFOOT : J_LFOOT, tmp);
     }
     upper_body(&g, params->kind, t, ph, yaw_osc, pose);

@@ -86,25 +86,10 @@ static smg_result materialize(smgb_bake* b, smgb_graph* g, uint32_t role,
     if (g->edges[e].kind == SMGB_EDGE_TRANSITION) ++count;
   if (count == 0) return SMG_OK;
   if ((r = smgb_pool_reserve(b, count * k)) != SMG_OK) return r;
-  if (b->clip_count == b->clip_cap) {
-    uint32_t cap = b->clip_cap ? b->clip_cap * 2 : 16;
-    smgb_pool_clip* nc = realloc(b->clips, cap * sizeof *nc);
-    if (!nc) {
-      smgb_fail(&b->report, "out of memory (clip table)");
-      return SMG_ERROR_OUT_OF_MEMORY;
-    }
-    b->clips = nc;
-    b->clip_cap = cap;
-  }
-  clip = b->clip_count++;
-  pc = &b->clips[clip];
-  memset(pc, 0, sizeof *pc);
-  snprintf(pc->name, sizeof pc->name, "%s", name);
-  pc->first = b->frame_count;
-  pc->count = count * k;
-  pc->label = 0;
-  pc->flags = role | SMGI_CLIP_BLEND;
-  pc->source_clip = clip;
+  pc = smgb_pool_new_clip(b, name, count * k, 0, role | SMGI_CLIP_BLEND,
+                          SMGI_NONE);
+  if (!pc) return SMG_ERROR_OUT_OF_MEMORY;
+  clip = (uint32_t)(pc - b->clips);
   first = b->frame_count;
   for (e = 0; e < g->edge_count; ++e) {
     smgb_edge* ed = &g->edges[e];

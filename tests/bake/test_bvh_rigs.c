@@ -26,7 +26,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "bake_import_util.h"
+#include "bake_math.h"
 #include "bake_roles.h"
 #include "import_helpers.h"
 
@@ -84,14 +84,14 @@ static void joint_q(uint32_t j, uint32_t f, double q[4]) {
     if (strstr(order[c], "rotation")) {
       int axis = order[c][0] - 'X';
       double r[4];
-      smgb_qaxis(axis, angle(j, axis, f) * (SMGB_PI / 180.0), r);
-      smgb_qmul(q, r, q);
+      smgb_q_axis(axis, angle(j, axis, f) * (SMGB_M_PI / 180.0), r);
+      smgb_q_mul(q, r, q);
     }
   }
 }
 
 static void root_q(double q[4]) {
-  smgb_qaxis(1, SMGB_PI / 2.0, q);
+  smgb_q_axis(1, SMGB_M_PI / 2.0, q);
 }
 
 /* Bandai-shaped file. wobble: add +-w cm of noise to LowerLeg_L's position
@@ -191,15 +191,15 @@ static void write_plain(const char* path) {
     double rq[4], t[3], q[4], z, y, x;
     root_q(rq);
     hips_local(f, t);
-    smgb_qrot(rq, t, t);
+    smgb_q_rotate(rq, t, t);
     fprintf(fp, "%.9g %.9g %.9g", (t[0] + k_root_t[0]) * 0.01,
             (t[1] + k_root_t[1]) * 0.01, (t[2] + k_root_t[2]) * 0.01);
     for (j = 0; j < NJ; ++j) {
       joint_q(j, f, q);
-      if (j == 0) smgb_qmul(rq, q, q);
-      smgb_qto_euler_zyx(q, &z, &y, &x);
-      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_PI),
-              y * (180.0 / SMGB_PI), x * (180.0 / SMGB_PI));
+      if (j == 0) smgb_q_mul(rq, q, q);
+      smgb_q_to_euler_zyx(q, &z, &y, &x);
+      fprintf(fp, " %.9g %.9g %.9g", z * (180.0 / SMGB_M_PI),
+              y * (180.0 / SMGB_M_PI), x * (180.0 / SMGB_M_PI));
     }
     fputc('\n', fp);
   }
@@ -311,17 +311,17 @@ static void test_mirror_joint_orients(void** state) {
               c.poses);
   for (j = 0; j < J; ++j) {
     double rz[4], rx[4], inv[4], u[3];
-    smgb_qaxis(2, SMGB_PI / 2.0, rz);
-    smgb_qaxis(0, 37.0 * j * SMGB_PI / 180.0, rx);
-    smgb_qmul(rz, rx, O[j]);
+    smgb_q_axis(2, SMGB_M_PI / 2.0, rz);
+    smgb_q_axis(0, 37.0 * j * SMGB_M_PI / 180.0, rx);
+    smgb_q_mul(rz, rx, O[j]);
     snprintf(c.skeleton.names[j], SMGB_NAME_MAX, "%s", k_names[j]);
     c.skeleton.parents[j] = k_parents[j];
     u[0] = k_offsets_cm[j][0] * 0.01;
     u[1] = k_offsets_cm[j][1] * 0.01;
     u[2] = k_offsets_cm[j][2] * 0.01;
     if (j > 0) {
-      smgb_qconj(O[k_parents[j]], inv);
-      smgb_qrot(inv, u, u);
+      smgb_q_conj(O[k_parents[j]], inv);
+      smgb_q_rotate(inv, u, u);
     }
     c.skeleton.offsets[j][0] = (float)u[0];
     c.skeleton.offsets[j][1] = (float)u[1];
@@ -371,9 +371,9 @@ static void test_mirror_joint_orients(void** state) {
  * is the mirror image of its counterpart's. */
 static void orient(uint32_t j, double O[4]) {
   double rz[4], rx[4];
-  smgb_qaxis(2, SMGB_PI / 2.0, rz);
-  smgb_qaxis(0, 37.0 * j * SMGB_PI / 180.0, rx);
-  smgb_qmul(rz, rx, O);
+  smgb_q_axis(2, SMGB_M_PI / 2.0, rz);
+  smgb_q_axis(0, 37.0 * j * SMGB_M_PI / 180.0, rx);
+  smgb_q_mul(rz, rx, O);
 }
 
 /* A symmetric gait on the unoriented figure: r_partner(t) is the mirror
@@ -381,11 +381,11 @@ static void orient(uint32_t j, double O[4]) {
  * sin(wt) and pitch about x with cos(2wt). */
 static void gait_rotation(uint32_t j, int32_t partner, double t, double T,
                           double q[4]) {
-  double w = 2.0 * SMGB_PI / T, a[4], b[4];
+  double w = 2.0 * SMGB_M_PI / T, a[4], b[4];
   if (partner == (int32_t)j) {
-    smgb_qaxis(1, 0.3 * sin(w * t), a);
-    smgb_qaxis(0, 0.2 * cos(2.0 * w * t) + 0.05 * j, b);
-    smgb_qmul(a, b, q);
+    smgb_q_axis(1, 0.3 * sin(w * t), a);
+    smgb_q_axis(0, 0.2 * cos(2.0 * w * t) + 0.05 * j, b);
+    smgb_q_mul(a, b, q);
     return;
   }
   if (partner < (int32_t)j) { /* right side: mirror of the left, later */
@@ -394,9 +394,9 @@ static void gait_rotation(uint32_t j, int32_t partner, double t, double T,
     q[2] = -q[2];
     return;
   }
-  smgb_qaxis(0, 0.6 * sin(w * t + 0.4 * j), a);
-  smgb_qaxis(2, 0.25 + 0.2 * cos(w * t + j), b);
-  smgb_qmul(a, b, q);
+  smgb_q_axis(0, 0.6 * sin(w * t + 0.4 * j), a);
+  smgb_q_axis(2, 0.25 + 0.2 * cos(w * t + j), b);
+  smgb_q_mul(a, b, q);
 }
 
 static void test_mirror_symmetric_gait(void** state) {
@@ -427,8 +427,8 @@ static void test_mirror_symmetric_gait(void** state) {
     u[1] = k_offsets_cm[j][1] * 0.01;
     u[2] = k_offsets_cm[j][2] * 0.01;
     if (j > 0) {
-      smgb_qconj(O[k_parents[j]], inv);
-      smgb_qrot(inv, u, u);
+      smgb_q_conj(O[k_parents[j]], inv);
+      smgb_q_rotate(inv, u, u);
     }
     c.skeleton.offsets[j][0] = (float)u[0];
     c.skeleton.offsets[j][1] = (float)u[1];
@@ -442,19 +442,19 @@ static void test_mirror_symmetric_gait(void** state) {
   }
   for (f = 0; f < FRAMES; ++f) {
     float* p = c.poses + (size_t)f * S;
-    p[0] = (float)(0.03 * sin(SMGB_PI * f / HALF));
+    p[0] = (float)(0.03 * sin(SMGB_M_PI * f / HALF));
     p[1] = 0.9f;
     p[2] = 0.04f * f;
     for (j = 0; j < J; ++j) {
       /* The oriented rig's local rotation: O_parent^-1 r_j O_j. */
       double r[4], inv[4], q[4];
       gait_rotation(j, partner[j], f, 2.0 * HALF, r);
-      smgb_qmul(r, O[j], q);
+      smgb_q_mul(r, O[j], q);
       if (j > 0) {
-        smgb_qconj(O[k_parents[j]], inv);
-        smgb_qmul(inv, q, q);
+        smgb_q_conj(O[k_parents[j]], inv);
+        smgb_q_mul(inv, q, q);
       }
-      smgb_qnormalize(q);
+      smgb_q_normalize(q);
       p[3 + 4 * j] = (float)q[0];
       p[4 + 4 * j] = (float)q[1];
       p[5 + 4 * j] = (float)q[2];
@@ -467,7 +467,7 @@ static void test_mirror_symmetric_gait(void** state) {
       const float* a = m.poses + (size_t)f * S + 3 + 4 * j;
       const float* b = c.poses + (size_t)(f + HALF) * S + 3 + 4 * j;
       double d = fabs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
-      double angle = 2.0 * acos(d > 1.0 ? 1.0 : d) * (180.0 / SMGB_PI);
+      double angle = 2.0 * acos(d > 1.0 ? 1.0 : d) * (180.0 / SMGB_M_PI);
       if (angle > worst) worst = angle;
     }
   printf("mirrored symmetric gait vs half a cycle later: local rotations "

@@ -27,7 +27,7 @@
 #include <assimp/scene.h>
 
 #include "bake_graph_helpers.h"
-#include "bake_import_util.h"
+#include "bake_math.h"
 #include "bake_retarget.h"
 #include "retarget_measure.h"
 
@@ -686,13 +686,13 @@ static void test_gltf_rig_with_own_axes(void** state) {
     int k;
     n = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
     for (k = 0; k < 3; ++k) axis[k] /= n;
-    smgb_qaxis_angle(axis, 0.4 + 0.3 * j, q[j]);
+    smgb_q_axis_angle(axis, 0.4 + 0.3 * j, q[j]);
     if (j == 0) {
       memcpy(lq, q[0], sizeof lq);
     } else {
-      smgb_qconj(q[rig.parents[j]], pi);
-      smgb_qmul(pi, q[j], lq);
-      smgb_qrot(pi, o, o); /* offset in the parent bone's frame */
+      smgb_q_conj(q[rig.parents[j]], pi);
+      smgb_q_mul(pi, q[j], lq);
+      smgb_q_rotate(pi, o, o); /* offset in the parent bone's frame */
       for (k = 0; k < 3; ++k) axes.skeleton.offsets[j][k] = (float)o[k];
     }
     for (f = 0; f < 2; ++f)

@@ -21,7 +21,7 @@
 #include <cmocka.h>
 
 #include "bake_graph_helpers.h"
-#include "bake_import_util.h"
+#include "bake_math.h"
 #include "bake_retarget.h"
 #include "quat_pack.h"
 
@@ -49,7 +49,7 @@ static void arc(const double u[3], const double v[3], double q[4]) {
   q[1] = u[2] * v[0] - u[0] * v[2];
   q[2] = u[0] * v[1] - u[1] * v[0];
   q[3] = 1.0 + u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  smgb_qnormalize(q);
+  smgb_q_normalize(q);
 }
 
 /* `in` (a world-aligned rest: identity local rotations at rest) re-expressed
@@ -71,7 +71,7 @@ static void with_rest_axes(const smgb_clip* in, int along_x, smgb_clip* out) {
     axis[2] = 0.4 - 0.1 * (double)(j % 7);
     n = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
     axis[0] /= n; axis[1] /= n; axis[2] /= n;
-    smgb_qaxis_angle(axis, 0.5 + 0.37 * j, R[j]);
+    smgb_q_axis_angle(axis, 0.5 + 0.37 * j, R[j]);
     if (!along_x) continue;
     for (c = j + 1; c < J; ++c) {
       const float* o = s->offsets[c];
@@ -84,15 +84,15 @@ static void with_rest_axes(const smgb_clip* in, int along_x, smgb_clip* out) {
       } else {
         arc(x, d, a);
       }
-      smgb_qaxis(0, 2.1 + 0.8 * j, roll);
-      smgb_qmul(a, roll, R[j]);
+      smgb_q_axis(0, 2.1 + 0.8 * j, roll);
+      smgb_q_mul(a, roll, R[j]);
       break;
     }
   }
   for (j = 1; j < J; ++j) {
     double pi[4], o[3] = {s->offsets[j][0], s->offsets[j][1], s->offsets[j][2]};
-    smgb_qconj(R[s->parents[j]], pi);
-    smgb_qrot(pi, o, o);
+    smgb_q_conj(R[s->parents[j]], pi);
+    smgb_q_rotate(pi, o, o);
     out->skeleton.offsets[j][0] = (float)o[0];
     out->skeleton.offsets[j][1] = (float)o[1];
     out->skeleton.offsets[j][2] = (float)o[2];
@@ -103,9 +103,9 @@ static void with_rest_axes(const smgb_clip* in, int along_x, smgb_clip* out) {
     for (j = 0; j < J; ++j) {
       double l[4], t[4], pi[4] = {0.0, 0.0, 0.0, 1.0};
       qget(p, j, l);
-      if (j > 0) smgb_qconj(R[s->parents[j]], pi);
-      smgb_qmul(pi, l, t);
-      smgb_qmul(t, R[j], l);
+      if (j > 0) smgb_q_conj(R[s->parents[j]], pi);
+      smgb_q_mul(pi, l, t);
+      smgb_q_mul(t, R[j], l);
       qput(q, j, l);
     }
   }
@@ -366,8 +366,8 @@ static void phase_angle(const smgi_graph_data* g, uint32_t ca, uint32_t cb,
     qget(pb, j, qb);
     *total += q_angle(qa, qb);
     /* the difference in the joint's own axes, its twist about the bone */
-    smgb_qconj(qa, ai);
-    smgb_qmul(ai, qb, r);
+    smgb_q_conj(qa, ai);
+    smgb_q_mul(ai, qb, r);
     *twist += fabs(smgb_wrap_angle(
                   2.0 * atan2(r[0] * bone[0] + r[1] * bone[1] + r[2] * bone[2],
                               r[3]))) * DEG;
