@@ -53,6 +53,8 @@
 #define BH_HELD_FROM 3.0       /* judged from this far after it ... */
 #define BH_HELD_TO 4.0         /* ... to this far before the end */
 #define BH_MAX_SWINGS 512
+#define BH_BEFORE_END_M 2.0    /* cadence of the path alone: until this far
+                                * before the end (stops are judged apart) */
 #define PI 3.14159265358979323846
 
 /* ---- recording ---------------------------------------------------------- */
@@ -242,6 +244,7 @@ typedef struct bh_path_result {
   int ok;
   double mean_cm, max_cm, feet_cms, pelvis_p95_deg;
   double swing_ratio, swing_longest, swing_median;
+  double swing_ratio_path; /* the same before the last BH_BEFORE_END_M */
   double rest_s, rest_toe_cm, rest_ankles_m, rest_motion_deg;
 } bh_path_result;
 
@@ -367,6 +370,14 @@ static void path_run(bh_graph* bg, const double* path, size_t n,
   cadence(&r, bg, 0, r.n, 0, stop, &out->swing_longest, &out->swing_median,
           &count);
   out->swing_ratio = out->swing_longest / out->swing_median;
+  {
+    /* the turns alone: before the stop's last metres begin */
+    size_t before = 0;
+    double lo, me;
+    while (before < stop && arc[before] < length - BH_BEFORE_END_M) ++before;
+    cadence(&r, bg, 0, r.n, 0, before, &lo, &me, &count);
+    out->swing_ratio_path = lo / me;
+  }
   rest_measures(&r, bg, stop, r.n, out);
   out->ok = 1;
   (void)i;
@@ -675,6 +686,7 @@ typedef struct bh_summary {
   double walk_speed, run_speed, threshold;
   double held_smooth, held_tight;       /* least shares */
   double swing_ratio;                   /* largest */
+  double swing_ratio_path;              /* largest, before the last 2 m */
   double rest_toe_cm, rest_ankles_m, rest_motion_deg;
   double start_swing_ratio, start_reach_s;
   double face_s, face_moved_m, face_toes_cms;
@@ -714,12 +726,13 @@ static double worse_min(double a, double b) {
 static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
                          bh_summary* s) {
   static double path[2 * BH_MAX_POINTS];
-  char b[12][24];
+  char b[13][24];
   size_t k, n;
   int st;
   s->measured = 1;
   s->held_smooth = s->held_tight = INFINITY;
-  s->swing_ratio = s->rest_toe_cm = s->rest_ankles_m = 0.0;
+  s->swing_ratio = s->swing_ratio_path = 0.0;
+  s->rest_toe_cm = s->rest_ankles_m = 0.0;
   s->rest_motion_deg = INFINITY;
   s->smooth_mean_cm = s->tight_max_cm = s->feet_cms = s->pelvis_deg = 0.0;
   n = read_path("data/paths/straight.txt", path, BH_MAX_POINTS);
@@ -760,9 +773,10 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
   eval_md(ctx,
           "| path | style | path error mean / max cm | planted toes cm/s | "
           "pelvis vs travel p95 deg | swings: longest / median s (ratio) | "
+          "ratio before the last 2 m | "
           "at rest: s | toes above floor cm | ankles apart m | least "
           "rotation range in 2 s deg |\n"
-          "|---|---|---|---|---|---|---|---|---|---|\n");
+          "|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (k = 0; k < BH_PATHS; ++k) {
     char file[256];
     snprintf(file, sizeof(file), "data/paths/%s.txt", k_paths[k].key);
@@ -773,7 +787,7 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
       memset(&r, 0, sizeof(r));
       if (n >= 2) path_run(bg, path, n, st ? bg->run : bg->walk, &r);
       if (!r.ok) {
-        eval_md(ctx, "| %s | %s | run failed | | | | | | | |\n",
+        eval_md(ctx, "| %s | %s | run failed | | | | | | | | |\n",
                 k_paths[k].title, st ? "run" : "walk");
         s->swing_ratio = INFINITY;
         continue;
@@ -786,7 +800,7 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
                r.rest_motion_deg);
       eval_md(ctx,
               "| %s | %s | %s / %s | %s | %s | %s / %s (%s) | %s | %s | %s | "
-              "%s |\n",
+              "%s | %s |\n",
               k_paths[k].title, st ? "run" : "walk",
               eval_fmt(b[0], sizeof(b[0]), "%.1f", r.mean_cm),
               eval_fmt(b[1], sizeof(b[1]), "%.1f", r.max_cm),
@@ -795,11 +809,13 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
               eval_fmt(b[4], sizeof(b[4]), "%.2f", r.swing_longest),
               eval_fmt(b[5], sizeof(b[5]), "%.2f", r.swing_median),
               eval_fmt(b[6], sizeof(b[6]), "%.2f", r.swing_ratio),
+              eval_fmt(b[11], sizeof(b[11]), "%.2f", r.swing_ratio_path),
               eval_fmt(b[7], sizeof(b[7]), "%.1f", r.rest_s),
               eval_fmt(b[8], sizeof(b[8]), "%.1f", r.rest_toe_cm),
               eval_fmt(b[9], sizeof(b[9]), "%.2f", r.rest_ankles_m),
               eval_fmt(b[10], sizeof(b[10]), "%.2f", r.rest_motion_deg));
       s->swing_ratio = worse_max(s->swing_ratio, r.swing_ratio);
+      s->swing_ratio_path = worse_max(s->swing_ratio_path, r.swing_ratio_path);
       s->rest_toe_cm = worse_max(s->rest_toe_cm, r.rest_toe_cm);
       s->rest_ankles_m = worse_max(s->rest_ankles_m, r.rest_ankles_m);
       s->rest_motion_deg = worse_min(s->rest_motion_deg, r.rest_motion_deg);
@@ -881,6 +897,8 @@ static const bh_target k_targets[] = {
     {"style held, corners / scribble (least share, %)", 1, 75.0, "%.0f"},
     {"cadence: longest / median swing until the hips stop (largest)", 0,
      1.6, "%.2f"},
+    {"cadence on the path alone (before its last 2 m; stops apart)", 0, 1.6,
+     "%.2f"},
     {"at rest: toes above their floor level (cm, largest)", 0, 2.5, "%.1f"},
     {"at rest: ankles apart (m, largest)", 0, 0.40, "%.2f"},
     {"at rest: least rotation range of any 2 s (deg; graphs with standing "
@@ -906,17 +924,18 @@ static double target_value(const bh_summary* s, size_t t) {
     case 0: return 100.0 * s->held_smooth;
     case 1: return 100.0 * s->held_tight;
     case 2: return s->swing_ratio;
-    case 3: return s->rest_toe_cm;
-    case 4: return s->rest_ankles_m;
-    case 5: return s->rest_motion_deg;
-    case 6: return s->start_swing_ratio;
-    case 7: return s->start_reach_s;
-    case 8: return s->face_s;
-    case 9: return s->face_moved_m;
-    case 10: return s->face_toes_cms;
-    case 11: return s->smooth_mean_cm;
-    case 12: return s->tight_max_cm;
-    case 13: return s->feet_cms;
+    case 3: return s->swing_ratio_path;
+    case 4: return s->rest_toe_cm;
+    case 5: return s->rest_ankles_m;
+    case 6: return s->rest_motion_deg;
+    case 7: return s->start_swing_ratio;
+    case 8: return s->start_reach_s;
+    case 9: return s->face_s;
+    case 10: return s->face_moved_m;
+    case 11: return s->face_toes_cms;
+    case 12: return s->smooth_mean_cm;
+    case 13: return s->tight_max_cm;
+    case 14: return s->feet_cms;
     default: return s->pelvis_deg;
   }
 }
@@ -1042,7 +1061,7 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
         continue;
       }
       eval_fmt(v, sizeof(v), tg->fmt, x);
-      if (t == 5 && !sum[k].standing) {
+      if (t == 6 && !sum[k].standing) {
         eval_md(ctx, " %s (no standing motion in the data) |", v);
         continue;
       }
