@@ -1,7 +1,8 @@
 /*
  * test_gait.c - the gait measures of the behaviour section (tools/eval/
  * eval_gait.c) on tracks with known answers: swings (threshold, minimum
- * length, a foot still up at the end), the median, window speed on a
+ * length, a foot still up at the end), the floor level of the latest
+ * stance across two performers' planted heights, the median, window speed on a
  * straight line and a circle, travel heading, pelvis forward calibration
  * and facing, angle wrapping and a joint's rotation range.
  */
@@ -36,25 +37,62 @@ static void toe_track(double* p, size_t n) {
   }
 }
 
+static void fill(double* level, size_t n, double v) {
+  size_t i;
+  for (i = 0; i < n; ++i) level[i] = v;
+}
+
 static void test_swings(void** state) {
-  double p[3 * 80], out[8];
+  double p[3 * 80], out[8], level[80];
   size_t c;
   (void)state;
   toe_track(p, 80);
-  c = eval_gait_swings(p, 3, 0, 80, 0.05, DT, out, 8);
+  fill(level, 80, 0.05);
+  c = eval_gait_swings(p, 3, 0, 80, level, DT, out, 8);
   assert_int_equal(c, 2); /* the flick is not a step */
   NEAR(out[0], 12 * DT, 1e-9);
   NEAR(out[1], 20 * DT, 1e-9); /* still up at the last frame */
   /* a toe 2 cm up is not swinging (band 2.5 cm) */
-  c = eval_gait_swings(p, 3, 0, 80, 0.13, DT, out, 8);
+  fill(level, 80, 0.13);
+  c = eval_gait_swings(p, 3, 0, 80, level, DT, out, 8);
   assert_int_equal(c, 1);
   NEAR(out[0], 20 * DT, 1e-9);
   /* a range that ends mid-swing cuts it there */
-  c = eval_gait_swings(p, 3, 0, 70, 0.05, DT, out, 8);
+  fill(level, 80, 0.05);
+  c = eval_gait_swings(p, 3, 0, 70, level, DT, out, 8);
   assert_int_equal(c, 2);
   NEAR(out[1], 10 * DT, 1e-9);
-  assert_int_equal(eval_gait_swings(NULL, 3, 0, 80, 0.05, DT, out, 8), 0);
-  assert_int_equal(eval_gait_swings(p, 3, 0, 80, NAN, DT, out, 8), 0);
+  assert_int_equal(eval_gait_swings(NULL, 3, 0, 80, level, DT, out, 8), 0);
+  assert_int_equal(eval_gait_swings(p, 3, 0, 80, NULL, DT, out, 8), 0);
+}
+
+/* Two performers: the planted toe sits at 0 for four strides, then at
+ * 4 cm (the motion changes performer during a swing); 0.4 s swings 15 cm
+ * up, moving at 3 m/s, every 1.1 s. One level for
+ * the run would make the second performer's stances part of its swings;
+ * the level of the latest stance follows them. */
+static void test_floor_levels(void** state) {
+  enum { N = 240 };
+  double p[3 * N], level[N], out[32], x = 0.0;
+  size_t i, c;
+  (void)state;
+  for (i = 0; i < N; ++i) {
+    int up = (i % 33) < 12;
+    if (up) x += 0.1;
+    p[3 * i] = x;
+    p[3 * i + 1] = (i < 132 ? 0.0 : 0.04) + (up ? 0.15 : 0.0);
+    p[3 * i + 2] = 0.0;
+  }
+  assert_int_equal(eval_gait_floor_levels(p, 3, N, DT, level), 0);
+  NEAR(level[20], 0.0, 1e-9);  /* in a stance: its height */
+  NEAR(level[5], 0.0, 1e-9);   /* in the first swing: the run's floor */
+  NEAR(level[N - 10], 0.04, 1e-9);
+  NEAR(level[N - 30], 0.04, 1e-9); /* mid-swing: the stance it left */
+  c = eval_gait_swings(p, 3, 0, N, level, DT, out, 32);
+  assert_int_equal(c, 8); /* the last one cut by the end of the run */
+  for (i = 0; i + 1 < c; ++i) NEAR(out[i], 12 * DT, 1e-9);
+  assert_int_equal(eval_gait_floor_levels(NULL, 3, N, DT, level), -1);
+  assert_int_equal(eval_gait_floor_levels(p, 3, N, 0.0, level), -1);
 }
 
 static void test_median(void** state) {
@@ -134,6 +172,7 @@ static void test_rotation_range(void** state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_swings),
+      cmocka_unit_test(test_floor_levels),
       cmocka_unit_test(test_median),
       cmocka_unit_test(test_window_speed),
       cmocka_unit_test(test_facing),

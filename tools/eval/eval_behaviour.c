@@ -213,29 +213,38 @@ static double travel_heading(const bh_rec* r, uint32_t hips, size_t first,
   return eval_gait_travel_heading(r->pos + hips * 3, 3 * r->J, a, b);
 }
 
+/* A toe's floor level at every recorded frame (eval_gait.h; malloc'd,
+ * NULL when out of memory). */
+static double* toe_levels(const bh_rec* r, uint32_t toe) {
+  double* level = (double*)malloc((r->n ? r->n : 1) * sizeof(double));
+  if (level && eval_gait_floor_levels(r->pos + toe * 3, 3 * r->J, r->n,
+                                      BH_DT, level) != 0) {
+    free(level);
+    level = NULL;
+  }
+  return level;
+}
+
 /* Longest and median swing of both toes over frames [first, last). */
-static void cadence(const bh_rec* r, const bh_graph* bg, size_t lo_level,
-                    size_t hi_level, size_t first, size_t last,
-                    double* longest, double* median, size_t* count) {
+static void cadence(const bh_rec* r, const bh_graph* bg, size_t first,
+                    size_t last, double* longest, double* median) {
   static double sw[2 * BH_MAX_SWINGS];
   const uint32_t toe[2] = {bg->j.ltoe, bg->j.rtoe};
   size_t m = 0, k, i;
   *longest = NAN;
   *median = NAN;
-  *count = 0;
   for (k = 0; k < 2; ++k) {
-    const double* t = r->pos + toe[k] * 3;
-    double level = eval_feet_floor_level(t + lo_level * 3 * r->J, 3 * r->J,
-                                         hi_level - lo_level);
-    m += eval_gait_swings(t, 3 * r->J, first, last, level, BH_DT, sw + m,
-                          BH_MAX_SWINGS);
+    double* level = toe_levels(r, toe[k]);
+    if (!level) return;
+    m += eval_gait_swings(r->pos + toe[k] * 3, 3 * r->J, first, last, level,
+                          BH_DT, sw + m, BH_MAX_SWINGS);
+    free(level);
   }
   if (!m) return;
   *longest = 0.0;
   for (i = 0; i < m; ++i)
     if (sw[i] > *longest) *longest = sw[i];
   *median = eval_gait_median(sw, m);
-  *count = m;
 }
 
 /* ---- per-path runs ------------------------------------------------------ */
@@ -344,7 +353,7 @@ static void path_run(bh_graph* bg, const double* path, size_t n,
   bh_rec r;
   double length = em_polyline_length(path, n);
   double *arc = NULL, *dist = NULL, sum = 0.0, worst = 0.0;
-  size_t i, reach, stop, count;
+  size_t reach, stop;
   memset(out, 0, sizeof(*out));
   if (!rec_open(bg, path, n, style, length / 0.6 + 20.0, &r) ||
       !rec_until_rest(&r, bg, path[2 * n - 2], path[2 * n - 1]))
@@ -367,20 +376,18 @@ static void path_run(bh_graph* bg, const double* path, size_t n,
   out->feet_cms = planted_toes(&r, bg, 0, reach + 1);
   out->pelvis_p95_deg = pelvis_p95(&r, bg, 0, reach + 1);
   stop = stop_frame(&r, bg->j.hips, 0, r.n);
-  cadence(&r, bg, 0, r.n, 0, stop, &out->swing_longest, &out->swing_median,
-          &count);
+  cadence(&r, bg, 0, stop, &out->swing_longest, &out->swing_median);
   out->swing_ratio = out->swing_longest / out->swing_median;
   {
     /* the turns alone: before the stop's last metres begin */
     size_t before = 0;
     double lo, me;
     while (before < stop && arc[before] < length - BH_BEFORE_END_M) ++before;
-    cadence(&r, bg, 0, r.n, 0, before, &lo, &me, &count);
+    cadence(&r, bg, 0, before, &lo, &me);
     out->swing_ratio_path = lo / me;
   }
   rest_measures(&r, bg, stop, r.n, out);
   out->ok = 1;
-  (void)i;
 done:
   free(arc);
   free(dist);
@@ -524,15 +531,19 @@ static int start_run(bh_graph* bg, bh_rec* r, size_t* given,
    * stretch */
   for (k = 0; k < 2; ++k) {
     const double* t = r->pos + toe[k] * 3;
-    double level = eval_feet_floor_level(t, 3 * r->J, r->n), sw[64];
-    size_t c = eval_gait_swings(t, 3 * r->J, *given,
-                                *given + (size_t)(2.0 * BH_RATE), level,
-                                BH_DT, sw, 64);
+    double* level = toe_levels(r, toe[k]);
+    double sw[64];
+    size_t c;
+    if (!level) goto done;
+    c = eval_gait_swings(t, 3 * r->J, *given,
+                         *given + (size_t)(2.0 * BH_RATE), level, BH_DT, sw,
+                         64);
     for (i = 0; i < c; ++i)
       if (sw[i] > first_long) first_long = sw[i];
     if (steady_b > steady_a)
       ns += eval_gait_swings(t, 3 * r->J, steady_a, steady_b, level, BH_DT,
                              steady_sw + ns, BH_MAX_SWINGS - ns);
+    free(level);
   }
   out->swing_first = first_long;
   out->swing_steady = eval_gait_median(steady_sw, ns);
@@ -972,7 +983,9 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
           "`smg_character_get_model_matrices`, local rotations from "
           "`smg_character_get_local_pose`, stepped at %.0f Hz. A *swing* is "
           "a stretch of at least %.1f s with a toe more than %.1f cm above "
-          "its floor level (its 5th-percentile height over the run); a "
+          "its floor level (the lowest height of its latest stance, frames "
+          "slower than 0.3 m/s: graphs of several performers plant the toe "
+          "at heights a few cm apart); a "
           "window speed is the hips' ground path length over 1 s. "
           "Walking and running speeds: the hips' median window speed on the "
           "straight path started in `walk` and in `run`, from 3 m after the "
@@ -989,7 +1002,8 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
           "counted; "
           "95th percentile over frames faster than %.1f m/s), swings until "
           "the hips stop (from then on they stay within %.0f cm), and at "
-          "rest (after the stop) the toes' height above their floor level, "
+          "rest (after the stop) the toes' height above their floor level "
+          "over the run (5th percentile), "
           "the ankles' horizontal distance and the least, over 2 s windows "
           "every 0.5 s, of the largest rotation range of any joint. Start: "
           "an 8 m walk, %.0f s standing, then a 12 m path ahead of the "

@@ -7,20 +7,44 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "eval_feet_geom.h"
 #include "eval_metrics.h"
 
 #define PI 3.14159265358979323846
 
+int eval_gait_floor_levels(const double* toe, size_t stride, size_t n,
+                           double dt, double* level) {
+  double floor_now;
+  size_t i;
+  int still = 0;
+  if (!toe || !level || stride < 3 || !(dt > 0.0)) return -1;
+  floor_now = eval_feet_floor_level(toe, stride, n);
+  for (i = 0; i < n; ++i) {
+    const size_t a = i > 0 ? i - 1 : i, b = i + 1 < n ? i + 1 : i;
+    const double y = toe[i * stride + 1];
+    int now = 0;
+    if (b > a && isfinite(y))
+      now = hypot(toe[b * stride] - toe[a * stride],
+                  toe[b * stride + 2] - toe[a * stride + 2]) /
+                ((double)(b - a) * dt) <
+            EVAL_GAIT_STILL_MS;
+    if (now && (!still || y < floor_now)) floor_now = y;
+    still = now;
+    level[i] = floor_now;
+  }
+  return 0;
+}
+
 size_t eval_gait_swings(const double* toe, size_t stride, size_t first,
-                        size_t last, double level, double dt, double* out,
-                        size_t cap) {
+                        size_t last, const double* level, double dt,
+                        double* out, size_t cap) {
   const size_t min_frames = (size_t)ceil(EVAL_GAIT_SWING_MIN_S / dt - 1e-9);
   size_t i, start = 0, count = 0;
   int up = 0;
-  if (!toe || !out || stride < 3 || !(dt > 0.0) || !isfinite(level))
-    return 0;
+  if (!toe || !level || !out || stride < 3 || !(dt > 0.0)) return 0;
   for (i = first; i <= last && count < cap; ++i) {
-    int lifted = i < last && toe[i * stride + 1] > level + EVAL_GAIT_SWING_M;
+    int lifted = i < last && isfinite(level[i]) &&
+                 toe[i * stride + 1] > level[i] + EVAL_GAIT_SWING_M;
     if (lifted && !up) {
       up = 1;
       start = i;

@@ -7,10 +7,21 @@
  * `stride` doubles from one frame to the next, frames dt seconds apart.
  *
  *   swing       a stretch of frames in which a toe is more than
- *               EVAL_GAIT_SWING_M above its floor level (eval_feet_geom.h),
- *               lasting at least EVAL_GAIT_SWING_MIN_S. A lifted toe that
- *               is still up at the last frame considered counts up to that
- *               frame (a foot frozen in the air is a long swing).
+ *               EVAL_GAIT_SWING_M above its floor level, lasting at least
+ *               EVAL_GAIT_SWING_MIN_S. A lifted toe that is still up at the
+ *               last frame considered counts up to that frame (a foot
+ *               frozen in the air is a long swing).
+ *   floor level of a toe at a frame: the lowest height of its latest
+ *               stance, a stretch of frames in which it moves horizontally
+ *               slower than EVAL_GAIT_STILL_MS (before its first stance,
+ *               the EVAL_FEET_FLOOR_PERCENTILE-th percentile of its height
+ *               over the run, eval_feet_geom.h). Per stance and not one
+ *               level for the run, because a graph of several performers
+ *               plants the toe joint at heights up to a few centimetres
+ *               apart (their feet and toe joints differ): with one level,
+ *               the stance of the performer whose toe sits higher would
+ *               count as part of a swing. A swinging toe moves, so its
+ *               level stays that of the stance it left, in slow motion too.
  *   window speed the hips' horizontal path length over a window of frames
  *               divided by its duration: the sway of a stride adds to it
  *               only in quadrature, and unlike the chord it does not shrink
@@ -27,14 +38,21 @@
 
 #define EVAL_GAIT_SWING_M 0.025    /* toe this far above its floor: swing */
 #define EVAL_GAIT_SWING_MIN_S 0.1  /* shorter lifts are not steps */
+#define EVAL_GAIT_STILL_MS 0.3     /* a toe slower than this is planted */
+
+/* The floor level of one toe at each of its n frames (level[0..n)).
+ * Returns 0, or -1 on bad arguments. */
+int eval_gait_floor_levels(const double* toe, size_t stride, size_t n,
+                           double dt, double* level);
 
 /* Swings of one toe between frames first and last (inclusive of first,
  * exclusive of last; swings that start in the range and are still lifted
- * at `last` end there). level: the toe's floor level. Writes the durations
- * (seconds) of at most cap swings to out, returns their count. */
+ * at `last` end there). level: the toe's floor level per frame, indexed
+ * like its frames. Writes the durations (seconds) of at most cap swings to
+ * out, returns their count. */
 size_t eval_gait_swings(const double* toe, size_t stride, size_t first,
-                        size_t last, double level, double dt, double* out,
-                        size_t cap);
+                        size_t last, const double* level, double dt,
+                        double* out, size_t cap);
 
 /* Median of v[0..n) (v is sorted in place); NaN when n == 0. */
 double eval_gait_median(double* v, size_t n);
