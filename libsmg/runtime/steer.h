@@ -38,6 +38,10 @@ typedef struct smgi_steer {
   float turn;             /* heading correction, rad/s */
   float slide[2];         /* translation correction, m/s (x, z) */
   float rate;             /* playback rate: 1 following, < 1 slowing */
+  float stride;           /* share of the motion's travel kept: < 1 takes
+                           * shorter strides for a tight turn (the rest is
+                           * slid back along the travel; planted feet keep
+                           * their anchors, so the steps shorten) */
   /* the heading of the path segment last looked at (an atan2; the
    * curvature ahead mostly looks at the same segment step after step),
    * forgotten when the path changes */
