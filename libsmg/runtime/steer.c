@@ -65,6 +65,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
   s->stride = 1.0f;
+  s->saturated = 0;
   s->drift_turn = s->drift_move = 0.0f;
   s->heading_seg = SMGI_NONE;
 }
@@ -248,9 +249,10 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
      * slow motion, every swing drawn out), the rest by shorter strides,
      * at most the slide ratio of them */
     float want = 1.0f;
+    const float slowest = SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
     if (need > s->turn_limit)
-      want = smgi_clampf(s->turn_limit / need,
-                         SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio), 1.0f);
+      want = smgi_clampf(s->turn_limit / need, slowest, 1.0f);
+    s->saturated = need * slowest > s->turn_limit;
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
     s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
     s->stride = approach(s->stride, want / rate, SMGI_STEER_RATE_ACCEL * dt);
