@@ -66,6 +66,7 @@ static inline smgi_step_in smgi_step_in_of(const smg_character* ch) {
   in.fps = ch->fps;
   in.progress = ch->progress;
   in.seg = ch->seg;
+  in.path_error = ch->path_error;
   in.anchor[0] = ch->anchor[0];
   in.anchor[1] = ch->anchor[1];
   in.time = ch->time;

@@ -117,16 +117,19 @@ static float lost_style_penalty(const smg_graph* g, const smgi_edge* e) {
 }
 
 /* Error of one root sample at (x, z) facing h, after arc u, having moved
- * (mx, mz) since the previous sample over w frames. */
+ * (mx, mz) since the previous sample over w frames. *dist gets its
+ * distance from the path (or the end point), *beyond the part of that
+ * distance the root steering cannot remove. */
 static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
                          float u, float mx, float mz, float w,
-                         uint32_t* seg, float* dist) {
+                         uint32_t* seg, float* dist, float* beyond) {
   const smgi_path* p = c->track;
   float m2 = mx * mx + mz * mz;
   if (!c->following) {
     float dx = x - c->tx, dz = z - c->tz;
     float d = sqrtf(dx * dx + dz * dz);
     *dist = d;
+    *beyond = d;
     /* at the end prefer motion that travels least and, there being no
      * idle clips, turns back towards the end point (circles around it
      * instead of walking off) */
@@ -156,10 +159,17 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
     if (ax * ax + az * az > 1e-4f)
       ha = fabsf(smgi_wrap_angle(h - fast_atan2(ax, az)));
   }
-  /* as it will look after the root steering's correction (steer.c) */
-  if (!c->lost)
-    smgi_steer_plan_view(&c->steer, u, c->fps * sqrtf(m2) /
-                         (w > 1.0f ? w : 1.0f), &d, &ha);
+  /* as it will look after the root steering's correction (steer.c);
+   * what lies beyond its reach, slowing for the turn included, is where
+   * the character will really be off the path (the style yield judges
+   * that, planner.c) */
+  *beyond = d;
+  if (!c->lost) {
+    const float speed = c->fps * sqrtf(m2) / (w > 1.0f ? w : 1.0f);
+    const float reach = smgi_steer_plan_reach_slowed(&c->steer, u, speed);
+    *beyond = d > reach ? d - reach : 0.0f;
+    smgi_steer_plan_view(&c->steer, u, speed, &d, &ha);
+  }
   /* lost (far off the path): options differ little in distance (all move
    * away for the next second or two) but much in where they face; the
    * way back is towards the path near where the character left it */
@@ -202,6 +212,7 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
   out->node = e->to;
   out->seg = in->seg;
   out->cost = in->cost;
+  out->beyond = in->beyond;
   const uint32_t fc = e->frame_count;
   uint32_t ks[2];
   uint32_t nk = 0;
@@ -225,10 +236,11 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
       z = in->W.z + (-sw * r[0] + cw * r[1]);
       h = in->W.h + r[2];
     }
-    float d;
+    float d, b;
     float sc = sample_cost(c, x, z, h, in->u + e->arc_length * k / (float)fc,
-                           x - px, z - pz, k - kprev, &out->seg, &d);
+                           x - px, z - pz, k - kprev, &out->seg, &d, &b);
     out->cost += sc * w / c->T;
+    out->beyond += b * w / c->T;
     if (d > md) md = d;
     if (out->cost + in->pen >= bound) {
       /* already no better than the bound: costs and penalties only grow
@@ -299,10 +311,11 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     float w = (fk < room ? fk : room) - pf;
     smgi_xform2 lk = {tr[4u * k], tr[4u * k + 1u], tr[4u * k + 2u]};
     smgi_xform2 end = smgi_xf_mul(st.W, lk);
-    float d;
+    float d, b;
     float sc = sample_cost(c, end.x, end.z, end.h, u0 + tr[4u * k + 3u],
-                           end.x - px, end.z - pz, fk - pf, &st.seg, &d);
+                           end.x - px, end.z - pz, fk - pf, &st.seg, &d, &b);
     st.cost += sc * w / c->T;
+    st.beyond += b * w / c->T;
     st.f = f0 + (fk < room ? fk : room);
     if (te[k] != SMGI_NONE) {
       const smgi_edge* e = &g->data.lower_edges[te[k]];
@@ -317,7 +330,9 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     pz = end.z;
   }
   float v = seq_value(c, &st);
-  c->leaf_err = v - st.pen;
+  /* an unfinished window extrapolated at its mean, as seq_value does */
+  c->leaf_beyond = st.f < c->T && st.f > 0.0f ? st.beyond * c->T / st.f
+                                              : st.beyond;
   return v;
 }
 
@@ -382,7 +397,7 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
   float v = smgi_seq_leaf(c, st, *best);
   if (v < *best) {
     *best = v;
-    c->best_err = c->leaf_err;
+    c->best_beyond = c->leaf_beyond;
     memcpy(c->best_path, c->path, sizeof(uint32_t) * depth);
     c->best_len = depth;
   }
@@ -402,7 +417,7 @@ void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
   c->lost = c->following &&
             smgi_plan_start_error(in->path, W, s, seg) > SMGI_LOST_DISTANCE;
   c->yield = 0;
-  c->leaf_err = c->best_err = 0.0f;
+  c->leaf_beyond = c->best_beyond = 0.0f;
   end_target(in, &c->tx, &c->tz);
   c->style0 = smgi_style_at(in->cons, s);
   c->style_end = smgi_next_constraint_arc(in->cons, s);

@@ -40,8 +40,9 @@ typedef struct smgi_seq_ctx {
   int following;     /* a path to follow from s0 on (else: stay near tx,tz) */
   int lost;          /* far off the path: the agile style is wanted */
   int yield;         /* the wanted style cannot follow: the agile one is */
-  float leaf_err;    /* path error part of the last smgi_seq_leaf value */
-  float best_err;    /* and of the best sequence found */
+  float leaf_beyond; /* mean distance from the path beyond the steering's
+                      * reach of the last smgi_seq_leaf sequence ... */
+  float best_beyond; /* ... and of the best sequence found */
   float tx, tz;      /* where to stay when not following */
   uint32_t style0;   /* wanted style at s0 ... */
   float style_end;   /* ... which holds until this arc (next constraint) */
@@ -59,6 +60,8 @@ typedef struct smgi_seq_state {
   float cost;        /* accumulated error (mean over the window) */
   float pen;         /* worst style penalty on the way */
   uint32_t seg;      /* path segment hint near s0 + u */
+  float beyond;      /* accumulated distance from the path beyond what the
+                      * steering removes (mean over the window) */
 } smgi_seq_state;
 
 /* Edge evaluations one ranking may spend. With root steering on, a
@@ -87,11 +90,11 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw,
                    smgi_seq_state* out, float* maxd);
 /* Value of a sequence that stops choosing at `st` (its natural
  * continuation stands for the rest of the window); INFINITY once it
- * cannot beat `bound`. Sets c->leaf_err. */
+ * cannot beat `bound`. Sets c->leaf_beyond. */
 float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound);
 /* Depth-first branch and bound below `st`, branching at the next
  * `branches` nodes with a choice; *best is the bound, lowered (with
- * c->best_path, best_len, best_err) when a better sequence is found.
+ * c->best_path, best_len, best_beyond) when a better sequence is found.
  * c->path[0 .. depth) holds the edges leading to st. */
 void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
                   uint32_t depth, float* best);

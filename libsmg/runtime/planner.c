@@ -10,8 +10,10 @@
  *    heading and travel terms along the sequence, style penalties from
  *    the derived hop counts, branch and bound under a budget);
  *  - rank_node ranks again with the style yielding to the graph's most
- *    agile one when even the best sequence in the wanted style leaves the
- *    path by more than SMGI_YIELD_ERROR on average.
+ *    agile one when even the best sequence in the wanted style stays off
+ *    the path by more than SMGI_YIELD_ERROR on average beyond what the
+ *    steering removes, the steering is short of the turn even slowed, or
+ *    the character has drifted SMGI_YIELD_DRIFT off.
  * The best edge is pushed with its distance error (where its end leaves
  * the character from the path, the paper's threshold test), followed by
  * up to SMGI_SEQ_COMMIT_FRAMES of the best sequence's next edges (fewer
@@ -46,7 +48,8 @@ typedef struct cand {
   uint32_t seg_end;
   smgi_xform2 end; /* ground transform after the edge */
   uint32_t work;    /* edge evaluations spent on it (look-ahead included) */
-  float seq_err;    /* path error part of its best sequence's value */
+  float seq_beyond; /* its best sequence's mean distance from the path
+                     * beyond what the steering removes */
 } cand;
 
 static smgi_xform2 ground_of(const smg_graph* g, uint32_t frame) {
@@ -116,7 +119,7 @@ static uint32_t rank_pass(const job* j, uint32_t node,
                                            j->in->path->length, s) &&
                        !smgi_derived_of(g)->style_can_stop[sc.style0]);
   *following = sc.following && !sc.lost;
-  smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
+  smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg, 0.0f};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
   float cw, sw;
@@ -149,7 +152,7 @@ static uint32_t rank_pass(const job* j, uint32_t node,
     x->s_end = s_end;
     x->seg_end = sg;
     x->score = smgi_seq_leaf(&sc, first[k], INFINITY);
-    x->seq_err = sc.leaf_err;
+    x->seq_beyond = sc.leaf_beyond;
     if (x->score < best) best = x->score;
   }
   /* then branch and bound, the most promising first; a candidate's score
@@ -180,7 +183,7 @@ static uint32_t rank_pass(const job* j, uint32_t node,
     pool -= share - sc.budget;
     if (b < best) { /* found a better sequence below this candidate */
       x->score = b;
-      x->seq_err = sc.best_err;
+      x->seq_beyond = sc.best_beyond;
       best = b;
     } else if (isfinite(best)) {
       x->score = best + x->score;
@@ -215,15 +218,23 @@ static uint32_t rank_pass(const job* j, uint32_t node,
 }
 
 /* Rank the out-edges of `node`; when even the best sequence in the wanted
- * style leaves the path by more than SMGI_YIELD_ERROR on average (a run asked
- * for where the path turns tighter than runs can), rank again letting the
- * style yield to the most agile one - before the character is lost. */
+ * style stays off the path by more than SMGI_YIELD_ERROR on average beyond
+ * what the root steering removes (a run asked for where the path turns
+ * tighter than a run can be bent), when the steering, slowed as far as it
+ * goes, still turns short of the path ahead, or when the character is
+ * already more than SMGI_YIELD_DRIFT off the path (the style is failing to
+ * follow), rank again letting the style yield to the most agile one -
+ * before the character is lost. An error the steering removes is no
+ * reason to drop the style: a run bent around a curve is still the run
+ * asked for. */
 static uint32_t rank_node(const job* j, uint32_t node,
                           smgi_xform2 W, float s, uint32_t seg, cand* c,
                           uint32_t* seq, uint32_t* seq_len) {
   int following;
   uint32_t n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 0, &following);
-  if (n > 0 && following && c[0].seq_err > SMGI_YIELD_ERROR &&
+  if (n > 0 && following &&
+      (c[0].seq_beyond > SMGI_YIELD_ERROR ||
+       j->in->path_error > SMGI_YIELD_DRIFT || j->steer->saturated) &&
       smgi_derived_of(j->in->graph)->agile_style != smgi_style_at(j->in->cons, s)) {
     n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 1, &following);
     for (uint32_t i = 0; i < n; ++i)

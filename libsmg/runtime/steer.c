@@ -31,8 +31,10 @@
  * it with constant deceleration, sliding the remaining offset out on the
  * way. There it holds the pose (the graph need not contain standing
  * motion) until the path changes. Where the path turns too tightly for the
- * available turning at the current speed, the playback slows down (to no
- * less than SMGI_STEER_RATE_MIN). What the planner should make of the
+ * available turning at the current speed, the character slows down: the
+ * playback to no less than SMGI_STEER_RATE_MIN (slower is slow motion),
+ * the rest by shorter strides (part of each step's travel slid back,
+ * bounded by the slide ratio). What the planner should make of the
  * correction is smgi_steer_plan_view / _plan_reach (inline,
  * steer_envelope.h). When the correction since the plan was chosen adds
  * up, the stage asks the step to plan again (smgi_steer_wants_replan)
@@ -62,6 +64,8 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->turn = 0.0f;
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
+  s->stride = 1.0f;
+  s->saturated = 0;
   s->drift_turn = s->drift_move = 0.0f;
   s->heading_seg = SMGI_NONE;
 }
@@ -229,6 +233,7 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
   if (!s->enabled || in->path->count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
+    s->stride = approach(s->stride, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
     return full * s->rate;
   }
   if (s->mode == SMGI_STEER_FOLLOW) {
@@ -239,10 +244,18 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     /* the correction the path asks for at full playback: its turning at
      * the motion's speed minus the motion's own turning */
     float need = fabsf(kappa * s->own_speed - s->own_turn) / r;
+    /* the share of the full speed at which the turn limit suffices:
+     * playback no slower than SMGI_STEER_RATE_MIN (slower looks like
+     * slow motion, every swing drawn out), the rest by shorter strides,
+     * at most the slide ratio of them */
     float want = 1.0f;
+    const float slowest = SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
     if (need > s->turn_limit)
-      want = smgi_clampf(s->turn_limit / need, SMGI_STEER_RATE_MIN, 1.0f);
-    s->rate = approach(s->rate, want, SMGI_STEER_RATE_ACCEL * dt);
+      want = smgi_clampf(s->turn_limit / need, slowest, 1.0f);
+    s->saturated = need * slowest > s->turn_limit;
+    const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
+    s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
+    s->stride = approach(s->stride, want / rate, SMGI_STEER_RATE_ACCEL * dt);
     consider_stop(s, lower, in);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
   }
@@ -250,7 +263,9 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     s->rate = 0.0f;
     return 0.0f;
   }
-  /* braking: constant deceleration that ends on the stop frame */
+  /* braking: constant deceleration that ends on the stop frame, strides
+   * back to full (the frame was chosen where the motion puts it) */
+  s->stride = approach(s->stride, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
   float left = frames_to(lower, in->graph, s->stop_seq, s->stop_offset);
   if (left < 0.0f) { /* re-planned away: follow again */
     s->mode = SMGI_STEER_FOLLOW;
@@ -323,7 +338,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   if (dt <= 0.0f) return;
   /* the motion's own speed and turning this step, low-passed */
   float k = dt / (SMGI_STEER_SMOOTH + dt);
+  float travel_x = 0.0f, travel_z = 0.0f; /* the motion's, this step */
   if (s->have_prev) {
+    travel_x = gx - s->prev_x;
+    travel_z = gz - s->prev_z;
     float vx = gx - s->prev_x, vz = gz - s->prev_z;
     float v = sqrtf(vx * vx + vz * vz) / dt;
     float w = smgi_wrap_angle(gh - s->prev_h) / dt;
@@ -407,6 +425,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     s->slide[0] *= sb / sl;
     s->slide[1] *= sb / sl;
   }
+  /* shorter strides: the share of this step's travel not kept is slid
+   * back (the planted feet keep their anchors, so the steps shorten) */
+  const float back_x = (s->stride - 1.0f) * travel_x;
+  const float back_z = (s->stride - 1.0f) * travel_z;
   delta d;
   d.da = s->turn * dt;
   /* the half angle's sine and cosine give the pose's yaw quaternion and,
@@ -417,8 +439,8 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   d.c = 1.0f - 2.0f * sh * sh;
   d.px = gx;
   d.pz = gz;
-  d.tx = s->slide[0] * dt;
-  d.tz = s->slide[1] * dt;
+  d.tx = s->slide[0] * dt + back_x;
+  d.tz = s->slide[1] * dt + back_z;
   if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
     /* the pose just composed ... */
     float rx = pose->root[0] - gx, rz = pose->root[2] - gz, q[4];
@@ -451,7 +473,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     }
   }
   s->drift_turn += fabsf(d.da);
-  s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);
+  /* shorter strides move the plan back along the path with the
+   * character, not off it: no reason to choose the edges again */
+  s->drift_move += sqrtf((d.tx - back_x) * (d.tx - back_x) +
+                         (d.tz - back_z) * (d.tz - back_z));
   s->prev_x = pose->ground[0];
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;

@@ -20,6 +20,7 @@ typedef struct smgi_steer_envelope {
   float slide_ratio;   /* translation per metre the motion travels */
   float stop_seconds;  /* braking time at the end */
   float own_speed;     /* the motion's own ground speed, m/s */
+  uint32_t saturated;  /* turning short of the path even at the slowest */
 } smgi_steer_envelope;
 
 /* Turning per metre the steering can add at `speed` m/s: its additive
@@ -43,6 +44,21 @@ static inline float smgi_steer_plan_reach(const smgi_steer_envelope* s,
   if (!s->enabled || u <= 0.0f) return 0.0f;
   float k = smgi_steer_plan_curve(s, speed);
   return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
+}
+
+/* The slowest share of the motion's speed the steering takes a tight turn
+ * at (steer.c): playback down to SMGI_STEER_RATE_MIN, strides shortened
+ * by up to the slide ratio. */
+static inline float smgi_steer_slowest(const smgi_steer_envelope* s) {
+  return SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
+}
+
+/* How far off the path the steering can bring motion back within its
+ * first `u` metres at `speed` m/s when it also slows down for the turn
+ * (smgi_steer_slowest): what no correction removes lies beyond this. */
+static inline float smgi_steer_plan_reach_slowed(const smgi_steer_envelope* s,
+                                                 float u, float speed) {
+  return smgi_steer_plan_reach(s, u, speed * smgi_steer_slowest(s));
 }
 
 /* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */

@@ -21,6 +21,8 @@ typedef struct smgi_step_in {
   float progress;                /* arc length of the ground position's
                                     projection onto the path */
   uint32_t seg;                  /* segment of that projection */
+  float path_error;              /* distance of the ground position from
+                                    the path */
   float anchor[2];               /* where to stay without a path */
   double time;                   /* seconds stepped */
 } smgi_step_in;

@@ -41,8 +41,11 @@
 #define SMGI_MAX_BACKTRACKS 8u   /* backtracks before accepting the best */
 #define SMGI_END_EPS 0.3f        /* metres before the path's end that count
                                     as there (nothing more to follow) */
-#define SMGI_YIELD_ERROR 0.8f    /* mean sequence error beyond which the
+#define SMGI_YIELD_ERROR 0.8f    /* mean distance from the path beyond
+                                    the steering's reach (m) over which the
                                     wanted style yields to the agile one */
+#define SMGI_YIELD_DRIFT 0.25f   /* ... or the character's distance from
+                                    the path (m): failing to follow */
 #define SMGI_SEQ_COMMIT_FRAMES 12.0f /* frames of the best sequence
                                         committed at once */
 
@@ -163,7 +166,9 @@
 #define SMGI_STEER_LOOK_MIN 0.5f      /* ... in metres, at least */
 #define SMGI_STEER_LOOK_MAX 2.0f      /* ... and at most */
 #define SMGI_STEER_CURVE_AHEAD 1.5f   /* m: path curvature measured over this */
-#define SMGI_STEER_RATE_MIN 0.5f      /* slowest playback for a tight turn */
+#define SMGI_STEER_RATE_MIN 0.8f      /* slowest playback for a tight turn
+                                         (slower is slow motion; the rest
+                                         of the slowing is shorter strides) */
 #define SMGI_STEER_RATE_ACCEL 1.0f    /* playback rate change per second */
 #define SMGI_STEER_STOP_NEAR 1.0f     /* a stop frame lands this near the end */
 #define SMGI_STEER_ONE_FOOT 0.5f      /* m: a stop frame with one foot down
