@@ -30,6 +30,9 @@ typedef struct smgi_foot {
                           too far): not planted again before the weight
                           is back to 0 or the contact ends */
   float weight;        /* IK blend weight 0..1 */
+  uint32_t guided;     /* placed by the caller this step (smgi_ik_guide) */
+  float guide[3];      /* where: toe x, z and the ankle's raise above the
+                          animation */
   float fix[2][4];     /* world-space hip and knee rotations the last solve
                           added (identity when the foot was not solved): the
                           next solve starts from them */
@@ -56,6 +59,11 @@ typedef struct smgi_ik {
 void smgi_ik_init_legs(smgi_ik* ik, const smg_graph* g, uint8_t* mark);
 /* Feet unplanted, with no correction to start the next solve from. */
 void smgi_ik_reset(smgi_ik* ik);
+/* For the next smgi_ik_apply only: hold foot f's toe at (x, z), its ankle
+ * `raise` metres above where the animation has it, whatever the contact
+ * labels say (rest.c places the feet of a character coming to rest or
+ * turning on the spot); the foot stays planted there afterwards. */
+void smgi_ik_guide(smgi_ik* ik, uint32_t f, float x, float z, float raise);
 /* Anchor feet in contact and solve their legs on the character's pose. */
 void smgi_ik_apply(smg_character* ch, float dt);
 

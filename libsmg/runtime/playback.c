@@ -59,7 +59,7 @@ smg_result smgi_step(smg_character* ch, float dt) {
   const smgi_edge* edges = ch->graph->data.lower_edges;
   smgi_pose_prefetch(ch);
   /* the playback rate: slower for a tight turn, braking at the end */
-  const float frames = smgi_steer_frames(ch, dt);
+  const float frames = smgi_rest_frames(ch, smgi_steer_frames(ch, dt));
   /* keep the horizon planned; this step's frames are guaranteed whatever
    * the budget */
   smgi_plan(ch, SMGI_PLAN_BUDGET, frames);
@@ -87,7 +87,9 @@ smg_result smgi_step(smg_character* ch, float dt) {
   ch->time += (double)dt;
 
   /* upper body: time advance, splice scheduling and synchronization */
-  smgi_upper_advance(ch, frames);
+  /* at rest the lower body stands still but an action goes on */
+  smgi_upper_advance(ch, ch->rest.phase != SMGI_REST_OFF ? dt * ch->fps
+                                                         : frames);
   if (ch->upper.fade < 1.0f) {
     ch->upper.fade += dt * ch->upper.fade_rate;
     if (ch->upper.fade > 1.0f) ch->upper.fade = 1.0f;
@@ -99,11 +101,14 @@ smg_result smgi_step(smg_character* ch, float dt) {
   if (new_frame) smgi_sync_update(ch);
 
   smgi_pose_compose(ch);
-  smgi_steer_apply(ch, dt);
+  if (smgi_rest_steers(ch)) smgi_steer_apply(ch, dt);
+  smgi_rest_pose(ch, dt);
   /* world transforms are cached: IK needs them, and the getters then
    * only convert (model matrices) or copy (local pose) */
   smgi_fk(ch->graph, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);
+  smgi_rest_feet(ch);
   smgi_ik_apply(ch, dt);
+  smgi_rest_flatten(ch);
   update_progress(ch);
   return SMG_OK;
 }

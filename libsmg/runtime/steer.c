@@ -74,6 +74,10 @@ void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
 }
 
 void smgi_steer_path_changed(smgi_steer* s) {
+  /* from rest the first step plays at a natural cadence, not as a slow
+   * motion ramp from 0 */
+  if (s->mode == SMGI_STEER_REST && s->rate < SMGI_STEER_BRAKE_FLOOR)
+    s->rate = SMGI_STEER_BRAKE_FLOOR;
   s->mode = SMGI_STEER_FOLLOW;
   s->heading_seg = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
@@ -171,6 +175,7 @@ static void consider_stop(smg_character* ch) {
   const uint32_t limit =
       (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
+  const float lead = SMGI_STEER_STOP_LEAD * ch->graph->data.info->leg_length;
   /* decide only on a plan that reaches that far (not just after a
    * re-plan left the edge playing alone) */
   if (ahead < limit) return;
@@ -180,7 +185,9 @@ static void consider_stop(smg_character* ch) {
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
     uint32_t fl;
     if (!frame_ground(ch, k, &x, &z, &fl)) break;
-    float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
+    /* the settling step carries the hips on by about `lead` (rest.c):
+     * the frame to stop on is that far before the end */
+    float d = fabsf(sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez)) - lead);
     /* both feet down: labelled so, or where the label passes from one
      * foot to the other (contact labels may leave no frame between the
      * two supports, though both feet are on the floor there) */
@@ -284,6 +291,11 @@ float smgi_steer_frames(smg_character* ch, float dt) {
   float r = s->rate > SMGI_STEER_REST_RATE ? s->rate : SMGI_STEER_REST_RATE;
   float decel = left > 1e-3f ? ch->fps * r * r / (2.0f * left) : INFINITY;
   float r1 = r - decel * dt;
+  /* never slow motion: the last step plays at no less than
+   * SMGI_STEER_BRAKE_FLOOR of real time, and the stage that takes over at
+   * rest (rest.c) lets the hips glide on over the feet */
+  if (r1 < SMGI_STEER_BRAKE_FLOOR && r >= SMGI_STEER_BRAKE_FLOOR)
+    r1 = SMGI_STEER_BRAKE_FLOOR;
   float frames = 0.5f * (r + (r1 > 0.0f ? r1 : 0.0f)) * full;
   if (r1 <= SMGI_STEER_REST_RATE || frames >= left) {
     s->mode = SMGI_STEER_REST;
@@ -339,6 +351,65 @@ static void lag_write(smg_character* ch) {
   smgi_lag_reset(&ch->steer);
 }
 
+/* Move the pose just composed and every queued placement by d (its c
+ * and s filled here): the plan moves with the character. */
+static void move(smg_character* ch, delta* d) {
+  smgi_steer* s = &ch->steer;
+  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
+  const float gh = ch->pose.heading;
+  /* the half angle's sine and cosine give the pose's yaw quaternion and,
+   * by the double-angle formulas, the turn itself: one sincos a step */
+  float sh, chh;
+  smgi_sincosf(0.5f * d->da, &sh, &chh);
+  d->s = 2.0f * sh * chh;
+  d->c = 1.0f - 2.0f * sh * sh;
+  if (d->da == 0.0f && d->tx == 0.0f && d->tz == 0.0f) return;
+  /* the pose just composed (turned about d's pivot) ... */
+  float rx = ch->pose.root[0] - d->px, rz = ch->pose.root[2] - d->pz, q[4];
+  float ux = gx - d->px, uz = gz - d->pz;
+  const float yaw[4] = {0.0f, sh, 0.0f, chh};
+  ch->pose.root[0] = d->px + d->c * rx + d->s * rz + d->tx;
+  ch->pose.root[2] = d->pz - d->s * rx + d->c * rz + d->tz;
+  smgi_q_mul(yaw, ch->pose.rot, q);
+  smgi_q_normalize(q);
+  ch->pose.rot[0] = q[0];
+  ch->pose.rot[1] = q[1];
+  ch->pose.rot[2] = q[2];
+  ch->pose.rot[3] = q[3];
+  ch->pose.ground[0] = d->px + d->c * ux + d->s * uz + d->tx;
+  ch->pose.ground[1] = d->pz - d->s * ux + d->c * uz + d->tz;
+  ch->pose.heading = smgi_wrap_angle(gh + d->da);
+  /* ... and every queued placement, so the plan moves with it: the two
+   * entries the pose samples now, further ones when read (writing every
+   * planned entry every step was most of this stage's cache misses in
+   * a crowd) */
+  for (uint32_t i = 0; i < ch->lower.count && i < 2u; ++i) {
+    smgi_qentry* e = smgi_q_at(&ch->lower, i);
+    delta_xf(d, &e->W);
+    delta_xf(d, &e->M);
+  }
+  if (ch->lower.count > 2u) {
+    lag_follow(s, d);
+    if (s->lag_steps >= SMGI_STEER_LAG_STEPS) lag_write(ch);
+  } else {
+    smgi_lag_reset(s);
+  }
+}
+
+void smgi_steer_move(smg_character* ch, float da, float px, float pz,
+                     float tx, float tz) {
+  delta d;
+  d.da = da;
+  d.px = px;
+  d.pz = pz;
+  d.tx = tx;
+  d.tz = tz;
+  move(ch, &d);
+  ch->steer.prev_x = ch->pose.ground[0];
+  ch->steer.prev_z = ch->pose.ground[1];
+  ch->steer.prev_h = ch->pose.heading;
+}
+
 void smgi_steer_apply(smg_character* ch, float dt) {
   smgi_steer* s = &ch->steer;
   const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
@@ -391,8 +462,20 @@ void smgi_steer_apply(smg_character* ch, float dt) {
         float remain =
             2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
         if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
-        want_sx = (p->xz[2u * (p->count - 1u)] - sx) / remain;
-        want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
+        /* to `lead` before the end (consider_stop) */
+        float ox = p->xz[2u * (p->count - 1u)] - sx;
+        float oz = p->xz[2u * (p->count - 1u) + 1u] - sz;
+        const float ol = sqrtf(ox * ox + oz * oz);
+        const float lead =
+            SMGI_STEER_STOP_LEAD * ch->graph->data.info->leg_length;
+        if (ol > lead) {
+          ox -= ox * lead / ol;
+          oz -= oz * lead / ol;
+        } else {
+          ox = oz = 0.0f;
+        }
+        want_sx = ox / remain;
+        want_sz = oz / remain;
       }
     } else {
       if (s->at_valid) { /* progress has not moved since */
@@ -434,47 +517,11 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   }
   delta d;
   d.da = s->turn * dt;
-  /* the half angle's sine and cosine give the pose's yaw quaternion and,
-   * by the double-angle formulas, the turn itself: one sincos a step */
-  float sh, chh;
-  smgi_sincosf(0.5f * d.da, &sh, &chh);
-  d.s = 2.0f * sh * chh;
-  d.c = 1.0f - 2.0f * sh * sh;
   d.px = gx;
   d.pz = gz;
   d.tx = s->slide[0] * dt;
   d.tz = s->slide[1] * dt;
-  if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
-    /* the pose just composed ... */
-    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, q[4];
-    const float yaw[4] = {0.0f, sh, 0.0f, chh};
-    ch->pose.root[0] = gx + d.c * rx + d.s * rz + d.tx;
-    ch->pose.root[2] = gz - d.s * rx + d.c * rz + d.tz;
-    smgi_q_mul(yaw, ch->pose.rot, q);
-    smgi_q_normalize(q);
-    ch->pose.rot[0] = q[0];
-    ch->pose.rot[1] = q[1];
-    ch->pose.rot[2] = q[2];
-    ch->pose.rot[3] = q[3];
-    ch->pose.ground[0] = gx + d.tx;
-    ch->pose.ground[1] = gz + d.tz;
-    ch->pose.heading = smgi_wrap_angle(gh + d.da);
-    /* ... and every queued placement, so the plan moves with it: the two
-     * entries the pose samples now, further ones when read (writing every
-     * planned entry every step was most of this stage's cache misses in
-     * a crowd) */
-    for (uint32_t i = 0; i < ch->lower.count && i < 2u; ++i) {
-      smgi_qentry* e = smgi_q_at(&ch->lower, i);
-      delta_xf(&d, &e->W);
-      delta_xf(&d, &e->M);
-    }
-    if (ch->lower.count > 2u) {
-      lag_follow(s, &d);
-      if (s->lag_steps >= SMGI_STEER_LAG_STEPS) lag_write(ch);
-    } else {
-      smgi_lag_reset(s);
-    }
-  }
+  move(ch, &d);
   s->drift_turn += fabsf(d.da);
   s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);
   s->prev_x = ch->pose.ground[0];

@@ -72,6 +72,12 @@ float smgi_steer_frames(smg_character* ch, float dt);
 /* After the playhead passed `pops` edges: the entries now next in line
  * get the correction pending for them written in (smgi_lag_apply). */
 void smgi_steer_refresh(smg_character* ch, uint32_t pops);
+/* Turn the pose just composed and every queued placement by da radians
+ * about (px, pz), then shift them by (tx, tz): the character moves as a
+ * whole, its plan with it (rest.c: the hips settling over the feet,
+ * turning on the spot). */
+void smgi_steer_move(smg_character* ch, float da, float px, float pz,
+                     float tx, float tz);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
 void smgi_steer_apply(smg_character* ch, float dt);

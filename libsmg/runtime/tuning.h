@@ -169,6 +169,13 @@
                                     counts as this much further */
 #define SMGI_STEER_NO_FOOT 1.0f       /* ... with no foot down */
 #define SMGI_STEER_REST_RATE 0.03f    /* below this rate the stop is made */
+#define SMGI_STEER_STOP_LEAD 0.2f     /* leg lengths before the end the
+                                         stop frame's hips land: the
+                                         settling step (rest.c) carries
+                                         them on by about that */
+#define SMGI_STEER_BRAKE_FLOOR 0.8f   /* braking and starting play at least
+                                         this fraction of real time (slower
+                                         reads as slow motion) */
 #define SMGI_STEER_PLAN_WEIGHT 0.5f   /* the planner counts an error the
                                          steering can remove at this
                                          fraction of itself */
@@ -186,5 +193,26 @@
                                          distance searched for a stop */
 #define SMGI_STEER_HORIZON 1.0f       /* s planned ahead while steering
                                          follows, away from the end */
+
+/* ---- standing still (rest.c) ---- */
+#define SMGI_REST_STEP_SECONDS 0.45f /* the settling step (a walking step
+                                        lasts 0.3-0.6 s) */
+#define SMGI_REST_FADE_IN 0.6f   /* s: the hips glide over the feet and the
+                                    standing motion fades in */
+#define SMGI_REST_FADE_OUT 0.3f  /* s: the standing motion fades out */
+#define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at
+                                    most (6-7 cm) */
+#define SMGI_REST_GLIDE_MAX 0.6f /* leg lengths the hips glide at most */
+#define SMGI_REST_PURSUIT 1.0f   /* m along a new path: where to face */
+#define SMGI_REST_TURN_MIN 1.05f /* rad (60 deg): a path starting further
+                                    off the facing is met by turning on the
+                                    spot first */
+#define SMGI_REST_TURN_RATE 3.0f /* rad/s of turning on the spot, mean */
+#define SMGI_REST_TURN_STEP 1.6f /* rad of turn per step at most */
+#define SMGI_REST_TURN_STEP_SECONDS 0.3f /* s per turning step at least */
+#define SMGI_REST_REJOIN_SECONDS 0.3f /* s a lifted foot takes to join
+                                         the locomotion's */
+#define SMGI_REST_KEEP_SECONDS 1.5f /* s a foot stays where it stood when
+                                       walking on, at most */
 
 #endif /* SMG_TUNING_H */

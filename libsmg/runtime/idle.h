@@ -1,0 +1,27 @@
+/*
+ * idle.h - the standing motion a character plays at rest, chosen once at
+ * load (idle.c, called by graph_derived.c) from the stretches standing.h
+ * finds in the pool: the longest one whose feet stand naturally close
+ * (toes at most SMGI_IDLE_STANCE leg lengths apart).
+ */
+#ifndef SMG_IDLE_H
+#define SMG_IDLE_H
+
+#include <stdint.h>
+
+#include "graph_internal.h"
+
+#define SMGI_IDLE_STANCE 0.5f /* leg lengths between the toes, at most */
+
+typedef struct smgi_idle {
+  uint32_t first, count; /* pool frames; count 0: the graph has none */
+  /* left and right toe (x, z) at `first`, in that frame's ground frame
+   * (FRMI root2d): where the feet stand relative to the hips */
+  float toe[2][2];
+} smgi_idle;
+
+/* Chooses g's idle motion (validated data). Bounded by the pool's size;
+ * no allocation. */
+void smgi_idle_choose(const smg_graph* g, smgi_idle* out);
+
+#endif /* SMG_IDLE_H */

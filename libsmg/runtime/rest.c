@@ -1,0 +1,448 @@
+/*
+ * rest.c - standing still (docs/runtime.md, "Stopping, standing,
+ * starting").
+ *
+ * The steering brings a character to rest on a frame with both feet down
+ * at the path's end, at no less than SMGI_STEER_BRAKE_FLOOR of real time.
+ * From there this stage takes over:
+ *
+ *  - settling: the rear foot steps up beside the front one (lifted on an
+ *    arc, placed by the foot IK), while the hips glide on over the feet,
+ *    fast at first and slowing down, the way a walker's momentum dies out
+ *    over the last step. With standing motion in the graph (idle.h) the
+ *    front foot is where that motion's foot stands, the rear foot steps to
+ *    where its other foot stands, and the motion fades in over the pose;
+ *    without any (the CMU walks) the rear foot steps to hip width beside
+ *    the front one and the stop pose stays, held by the IK;
+ *  - standing: the standing motion plays on, forwards and backwards (no
+ *    seam), under whatever action the upper body performs; the feet stay
+ *    where they were placed;
+ *  - a new path: where it starts ahead the locomotion takes over again
+ *    (the standing motion fades out); where it starts behind the
+ *    character (more than SMGI_REST_TURN_MIN off its facing) the
+ *    character first turns on the spot, in steps of at most
+ *    SMGI_REST_TURN_STEP alternating between the feet, the pose and its
+ *    plan turning about the hips (smgi_steer_move), then walks off.
+ *
+ * Bounded work per step, no allocation; nothing happens while the
+ * character follows its path.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "character_internal.h"
+
+static float ease_out(float u) {
+  u = smgi_clampf(u, 0.0f, 1.0f);
+  return 1.0f - (1.0f - u) * (1.0f - u);
+}
+
+static float smooth(float u) {
+  u = smgi_clampf(u, 0.0f, 1.0f);
+  return u * u * (3.0f - 2.0f * u);
+}
+
+/* Where toe f is shown (x, z): as the foot IK last left it, else as the
+ * last forward kinematics put it. */
+static void toe_shown(const smg_character* ch, uint32_t f, float* out) {
+  const smgi_foot* foot = &ch->ik.feet[f];
+  if (ch->ik.enabled && foot->shown[0] < INFINITY) {
+    out[0] = foot->shown[0];
+    out[1] = foot->shown[1];
+    return;
+  }
+  const smgi_info* info = ch->graph->data.info;
+  uint32_t j = f ? info->right_leg[3] : info->left_leg[3];
+  if (j >= ch->joint_count) j = f ? info->right_leg[2] : info->left_leg[2];
+  out[0] = ch->pose.wpos[3u * j];
+  out[1] = ch->pose.wpos[3u * j + 2u];
+}
+
+/* The path's direction from the character, relative to its facing. */
+static float path_turn(const smg_character* ch) {
+  const smgi_path* p = &ch->path;
+  if (p->count < 2u) return 0.0f;
+  float s = ch->progress + SMGI_REST_PURSUIT, x, z;
+  if (s > p->length) s = p->length;
+  uint32_t seg = ch->seg;
+  smgi_path_eval(p, s, &seg, &x, &z, NULL);
+  x -= ch->pose.ground[0];
+  z -= ch->pose.ground[1];
+  if (x * x + z * z < 1e-4f) return 0.0f;
+  return smgi_wrap_angle(smgi_atan2f(x, z) - ch->pose.heading);
+}
+
+static void begin_settle(smg_character* ch) {
+  smgi_rest* r = &ch->rest;
+  const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
+  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
+  const float h = ch->pose.heading;
+  float fx, fz, lx, lz;
+  smgi_rot2(h, 0.0f, 1.0f, &fx, &fz);
+  smgi_rot2(h, 1.0f, 0.0f, &lx, &lz);
+  for (uint32_t f = 0; f < 2u; ++f) toe_shown(ch, f, r->hold[f]);
+  /* the front foot stands, the rear one steps up beside it */
+  const float a0 = (r->hold[0][0] - gx) * fx + (r->hold[0][1] - gz) * fz;
+  const float a1 = (r->hold[1][0] - gx) * fx + (r->hold[1][1] - gz) * fz;
+  const uint32_t stance = a0 >= a1 ? 0u : 1u, step = 1u - stance;
+  float to[2];
+  if (idle->count > 0) {
+    /* the standing motion placed with its stance foot on ours */
+    float ox, oz;
+    smgi_rot2(h, idle->toe[stance][0], idle->toe[stance][1], &ox, &oz);
+    smgi_xform2 G = {r->hold[stance][0] - ox, r->hold[stance][1] - oz, h};
+    smgi_rot2(h, idle->toe[step][0], idle->toe[step][1], &ox, &oz);
+    to[0] = G.x + ox;
+    to[1] = G.z + oz;
+    const float* g0 = ch->graph->data.frames[idle->first].root2d;
+    const smgi_xform2 F = {g0[0], g0[1], g0[2]};
+    r->M = smgi_xf_mul(G, smgi_xf_inv(F));
+    r->glide[0] = G.x - gx;
+    r->glide[1] = G.z - gz;
+  } else {
+    /* hip width beside the stance foot, on the stepping foot's side */
+    const smgi_info* info = ch->graph->data.info;
+    const float* hl = ch->pose.wpos + 3u * info->left_leg[0];
+    const float* hr = ch->pose.wpos + 3u * info->right_leg[0];
+    const float wx = hl[0] - hr[0], wz = hl[2] - hr[2];
+    const float width = sqrtf(wx * wx + wz * wz);
+    const float side = (r->hold[step][0] - r->hold[stance][0]) * lx +
+                               (r->hold[step][1] - r->hold[stance][1]) * lz >=
+                           0.0f
+                       ? 1.0f
+                       : -1.0f;
+    to[0] = r->hold[stance][0] + side * width * lx;
+    to[1] = r->hold[stance][1] + side * width * lz;
+    /* the hips over the middle of the feet: it moves by half the step */
+    r->glide[0] = 0.5f * (to[0] - r->hold[step][0]);
+    r->glide[1] = 0.5f * (to[1] - r->hold[step][1]);
+  }
+  const float most = SMGI_REST_GLIDE_MAX * ch->graph->data.info->leg_length;
+  const float gl = sqrtf(r->glide[0] * r->glide[0] + r->glide[1] * r->glide[1]);
+  if (gl > most) {
+    r->glide[0] *= most / gl;
+    r->glide[1] *= most / gl;
+  }
+  r->glided = 0.0f;
+  r->foot = step;
+  r->from[0] = r->hold[step][0];
+  r->from[1] = r->hold[step][1];
+  r->hold[step][0] = to[0];
+  r->hold[step][1] = to[1];
+  r->at = 0.0f;
+  r->dir = 1.0f;
+  r->phase = SMGI_REST_SETTLE;
+  r->t = 0.0f;
+}
+
+static void begin_turn(smg_character* ch, float angle) {
+  smgi_rest* r = &ch->rest;
+  r->pivot[0] = ch->pose.ground[0];
+  r->pivot[1] = ch->pose.ground[1];
+  r->turn = angle;
+  r->turned = 0.0f;
+  r->turn_seconds = fabsf(angle) / SMGI_REST_TURN_RATE;
+  r->steps = (uint32_t)ceilf(fabsf(angle) / SMGI_REST_TURN_STEP);
+  if (r->steps < 2u) r->steps = 2u;
+  /* a step is never shorter than in walking */
+  if (r->turn_seconds < (float)r->steps * SMGI_REST_TURN_STEP_SECONDS)
+    r->turn_seconds = (float)r->steps * SMGI_REST_TURN_STEP_SECONDS;
+  /* the foot on the side turned to opens the turn */
+  r->foot = angle > 0.0f ? 1u : 0u; /* flipped by the first step */
+  r->phase = SMGI_REST_TURN;
+  r->t = 0.0f;
+  r->step = SMGI_NONE;
+  r->placed[0] = r->placed[1] = 0.0f;
+}
+
+static void begin_leave(smg_character* ch) {
+  smgi_rest* r = &ch->rest;
+  r->w_from = r->w;
+  r->keep = 3u;
+  r->rejoin[0] = r->rejoin[1] = -1.0f;
+  r->phase = SMGI_REST_LEAVE;
+  r->t = 0.0f;
+}
+
+/* The turn's angle at time t (eased at both ends). */
+static float turn_at(const smgi_rest* r, float t) {
+  return r->turn * smooth(t / r->turn_seconds);
+}
+
+/* Turning: the body about the pivot, one foot at a time. */
+static void turn_step(smg_character* ch) {
+  smgi_rest* r = &ch->rest;
+  const float a = turn_at(r, r->t);
+  const float da = a - r->turned;
+  if (da != 0.0f) {
+    smgi_steer_move(ch, da, r->pivot[0], r->pivot[1], 0.0f, 0.0f);
+    /* the standing motion turns with it */
+    float x, z;
+    smgi_rot2(da, r->M.x - r->pivot[0], r->M.z - r->pivot[1], &x, &z);
+    r->M.x = r->pivot[0] + x;
+    r->M.z = r->pivot[1] + z;
+    r->M.h = smgi_wrap_angle(r->M.h + da);
+    r->turned = a;
+  }
+  const float each = r->turn_seconds / (float)r->steps;
+  const uint32_t k = (uint32_t)(r->t / each);
+  if (k < r->steps && k != r->step) {
+    /* a new step: the other foot, to where the turn puts it when the
+     * step ends */
+    r->step = k;
+    r->foot ^= 1u;
+    r->from[0] = r->hold[r->foot][0];
+    r->from[1] = r->hold[r->foot][1];
+    const float end = turn_at(r, (float)(k + 1u) * each);
+    float x, z;
+    smgi_rot2(end - r->placed[r->foot], r->from[0] - r->pivot[0],
+              r->from[1] - r->pivot[1], &x, &z);
+    r->placed[r->foot] = end;
+    r->hold[r->foot][0] = r->pivot[0] + x;
+    r->hold[r->foot][1] = r->pivot[1] + z;
+  }
+}
+
+/* The standing motion at r->at laid over the pose with weight w. */
+static void overlay(smg_character* ch, float w) {
+  const smg_graph* g = ch->graph;
+  const smgi_idle* idle = &smgi_derived_of(g)->idle;
+  const smgi_rest* r = &ch->rest;
+  const uint32_t J = ch->joint_count;
+  uint32_t i0 = (uint32_t)r->at;
+  if (i0 >= idle->count) i0 = idle->count - 1u;
+  const float a = smgi_clampf(r->at - (float)i0, 0.0f, 1.0f);
+  const uint32_t fa = idle->first + i0;
+  const uint32_t fb = i0 + 1u < idle->count ? fa + 1u : fa;
+  const unsigned char* ra = smgi_graph_pose(g, fa);
+  const unsigned char* rb = smgi_graph_pose(g, fb);
+  float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
+  float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : ch->pose.tmp;
+  const smgi_joint_set set =
+      ch->upper.action != 0 ? SMGI_JOINTS_NOT_UPPER : SMGI_JOINTS_ALL;
+  smgi_sample_joints(g, ra, rb, a, set, tmp);
+  /* the root, placed in the world */
+  float pa[3], pb[3], qa[4], qb[4], q[4], yaw[4], root[4], x, z;
+  smgi_pose_root(ra, pa);
+  smgi_pose_root(rb, pb);
+  smgi_quat_unpack_raw(smgi_pose_rot(ra, 0), qa);
+  smgi_quat_unpack_raw(smgi_pose_rot(rb, 0), qb);
+  smgi_q_nlerp(qa, qb, a, q);
+  smgi_q_yaw(r->M.h, yaw);
+  smgi_q_mul(yaw, q, root);
+  smgi_xf_point(r->M, pa[0] + a * (pb[0] - pa[0]), pa[2] + a * (pb[2] - pa[2]),
+                &x, &z);
+  const float y = pa[1] + a * (pb[1] - pa[1]) - g->data.info->ground_height;
+  ch->pose.root[0] += w * (x - ch->pose.root[0]);
+  ch->pose.root[1] += w * (y - ch->pose.root[1]);
+  ch->pose.root[2] += w * (z - ch->pose.root[2]);
+  smgi_q_nlerp(ch->pose.rot, root, w, q);
+  memcpy(ch->pose.rot, q, sizeof q);
+  const smgi_joint* joints = g->data.joints;
+  for (uint32_t j = 1; j < J; ++j) {
+    if (set == SMGI_JOINTS_NOT_UPPER && joints[j].body_part == SMG_BODY_UPPER)
+      continue;
+    smgi_q_nlerp(ch->pose.rot + 4u * j, tmp + 4u * j, w, q);
+    memcpy(ch->pose.rot + 4u * j, q, sizeof q);
+  }
+}
+
+float smgi_rest_frames(const smg_character* ch, float frames) {
+  return ch->rest.phase == SMGI_REST_TURN ? 0.0f : frames;
+}
+
+int smgi_rest_steers(const smg_character* ch) {
+  return ch->rest.phase != SMGI_REST_TURN;
+}
+
+void smgi_rest_pose(smg_character* ch, float dt) {
+  smgi_rest* r = &ch->rest;
+  const int resting = ch->steer.enabled && ch->steer.mode == SMGI_STEER_REST;
+  if (r->phase == SMGI_REST_OFF) {
+    if (!resting) return;
+    begin_settle(ch);
+  } else if (!resting &&
+             (r->phase == SMGI_REST_SETTLE || r->phase == SMGI_REST_STAND)) {
+    const float a = path_turn(ch);
+    if (fabsf(a) > SMGI_REST_TURN_MIN)
+      begin_turn(ch, a);
+    else
+      begin_leave(ch);
+  } else if (resting && r->phase == SMGI_REST_LEAVE) {
+    begin_settle(ch);
+  }
+  r->t += dt;
+  r->dt = dt;
+  const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
+  switch (r->phase) {
+    case SMGI_REST_SETTLE: {
+      const float g = ease_out(r->t / SMGI_REST_FADE_IN);
+      smgi_steer_move(ch, 0.0f, ch->pose.ground[0], ch->pose.ground[1],
+                      (g - r->glided) * r->glide[0],
+                      (g - r->glided) * r->glide[1]);
+      r->glided = g;
+      r->w = idle->count ? g : 0.0f;
+      if (r->t >= SMGI_REST_FADE_IN && r->t >= SMGI_REST_STEP_SECONDS) {
+        r->phase = SMGI_REST_STAND;
+        r->t = 0.0f;
+      }
+      break;
+    }
+    case SMGI_REST_STAND:
+      r->w = idle->count ? 1.0f : 0.0f;
+      break;
+    case SMGI_REST_TURN:
+      turn_step(ch);
+      if (r->t >= r->turn_seconds) {
+        /* facing the path: the plan was made for the old facing */
+        if (resting) {
+          r->phase = SMGI_REST_STAND;
+          r->t = 0.0f;
+        } else {
+          smgi_replan(ch);
+          begin_leave(ch);
+        }
+      }
+      break;
+    case SMGI_REST_LEAVE:
+      r->w = r->w_from * (1.0f - smooth(r->t / SMGI_REST_FADE_OUT));
+      if (r->t >= SMGI_REST_FADE_OUT &&
+          (r->keep == 0u || r->t >= SMGI_REST_KEEP_SECONDS)) {
+        r->phase = SMGI_REST_OFF;
+        r->w = 0.0f;
+        return;
+      }
+      break;
+    default:
+      break;
+  }
+  if (r->phase != SMGI_REST_LEAVE) {
+    /* both feet stand (the IK holds them where this stage puts them) */
+    ch->pose.contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
+  }
+  if (idle->count > 1u && r->w > 0.0f) {
+    /* forwards and backwards through the standing motion */
+    const float last = (float)(idle->count - 1u);
+    r->at += r->dir * dt * ch->fps;
+    if (r->at > last) {
+      r->at = fmaxf(2.0f * last - r->at, 0.0f);
+      r->dir = -1.0f;
+    } else if (r->at < 0.0f) {
+      r->at = fminf(-r->at, last);
+      r->dir = 1.0f;
+    }
+    overlay(ch, r->w);
+  }
+}
+
+void smgi_rest_feet(smg_character* ch) {
+  smgi_rest* r = &ch->rest;
+  if (r->phase == SMGI_REST_OFF || !ch->ik.enabled) return;
+  if (r->phase == SMGI_REST_LEAVE) {
+    /* a foot stays where it stood until the locomotion's own contact
+     * for it ends: then it swings, and the IK lets the difference go in
+     * the air instead of sliding it along the floor */
+    const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
+    const smgi_info* info = ch->graph->data.info;
+    for (uint32_t f = 0; f < 2u; ++f) {
+      if (!(r->keep & (1u << f))) continue;
+      if (!(ch->pose.contacts & bits[f]) && r->rejoin[f] < 0.0f)
+        r->rejoin[f] = 0.0f;
+      if (r->rejoin[f] < 0.0f) {
+        smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
+        continue;
+      }
+      /* lifted by the locomotion: joins its foot in the air */
+      uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
+      if (toe >= ch->joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
+      const float* ap = ch->pose.wpos + 3u * toe;
+      const float s = smooth(r->rejoin[f] / SMGI_REST_REJOIN_SECONDS);
+      smgi_ik_guide(&ch->ik, f, r->hold[f][0] + s * (ap[0] - r->hold[f][0]),
+                    r->hold[f][1] + s * (ap[2] - r->hold[f][1]), 0.0f);
+      r->rejoin[f] += r->dt;
+      if (r->rejoin[f] >= SMGI_REST_REJOIN_SECONDS) r->keep &= ~(1u << f);
+    }
+    return;
+  }
+  const float lift = SMGI_REST_LIFT * ch->graph->data.info->leg_length;
+  float u = 1.0f;
+  if (r->phase == SMGI_REST_SETTLE) {
+    u = r->t / SMGI_REST_STEP_SECONDS;
+  } else if (r->phase == SMGI_REST_TURN) {
+    const float each = r->turn_seconds / (float)r->steps;
+    u = r->step == SMGI_NONE ? 1.0f : (r->t - (float)r->step * each) / each;
+  }
+  u = smgi_clampf(u, 0.0f, 1.0f);
+  for (uint32_t f = 0; f < 2u; ++f) {
+    if (f == r->foot && u < 1.0f) {
+      const float s = smooth(u);
+      smgi_ik_guide(&ch->ik, f,
+                    r->from[0] + s * (r->hold[f][0] - r->from[0]),
+                    r->from[1] + s * (r->hold[f][1] - r->from[1]),
+                    lift * sinf(SMGI_PI * u));
+    } else {
+      smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
+    }
+  }
+}
+
+/* Foot f's ankle turned so that its toe is at height y (its direction
+ * over the ground kept), by `amount` (0..1) of that turn. */
+static void flatten_foot(smg_character* ch, uint32_t f, float y,
+                         float amount) {
+  const smgi_info* info = ch->graph->data.info;
+  const uint32_t ankle = f ? info->right_leg[2] : info->left_leg[2];
+  const uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
+  const uint32_t J = ch->joint_count;
+  if (toe >= J || ankle >= J || ch->graph->data.joints[toe].parent < 0)
+    return;
+  float* wpos = ch->pose.wpos;
+  float* wrot = ch->pose.wrot;
+  const float v[3] = {wpos[3u * toe] - wpos[3u * ankle],
+                      wpos[3u * toe + 1u] - wpos[3u * ankle + 1u],
+                      wpos[3u * toe + 2u] - wpos[3u * ankle + 2u]};
+  const float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const float flat = sqrtf(v[0] * v[0] + v[2] * v[2]);
+  if (len < 1e-4f || flat < 1e-4f) return;
+  float ty = v[1] + amount * (y - wpos[3u * toe + 1u]);
+  ty = smgi_clampf(ty, -0.99f * len, 0.99f * len);
+  const float k = sqrtf(len * len - ty * ty) / flat;
+  const float w[3] = {v[0] * k, ty, v[2] * k};
+  float dq[4], q[4], pc[4];
+  smgi_q_from_to(v, w, dq);
+  smgi_q_mul(dq, wrot + 4u * ankle, q);
+  smgi_q_normalize(q);
+  memcpy(wrot + 4u * ankle, q, sizeof q);
+  /* the local rotation under the knee's world rotation */
+  const uint32_t knee = (uint32_t)ch->graph->data.joints[ankle].parent;
+  smgi_q_conj(wrot + 4u * knee, pc);
+  smgi_q_mul(pc, q, ch->pose.rot + 4u * ankle);
+  smgi_q_normalize(ch->pose.rot + 4u * ankle);
+  const uint32_t* list = ch->ik.leg_joints + (size_t)f * J;
+  smgi_fk_joints(ch, list + 3u + ch->ik.leg_side[f], ch->ik.leg_below[f]);
+}
+
+void smgi_rest_flatten(smg_character* ch) {
+  const smgi_rest* r = &ch->rest;
+  if (r->phase == SMGI_REST_OFF || r->phase == SMGI_REST_LEAVE ||
+      !ch->ik.enabled)
+    return;
+  float amount = 1.0f;
+  if (r->phase == SMGI_REST_SETTLE) amount = smooth(r->t / SMGI_REST_FADE_IN);
+  for (uint32_t f = 0; f < 2u; ++f) {
+    const smgi_foot* foot = &ch->ik.feet[f];
+    if (!ch->ik.leg_ok[f] || !(foot->stand_y < INFINITY)) continue;
+    float a = amount;
+    if (f == r->foot && r->phase != SMGI_REST_STAND) {
+      /* the stepping foot: flat from the moment it lands */
+      const float each = r->phase == SMGI_REST_SETTLE
+                             ? SMGI_REST_STEP_SECONDS
+                             : r->turn_seconds / (float)r->steps;
+      const float t0 = r->phase == SMGI_REST_SETTLE || r->step == SMGI_NONE
+                           ? 0.0f
+                           : (float)r->step * each;
+      if (r->t < t0 + each) a *= smooth((r->t - t0) / each);
+    }
+    flatten_foot(ch, f, foot->stand_y, a);
+  }
+}
