@@ -49,8 +49,12 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
     uint32_t k = smgi_standing_find(d->frames, d->frame_count, d->clips + c,
                                     1u, info->frame_rate, info->leg_length,
                                     s, 16u);
+    const uint32_t whole = (d->clips[c].flags & SMGI_CLIP_LOWER) != 0;
     for (uint32_t i = 0; i < k && i < 16u; ++i) {
-      if (s[i].count <= out->count) continue;
+      if (out->count > 0 &&
+          (whole < out->whole ||
+           (whole == out->whole && s[i].count <= out->count)))
+        continue;
       const smgi_frame* fr = &d->frames[s[i].first];
       float p[2][3], local[2][2];
       for (int f = 0; f < 2; ++f) {
@@ -62,6 +66,7 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
       if (dx * dx + dz * dz > stance * stance) continue;
       out->first = s[i].first;
       out->count = s[i].count;
+      out->whole = whole;
       memcpy(out->toe, local, sizeof local);
     }
   }

@@ -2,7 +2,8 @@
  * idle.h - the standing motion a character plays at rest, chosen once at
  * load (idle.c, called by graph_derived.c) from the stretches standing.h
  * finds in the pool: the longest one whose feet stand naturally close
- * (toes at most SMGI_IDLE_STANCE leg lengths apart).
+ * (toes at most SMGI_IDLE_STANCE leg lengths apart), one from a
+ * locomotion clip (the whole body stands) before one from an action.
  */
 #ifndef SMG_IDLE_H
 #define SMG_IDLE_H
@@ -15,6 +16,9 @@
 
 typedef struct smgi_idle {
   uint32_t first, count; /* pool frames; count 0: the graph has none */
+  uint32_t whole;        /* 1: from a locomotion clip, the whole body
+                            stands; 0: from an action performed standing,
+                            only its lower body is standing motion */
   /* left and right toe (x, z) at `first`, in that frame's ground frame
    * (FRMI root2d): where the feet stand relative to the hips */
   float toe[2][2];

@@ -107,8 +107,8 @@ smg_result smgi_step(smg_character* ch, float dt) {
    * only convert (model matrices) or copy (local pose) */
   smgi_fk(ch->graph, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);
   smgi_rest_feet(ch);
-  smgi_ik_apply(ch, dt);
   smgi_rest_flatten(ch);
+  smgi_ik_apply(ch, dt);
   update_progress(ch);
   return SMG_OK;
 }

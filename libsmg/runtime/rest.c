@@ -218,8 +218,11 @@ static void overlay(smg_character* ch, float w) {
   const unsigned char* rb = smgi_graph_pose(g, fb);
   float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
   float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : ch->pose.tmp;
-  const smgi_joint_set set =
-      ch->upper.action != 0 ? SMGI_JOINTS_NOT_UPPER : SMGI_JOINTS_ALL;
+  /* the upper body: the action's, or the standing motion's own when it
+   * comes from locomotion (an action's arms would wave unasked) */
+  const smgi_joint_set set = ch->upper.action != 0 || !idle->whole
+                                 ? SMGI_JOINTS_NOT_UPPER
+                                 : SMGI_JOINTS_ALL;
   smgi_sample_joints(g, ra, rb, a, set, tmp);
   /* the root, placed in the world */
   float pa[3], pb[3], qa[4], qb[4], q[4], yaw[4], root[4], x, z;
@@ -335,6 +338,30 @@ void smgi_rest_pose(smg_character* ch, float dt) {
   }
 }
 
+/* How far the stepping foot (r->foot) is through its step, 0..1 (1: it
+ * stands). */
+static float step_progress(const smgi_rest* r) {
+  float u = 1.0f;
+  if (r->phase == SMGI_REST_SETTLE) {
+    u = r->t / SMGI_REST_STEP_SECONDS;
+  } else if (r->phase == SMGI_REST_TURN && r->step != SMGI_NONE) {
+    const float each = r->turn_seconds / (float)r->steps;
+    u = (r->t - (float)r->step * each) / each;
+  }
+  return smgi_clampf(u, 0.0f, 1.0f);
+}
+
+/* A step's shape at progress u: the foot rises on a sine arc and moves
+ * over the ground only in the middle SMGI_REST_STEP_OVER of it, while it
+ * is well off the floor. */
+static float step_lift(const smg_character* ch, float u) {
+  return SMGI_REST_LIFT * ch->graph->data.info->leg_length *
+         sinf(SMGI_PI * u);
+}
+static float step_over(float u) {
+  return smooth((u - 0.5f) / SMGI_REST_STEP_OVER + 0.5f);
+}
+
 void smgi_rest_feet(smg_character* ch) {
   smgi_rest* r = &ch->rest;
   if (r->phase == SMGI_REST_OFF || !ch->ik.enabled) return;
@@ -346,40 +373,36 @@ void smgi_rest_feet(smg_character* ch) {
     const smgi_info* info = ch->graph->data.info;
     for (uint32_t f = 0; f < 2u; ++f) {
       if (!(r->keep & (1u << f))) continue;
-      if (!(ch->pose.contacts & bits[f]) && r->rejoin[f] < 0.0f)
+      uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
+      if (toe >= ch->joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
+      const float* ap = ch->pose.wpos + 3u * toe;
+      if (!(ch->pose.contacts & bits[f]) && r->rejoin[f] < 0.0f &&
+          ap[1] > ch->ik.feet[f].stand_y + SMGI_IK_CLEAR * info->leg_length)
         r->rejoin[f] = 0.0f;
       if (r->rejoin[f] < 0.0f) {
         smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
         continue;
       }
-      /* lifted by the locomotion: joins its foot in the air */
-      uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
-      if (toe >= ch->joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
-      const float* ap = ch->pose.wpos + 3u * toe;
-      const float s = smooth(r->rejoin[f] / SMGI_REST_REJOIN_SECONDS);
+      /* lifted by the locomotion: joins its foot in the air, on an arc
+       * short enough to end within the locomotion's swing */
+      const float u = r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
+      const float s = step_over(u);
       smgi_ik_guide(&ch->ik, f, r->hold[f][0] + s * (ap[0] - r->hold[f][0]),
-                    r->hold[f][1] + s * (ap[2] - r->hold[f][1]), 0.0f);
+                    r->hold[f][1] + s * (ap[2] - r->hold[f][1]),
+                    step_lift(ch, u));
       r->rejoin[f] += r->dt;
       if (r->rejoin[f] >= SMGI_REST_REJOIN_SECONDS) r->keep &= ~(1u << f);
     }
     return;
   }
-  const float lift = SMGI_REST_LIFT * ch->graph->data.info->leg_length;
-  float u = 1.0f;
-  if (r->phase == SMGI_REST_SETTLE) {
-    u = r->t / SMGI_REST_STEP_SECONDS;
-  } else if (r->phase == SMGI_REST_TURN) {
-    const float each = r->turn_seconds / (float)r->steps;
-    u = r->step == SMGI_NONE ? 1.0f : (r->t - (float)r->step * each) / each;
-  }
-  u = smgi_clampf(u, 0.0f, 1.0f);
+  const float u = step_progress(r);
   for (uint32_t f = 0; f < 2u; ++f) {
     if (f == r->foot && u < 1.0f) {
-      const float s = smooth(u);
+      const float s = step_over(u);
       smgi_ik_guide(&ch->ik, f,
                     r->from[0] + s * (r->hold[f][0] - r->from[0]),
                     r->from[1] + s * (r->hold[f][1] - r->from[1]),
-                    lift * sinf(SMGI_PI * u));
+                    step_lift(ch, u));
     } else {
       smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
     }
@@ -424,25 +447,33 @@ static void flatten_foot(smg_character* ch, uint32_t f, float y,
 
 void smgi_rest_flatten(smg_character* ch) {
   const smgi_rest* r = &ch->rest;
-  if (r->phase == SMGI_REST_OFF || r->phase == SMGI_REST_LEAVE ||
-      !ch->ik.enabled)
+  if (r->phase == SMGI_REST_OFF || !ch->ik.enabled) return;
+  if (r->phase == SMGI_REST_LEAVE) {
+    /* a kept foot stays flat; a rejoining one comes back to the
+     * locomotion's own shape over its arc */
+    for (uint32_t f = 0; f < 2u; ++f) {
+      const smgi_foot* foot = &ch->ik.feet[f];
+      if (!(r->keep & (1u << f)) || !ch->ik.leg_ok[f] ||
+          !(foot->stand_y < INFINITY))
+        continue;
+      if (r->rejoin[f] < 0.0f) {
+        flatten_foot(ch, f, foot->stand_y, 1.0f);
+      } else {
+        const float u = r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
+        flatten_foot(ch, f, foot->stand_y, 1.0f - smooth(u));
+      }
+    }
     return;
-  float amount = 1.0f;
-  if (r->phase == SMGI_REST_SETTLE) amount = smooth(r->t / SMGI_REST_FADE_IN);
+  }
+  /* the standing foot turns flat over the settling; the stepping one is
+   * carried flat (the IK raises the ankle by the step's arc) */
+  const float amount =
+      r->phase == SMGI_REST_SETTLE ? smooth(r->t / SMGI_REST_FADE_IN) : 1.0f;
+  const float u = step_progress(r);
   for (uint32_t f = 0; f < 2u; ++f) {
     const smgi_foot* foot = &ch->ik.feet[f];
     if (!ch->ik.leg_ok[f] || !(foot->stand_y < INFINITY)) continue;
-    float a = amount;
-    if (f == r->foot && r->phase != SMGI_REST_STAND) {
-      /* the stepping foot: flat from the moment it lands */
-      const float each = r->phase == SMGI_REST_SETTLE
-                             ? SMGI_REST_STEP_SECONDS
-                             : r->turn_seconds / (float)r->steps;
-      const float t0 = r->phase == SMGI_REST_SETTLE || r->step == SMGI_NONE
-                           ? 0.0f
-                           : (float)r->step * each;
-      if (r->t < t0 + each) a *= smooth((r->t - t0) / each);
-    }
-    flatten_foot(ch, f, foot->stand_y, a);
+    flatten_foot(ch, f, foot->stand_y,
+                 f == r->foot && u < 1.0f ? 1.0f : amount);
   }
 }

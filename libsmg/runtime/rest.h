@@ -55,8 +55,10 @@ int smgi_rest_steers(const smg_character* ch);
 void smgi_rest_pose(smg_character* ch, float dt);
 /* After forward kinematics, before foot IK: where the feet go. */
 void smgi_rest_feet(smg_character* ch);
-/* After foot IK: feet that stand are laid flat on the floor (a stop pose
- * can have a heel or a toe up; standing, both are down). */
+/* After smgi_rest_feet, before foot IK: the feet this stage places are
+ * laid flat (a stop pose can have a heel or a toe up; standing, both are
+ * down); the IK keeps the ankles' world rotations, so the toes land where
+ * they are placed. */
 void smgi_rest_flatten(smg_character* ch);
 
 #endif /* SMG_REST_H */

@@ -202,6 +202,8 @@
 #define SMGI_REST_FADE_OUT 0.3f  /* s: the standing motion fades out */
 #define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at
                                     most (6-7 cm) */
+#define SMGI_REST_STEP_OVER 0.7f /* of a step the foot moves over the
+                                    ground in (the middle: lifted) */
 #define SMGI_REST_GLIDE_MAX 0.6f /* leg lengths the hips glide at most */
 #define SMGI_REST_PURSUIT 1.0f   /* m along a new path: where to face */
 #define SMGI_REST_TURN_MIN 1.05f /* rad (60 deg): a path starting further
@@ -210,7 +212,7 @@
 #define SMGI_REST_TURN_RATE 3.0f /* rad/s of turning on the spot, mean */
 #define SMGI_REST_TURN_STEP 1.6f /* rad of turn per step at most */
 #define SMGI_REST_TURN_STEP_SECONDS 0.3f /* s per turning step at least */
-#define SMGI_REST_REJOIN_SECONDS 0.3f /* s a lifted foot takes to join
+#define SMGI_REST_REJOIN_SECONDS 0.2f /* s a lifted foot takes to join
                                          the locomotion's */
 #define SMGI_REST_KEEP_SECONDS 1.5f /* s a foot stays where it stood when
                                        walking on, at most */

@@ -171,6 +171,10 @@ static void measure_start(smg_graph* g, start_measure* m) {
   assert_true(c >= 3);
   qsort(len, c, sizeof(float), rg_cmpf);
   m->swing_ratio = longest / len[c / 2u];
+  if (getenv("REST_DEBUG"))
+    for (uint32_t i = 0; i < k; ++i)
+      if (sw[i][0] >= p0 && sw[i][0] < early + 30)
+        fprintf(stderr, "swing %u..%u (%u frames, t %.2f)\n", sw[i][0], sw[i][1], sw[i][1] - sw[i][0], (float)(sw[i][0] - p0) * DT);
   float v[256];
   uint32_t nv = 0;
   const uint32_t hw = (uint32_t)(0.25f * FPS);
@@ -216,7 +220,7 @@ static void measure_behind(smg_graph* g, behind_measure* m) {
   if (getenv("REST_DEBUG")) {
     const float fl[2] = {rg_floor(r, 0), rg_floor(r, 1)};
     for (uint32_t i = p0 - 5u; i < p0 + 70u && i < r->n; ++i)
-      fprintf(stderr, "%3u t %.2f face %6.1f hips %6.3f %6.3f  L %6.3f %6.3f %5.3f  R %6.3f %6.3f %5.3f\n", i, (float)(i - p0) * DT,
+      if (rg_planted_max(r, i, i + 1u) > 20.0f) fprintf(stderr, "%5.1f %3u t %.2f face %6.1f hips %6.3f %6.3f  L %6.3f %6.3f %5.3f  R %6.3f %6.3f %5.3f\n", rg_planted_max(r, i, i + 1u), i, (float)(i - p0) * DT,
               rg_facing(r, i) * 57.3f, r->hips[i][0], r->hips[i][2],
               r->toe[i][0][0], r->toe[i][0][2], r->toe[i][0][1] - fl[0],
               r->toe[i][1][0], r->toe[i][1][2], r->toe[i][1][1] - fl[1]);
