@@ -9,7 +9,8 @@
  *  - settling: the rear foot steps up beside the front one (lifted on an
  *    arc, placed by the foot IK), while the hips glide on over the feet,
  *    fast at first and slowing down, the way a walker's momentum dies out
- *    over the last step. With standing motion in the graph (idle.h) the
+ *    over the last step (shown on the pose only: the locomotion stays
+ *    where its feet are, to walk on from there). With standing motion in the graph (idle.h) the
  *    front foot is where that motion's foot stands, the rear foot steps to
  *    where its other foot stands, and the motion fades in over the pose;
  *    without any (the CMU walks) the rear foot steps to hip width beside
@@ -97,8 +98,8 @@ static void begin_settle(smg_character* ch) {
     const float* g0 = ch->graph->data.frames[idle->first].root2d;
     const smgi_xform2 F = {g0[0], g0[1], g0[2]};
     r->M = smgi_xf_mul(G, smgi_xf_inv(F));
-    r->glide[0] = G.x - gx;
-    r->glide[1] = G.z - gz;
+    /* its hips are where the standing body's are: no glide besides */
+    r->glide[0] = r->glide[1] = 0.0f;
   } else {
     /* hip width beside the stance foot, on the stepping foot's side */
     const smgi_info* info = ch->graph->data.info;
@@ -137,8 +138,9 @@ static void begin_settle(smg_character* ch) {
 
 static void begin_turn(smg_character* ch, float angle) {
   smgi_rest* r = &ch->rest;
-  r->pivot[0] = ch->pose.ground[0];
-  r->pivot[1] = ch->pose.ground[1];
+  /* about the hips as last shown */
+  r->pivot[0] = ch->pose.wpos[0];
+  r->pivot[1] = ch->pose.wpos[2];
   r->turn = angle;
   r->turned = 0.0f;
   r->turn_seconds = fabsf(angle) / SMGI_REST_TURN_RATE;
@@ -158,6 +160,7 @@ static void begin_turn(smg_character* ch, float angle) {
 static void begin_leave(smg_character* ch) {
   smgi_rest* r = &ch->rest;
   r->w_from = r->w;
+  r->glide_from = r->glided;
   r->keep = 3u;
   r->rejoin[0] = r->rejoin[1] = -1.0f;
   r->phase = SMGI_REST_LEAVE;
@@ -182,6 +185,9 @@ static void turn_step(smg_character* ch) {
     r->M.x = r->pivot[0] + x;
     r->M.z = r->pivot[1] + z;
     r->M.h = smgi_wrap_angle(r->M.h + da);
+    smgi_rot2(da, r->glide[0], r->glide[1], &x, &z);
+    r->glide[0] = x;
+    r->glide[1] = z;
     r->turned = a;
   }
   const float each = r->turn_seconds / (float)r->steps;
@@ -280,9 +286,6 @@ void smgi_rest_pose(smg_character* ch, float dt) {
   switch (r->phase) {
     case SMGI_REST_SETTLE: {
       const float g = ease_out(r->t / SMGI_REST_FADE_IN);
-      smgi_steer_move(ch, 0.0f, ch->pose.ground[0], ch->pose.ground[1],
-                      (g - r->glided) * r->glide[0],
-                      (g - r->glided) * r->glide[1]);
       r->glided = g;
       r->w = idle->count ? g : 0.0f;
       if (r->t >= SMGI_REST_FADE_IN && r->t >= SMGI_REST_STEP_SECONDS) {
@@ -293,6 +296,7 @@ void smgi_rest_pose(smg_character* ch, float dt) {
     }
     case SMGI_REST_STAND:
       r->w = idle->count ? 1.0f : 0.0f;
+      r->glided = 1.0f;
       break;
     case SMGI_REST_TURN:
       turn_step(ch);
@@ -309,6 +313,7 @@ void smgi_rest_pose(smg_character* ch, float dt) {
       break;
     case SMGI_REST_LEAVE:
       r->w = r->w_from * (1.0f - smooth(r->t / SMGI_REST_FADE_OUT));
+      r->glided = r->glide_from * (1.0f - smooth(r->t / SMGI_REST_FADE_OUT));
       if (r->t >= SMGI_REST_FADE_OUT &&
           (r->keep == 0u || r->t >= SMGI_REST_KEEP_SECONDS)) {
         r->phase = SMGI_REST_OFF;
@@ -319,6 +324,10 @@ void smgi_rest_pose(smg_character* ch, float dt) {
     default:
       break;
   }
+  /* the hips over the feet: the glide is shown, not played, so that the
+   * locomotion walks on from where its feet are */
+  ch->pose.root[0] += r->glided * r->glide[0];
+  ch->pose.root[2] += r->glided * r->glide[1];
   if (r->phase != SMGI_REST_LEAVE) {
     /* both feet stand (the IK holds them where this stage puts them) */
     ch->pose.contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
@@ -376,15 +385,16 @@ void smgi_rest_feet(smg_character* ch) {
       uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
       if (toe >= ch->joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
       const float* ap = ch->pose.wpos + 3u * toe;
-      if (!(ch->pose.contacts & bits[f]) && r->rejoin[f] < 0.0f &&
-          ap[1] > ch->ik.feet[f].stand_y + SMGI_IK_CLEAR * info->leg_length)
+      if (!(ch->pose.contacts & bits[f]) && r->rejoin[f] < 0.0f)
         r->rejoin[f] = 0.0f;
       if (r->rejoin[f] < 0.0f) {
         smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
         continue;
       }
-      /* lifted by the locomotion: joins its foot in the air, on an arc
-       * short enough to end within the locomotion's swing */
+      /* released by the locomotion: joins its foot in the air, on an
+       * arc of its own (some data swings its toes within a centimetre
+       * of the floor), short enough to end within the locomotion's
+       * swing */
       const float u = r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
       const float s = step_over(u);
       smgi_ik_guide(&ch->ik, f, r->hold[f][0] + s * (ap[0] - r->hold[f][0]),
@@ -449,19 +459,18 @@ void smgi_rest_flatten(smg_character* ch) {
   const smgi_rest* r = &ch->rest;
   if (r->phase == SMGI_REST_OFF || !ch->ik.enabled) return;
   if (r->phase == SMGI_REST_LEAVE) {
-    /* a kept foot stays flat; a rejoining one comes back to the
-     * locomotion's own shape over its arc */
+    /* the feet take the locomotion's shape again as it fades in (a foot
+     * kept where it stood rolls onto its toe with the locomotion's) */
+    const float amount = 1.0f - smooth(r->t / SMGI_REST_FADE_OUT);
     for (uint32_t f = 0; f < 2u; ++f) {
       const smgi_foot* foot = &ch->ik.feet[f];
       if (!(r->keep & (1u << f)) || !ch->ik.leg_ok[f] ||
-          !(foot->stand_y < INFINITY))
+          !(foot->stand_y < INFINITY) || amount <= 0.0f)
         continue;
-      if (r->rejoin[f] < 0.0f) {
-        flatten_foot(ch, f, foot->stand_y, 1.0f);
-      } else {
-        const float u = r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
-        flatten_foot(ch, f, foot->stand_y, 1.0f - smooth(u));
-      }
+      const float u = r->rejoin[f] < 0.0f
+                          ? 0.0f
+                          : r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
+      flatten_foot(ch, f, foot->stand_y, amount * (1.0f - smooth(u)));
     }
     return;
   }

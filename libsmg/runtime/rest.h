@@ -29,7 +29,8 @@ typedef struct smgi_rest {
   uint32_t foot;        /* the foot stepping now (0 left, 1 right) */
   float from[2];        /* its toe where the step began (x, z) */
   float glide[2];       /* the hips' ground shift of the settling step */
-  float glided;         /* of it made so far (0..1) */
+  float glided;         /* of it shown now (0..1) */
+  float glide_from;     /* glided when the fade out began */
   float pivot[2];       /* turning: about this ground point */
   float turn;           /* radians to turn in all (+ = left) */
   float turned;         /* radians turned so far */

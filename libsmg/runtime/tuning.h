@@ -199,7 +199,8 @@
                                         lasts 0.3-0.6 s) */
 #define SMGI_REST_FADE_IN 0.6f   /* s: the hips glide over the feet and the
                                     standing motion fades in */
-#define SMGI_REST_FADE_OUT 0.3f  /* s: the standing motion fades out */
+#define SMGI_REST_FADE_OUT 0.6f  /* s: the standing motion and the glide
+                                    fade out as the walk begins */
 #define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at
                                     most (6-7 cm) */
 #define SMGI_REST_STEP_OVER 0.7f /* of a step the foot moves over the

@@ -171,6 +171,13 @@ static void measure_start(smg_graph* g, start_measure* m) {
   assert_true(c >= 3);
   qsort(len, c, sizeof(float), rg_cmpf);
   m->swing_ratio = longest / len[c / 2u];
+  if (getenv("REST_DEBUG")) {
+    const float fl[2] = {rg_floor(r, 0), rg_floor(r, 1)};
+    for (uint32_t i = p0 - 3u; i < p0 + 40u; ++i)
+      fprintf(stderr, "  %3u hips %6.3f  L %6.3f %5.3f  R %6.3f %5.3f\n", i,
+              r->hips[i][2], r->toe[i][0][2], r->toe[i][0][1] - fl[0],
+              r->toe[i][1][2], r->toe[i][1][1] - fl[1]);
+  }
   if (getenv("REST_DEBUG"))
     for (uint32_t i = 0; i < k; ++i)
       if (sw[i][0] >= p0 && sw[i][0] < early + 30)
