@@ -8,10 +8,8 @@
 #include "rmath.h"
 #include "standing.h"
 
-/* Clip-space position of joint j in pool frame f: the chain from the root
- * composed joint by joint (a leg is a handful of joints). */
-static void joint_position(const smg_graph* g, uint32_t f, uint32_t j,
-                           float* out) {
+void smgi_frame_joint(const smg_graph* g, uint32_t f, uint32_t j,
+                      float* out) {
   const smgi_joint* joints = g->data.joints;
   const unsigned char* rec = smgi_graph_pose(g, f);
   uint32_t chain[64], n = 0;
@@ -36,12 +34,46 @@ static void joint_position(const smg_graph* g, uint32_t f, uint32_t j,
   memcpy(out, pos, sizeof pos);
 }
 
+/* Median length of the stretches without a foot's contact label in the
+ * locomotion clips, in seconds (SMGI_IDLE_SWING_DEFAULT without any). */
+static float swing_seconds(const smg_graph* g) {
+  const smgi_graph_data* d = &g->data;
+  uint32_t hist[64], total = 0;
+  memset(hist, 0, sizeof hist);
+  for (uint32_t c = 0; c < d->clip_count; ++c) {
+    const smgi_clip* cl = &d->clips[c];
+    if (!(cl->flags & SMGI_CLIP_LOWER) || (cl->flags & SMGI_CLIP_BLEND))
+      continue;
+    for (uint32_t f = 0; f < 2u; ++f) {
+      const uint32_t bit = f ? SMGI_FRAME_RIGHT_CONTACT : SMGI_FRAME_LEFT_CONTACT;
+      uint32_t run = 0, seen = 0; /* a swing counts between two contacts */
+      for (uint32_t i = 0; i < cl->frame_count; ++i) {
+        if (!(d->frames[cl->first_frame + i].flags & bit)) {
+          ++run;
+          continue;
+        }
+        if (seen && run > 0) {
+          hist[run < 63u ? run : 63u]++;
+          ++total;
+        }
+        seen = 1;
+        run = 0;
+      }
+    }
+  }
+  if (total == 0) return SMGI_IDLE_SWING_DEFAULT;
+  uint32_t k = 0, acc = 0;
+  while (k < 63u && acc + hist[k] <= total / 2u) acc += hist[k++];
+  return (float)k / d->info->frame_rate;
+}
+
 void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
   const smgi_graph_data* d = &g->data;
   const smgi_info* info = d->info;
   const uint32_t toes[2] = {info->left_leg[3], info->right_leg[3]};
   const float stance = SMGI_IDLE_STANCE * info->leg_length;
   memset(out, 0, sizeof *out);
+  out->swing_seconds = swing_seconds(g);
   /* clip by clip, so a small buffer holds every stretch of one clip (a
    * clip with more than it holds keeps its first ones) */
   for (uint32_t c = 0; c < d->clip_count; ++c) {
@@ -58,7 +90,7 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
       const smgi_frame* fr = &d->frames[s[i].first];
       float p[2][3], local[2][2];
       for (int f = 0; f < 2; ++f) {
-        joint_position(g, s[i].first, toes[f], p[f]);
+        smgi_frame_joint(g, s[i].first, toes[f], p[f]);
         smgi_rot2(-fr->root2d[2], p[f][0] - fr->root2d[0],
                   p[f][2] - fr->root2d[1], &local[f][0], &local[f][1]);
       }

@@ -33,6 +33,11 @@
 
 #include "character_internal.h"
 
+/* How long a step at rest takes: as long as the graph's swings. */
+static float step_seconds(const smg_character* ch) {
+  return smgi_derived_of(ch->graph)->idle.swing_seconds;
+}
+
 static float ease_out(float u) {
   u = smgi_clampf(u, 0.0f, 1.0f);
   return 1.0f - (1.0f - u) * (1.0f - u);
@@ -73,63 +78,129 @@ static float path_turn(const smg_character* ch) {
   return smgi_wrap_angle(smgi_atan2f(x, z) - ch->pose.heading);
 }
 
-static void begin_settle(smg_character* ch) {
-  smgi_rest* r = &ch->rest;
-  const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
-  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
-  const float h = ch->pose.heading;
+/* The settling step from a pose with its toes at toe[2] (x, z), its hips'
+ * ground point at (gx, gz) facing h and its hips `width` apart: which
+ * foot steps, to where, the standing motion's placement G (idle graphs)
+ * and the hips' glide (others). */
+typedef struct settle_plan {
+  uint32_t step;     /* the rear foot */
+  float to[2];       /* where it steps */
+  smgi_xform2 G;     /* the standing motion's first ground frame */
+  float glide[2];    /* the shown hips' shift (no standing motion) */
+  float end[2];      /* where the hips come to stand */
+} settle_plan;
+
+static void plan_settle(const smg_graph* g, const float (*toe)[2], float gx,
+                        float gz, float h, float width, settle_plan* sp) {
+  const smgi_idle* idle = &smgi_derived_of(g)->idle;
   float fx, fz, lx, lz;
   smgi_rot2(h, 0.0f, 1.0f, &fx, &fz);
   smgi_rot2(h, 1.0f, 0.0f, &lx, &lz);
-  for (uint32_t f = 0; f < 2u; ++f) toe_shown(ch, f, r->hold[f]);
   /* the front foot stands, the rear one steps up beside it */
-  const float a0 = (r->hold[0][0] - gx) * fx + (r->hold[0][1] - gz) * fz;
-  const float a1 = (r->hold[1][0] - gx) * fx + (r->hold[1][1] - gz) * fz;
+  const float a0 = (toe[0][0] - gx) * fx + (toe[0][1] - gz) * fz;
+  const float a1 = (toe[1][0] - gx) * fx + (toe[1][1] - gz) * fz;
   const uint32_t stance = a0 >= a1 ? 0u : 1u, step = 1u - stance;
-  float to[2];
+  sp->step = step;
+  sp->glide[0] = sp->glide[1] = 0.0f;
   if (idle->count > 0) {
     /* the standing motion placed with its stance foot on ours */
     float ox, oz;
     smgi_rot2(h, idle->toe[stance][0], idle->toe[stance][1], &ox, &oz);
-    smgi_xform2 G = {r->hold[stance][0] - ox, r->hold[stance][1] - oz, h};
+    sp->G.x = toe[stance][0] - ox;
+    sp->G.z = toe[stance][1] - oz;
+    sp->G.h = h;
     smgi_rot2(h, idle->toe[step][0], idle->toe[step][1], &ox, &oz);
-    to[0] = G.x + ox;
-    to[1] = G.z + oz;
+    sp->to[0] = sp->G.x + ox;
+    sp->to[1] = sp->G.z + oz;
+    sp->end[0] = sp->G.x;
+    sp->end[1] = sp->G.z;
+    return;
+  }
+  /* hip width beside the stance foot, on the stepping foot's side, and
+   * the hips over the middle of the feet: they move on by half the
+   * step */
+  const float side = (toe[step][0] - toe[stance][0]) * lx +
+                             (toe[step][1] - toe[stance][1]) * lz >=
+                         0.0f
+                     ? 1.0f
+                     : -1.0f;
+  sp->to[0] = toe[stance][0] + side * width * lx;
+  sp->to[1] = toe[stance][1] + side * width * lz;
+  /* along the facing: the hips carry on forwards (sideways they already
+   * stand between the feet) */
+  const float along = 0.5f * ((sp->to[0] - toe[step][0]) * fx +
+                              (sp->to[1] - toe[step][1]) * fz);
+  sp->glide[0] = along * fx;
+  sp->glide[1] = along * fz;
+  const float most = SMGI_REST_GLIDE_MAX * g->data.info->leg_length;
+  const float gl = sqrtf(sp->glide[0] * sp->glide[0] +
+                         sp->glide[1] * sp->glide[1]);
+  if (gl > most) {
+    sp->glide[0] *= most / gl;
+    sp->glide[1] *= most / gl;
+  }
+  sp->end[0] = gx + sp->glide[0];
+  sp->end[1] = gz + sp->glide[1];
+}
+
+void smgi_rest_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
+                            float* dz) {
+  const smgi_info* info = g->data.info;
+  const float* r2 = g->data.frames[frame].root2d;
+  float toe[2][2], p[3], hl[3], hr[3];
+  for (uint32_t f = 0; f < 2u; ++f) {
+    smgi_frame_joint(g, frame, f ? info->right_leg[3] : info->left_leg[3], p);
+    toe[f][0] = p[0];
+    toe[f][1] = p[2];
+  }
+  smgi_frame_joint(g, frame, info->left_leg[0], hl);
+  smgi_frame_joint(g, frame, info->right_leg[0], hr);
+  const float width = sqrtf((hl[0] - hr[0]) * (hl[0] - hr[0]) +
+                            (hl[2] - hr[2]) * (hl[2] - hr[2]));
+  settle_plan sp;
+  plan_settle(g, (const float(*)[2])toe, r2[0], r2[1], r2[2], width, &sp);
+  *dx = sp.end[0] - r2[0];
+  *dz = sp.end[1] - r2[1];
+}
+
+static void begin_settle(smg_character* ch) {
+  smgi_rest* r = &ch->rest;
+  const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
+  const smgi_info* info = ch->graph->data.info;
+  for (uint32_t f = 0; f < 2u; ++f) toe_shown(ch, f, r->hold[f]);
+  const float* hl = ch->pose.wpos + 3u * info->left_leg[0];
+  const float* hr = ch->pose.wpos + 3u * info->right_leg[0];
+  const float width = sqrtf((hl[0] - hr[0]) * (hl[0] - hr[0]) +
+                            (hl[2] - hr[2]) * (hl[2] - hr[2]));
+  settle_plan sp;
+  plan_settle(ch->graph, (const float(*)[2])r->hold, ch->pose.ground[0],
+              ch->pose.ground[1], ch->pose.heading, width, &sp);
+  if (idle->count > 0) {
     const float* g0 = ch->graph->data.frames[idle->first].root2d;
     const smgi_xform2 F = {g0[0], g0[1], g0[2]};
-    r->M = smgi_xf_mul(G, smgi_xf_inv(F));
-    /* its hips are where the standing body's are: no glide besides */
-    r->glide[0] = r->glide[1] = 0.0f;
-  } else {
-    /* hip width beside the stance foot, on the stepping foot's side */
-    const smgi_info* info = ch->graph->data.info;
-    const float* hl = ch->pose.wpos + 3u * info->left_leg[0];
-    const float* hr = ch->pose.wpos + 3u * info->right_leg[0];
-    const float wx = hl[0] - hr[0], wz = hl[2] - hr[2];
-    const float width = sqrtf(wx * wx + wz * wz);
-    const float side = (r->hold[step][0] - r->hold[stance][0]) * lx +
-                               (r->hold[step][1] - r->hold[stance][1]) * lz >=
-                           0.0f
-                       ? 1.0f
-                       : -1.0f;
-    to[0] = r->hold[stance][0] + side * width * lx;
-    to[1] = r->hold[stance][1] + side * width * lz;
-    /* the hips over the middle of the feet: it moves by half the step */
-    r->glide[0] = 0.5f * (to[0] - r->hold[step][0]);
-    r->glide[1] = 0.5f * (to[1] - r->hold[step][1]);
+    r->M = smgi_xf_mul(sp.G, smgi_xf_inv(F));
   }
-  const float most = SMGI_REST_GLIDE_MAX * ch->graph->data.info->leg_length;
-  const float gl = sqrtf(r->glide[0] * r->glide[0] + r->glide[1] * r->glide[1]);
-  if (gl > most) {
-    r->glide[0] *= most / gl;
-    r->glide[1] *= most / gl;
-  }
+  r->glide[0] = sp.glide[0];
+  r->glide[1] = sp.glide[1];
   r->glided = 0.0f;
-  r->foot = step;
-  r->from[0] = r->hold[step][0];
-  r->from[1] = r->hold[step][1];
-  r->hold[step][0] = to[0];
-  r->hold[step][1] = to[1];
+  /* the hips keep their speed at first and slow down to a stop where
+   * they stand: an ease-out over twice the way at that speed */
+  const float way = sqrtf((sp.end[0] - ch->pose.ground[0]) *
+                              (sp.end[0] - ch->pose.ground[0]) +
+                          (sp.end[1] - ch->pose.ground[1]) *
+                              (sp.end[1] - ch->pose.ground[1]));
+  /* the speed the motion had, less the steering's slide, which fades out
+   * on top of the glide */
+  const float slide = sqrtf(ch->steer.slide[0] * ch->steer.slide[0] +
+                            ch->steer.slide[1] * ch->steer.slide[1]);
+  const float v = fmaxf(ch->steer.own_speed - slide, 0.1f);
+  r->settle_seconds = smgi_clampf(2.0f * way / v, SMGI_REST_SETTLE_MIN,
+                                  SMGI_REST_SETTLE_MAX);
+  r->foot = sp.step;
+  r->from[0] = r->hold[sp.step][0];
+  r->from[1] = r->hold[sp.step][1];
+  r->hold[sp.step][0] = sp.to[0];
+  r->hold[sp.step][1] = sp.to[1];
   r->at = 0.0f;
   r->dir = 1.0f;
   r->phase = SMGI_REST_SETTLE;
@@ -147,8 +218,8 @@ static void begin_turn(smg_character* ch, float angle) {
   r->steps = (uint32_t)ceilf(fabsf(angle) / SMGI_REST_TURN_STEP);
   if (r->steps < 2u) r->steps = 2u;
   /* a step is never shorter than in walking */
-  if (r->turn_seconds < (float)r->steps * SMGI_REST_TURN_STEP_SECONDS)
-    r->turn_seconds = (float)r->steps * SMGI_REST_TURN_STEP_SECONDS;
+  if (r->turn_seconds < (float)r->steps * step_seconds(ch))
+    r->turn_seconds = (float)r->steps * step_seconds(ch);
   /* the foot on the side turned to opens the turn */
   r->foot = angle > 0.0f ? 1u : 0u; /* flipped by the first step */
   r->phase = SMGI_REST_TURN;
@@ -267,9 +338,13 @@ int smgi_rest_steers(const smg_character* ch) {
 void smgi_rest_pose(smg_character* ch, float dt) {
   smgi_rest* r = &ch->rest;
   const int resting = ch->steer.enabled && ch->steer.mode == SMGI_STEER_REST;
+  /* the step that comes to rest still played the motion up to the stop
+   * frame: the settling starts with the next one */
+  float step_dt = dt;
   if (r->phase == SMGI_REST_OFF) {
     if (!resting) return;
     begin_settle(ch);
+    step_dt = 0.0f;
   } else if (!resting &&
              (r->phase == SMGI_REST_SETTLE || r->phase == SMGI_REST_STAND)) {
     const float a = path_turn(ch);
@@ -279,16 +354,17 @@ void smgi_rest_pose(smg_character* ch, float dt) {
       begin_leave(ch);
   } else if (resting && r->phase == SMGI_REST_LEAVE) {
     begin_settle(ch);
+    step_dt = 0.0f;
   }
-  r->t += dt;
+  r->t += step_dt;
   r->dt = dt;
   const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
   switch (r->phase) {
     case SMGI_REST_SETTLE: {
-      const float g = ease_out(r->t / SMGI_REST_FADE_IN);
+      const float g = ease_out(r->t / r->settle_seconds);
       r->glided = g;
       r->w = idle->count ? g : 0.0f;
-      if (r->t >= SMGI_REST_FADE_IN && r->t >= SMGI_REST_STEP_SECONDS) {
+      if (r->t >= r->settle_seconds && r->t >= step_seconds(ch)) {
         r->phase = SMGI_REST_STAND;
         r->t = 0.0f;
       }
@@ -324,10 +400,14 @@ void smgi_rest_pose(smg_character* ch, float dt) {
     default:
       break;
   }
-  /* the hips over the feet: the glide is shown, not played, so that the
-   * locomotion walks on from where its feet are */
+  /* the hips over the feet: the glide is shown (and reported as the
+   * character's position), not played, so that the locomotion walks on
+   * from where its feet are; the steering has already taken the ground
+   * point it compares the next step with */
   ch->pose.root[0] += r->glided * r->glide[0];
   ch->pose.root[2] += r->glided * r->glide[1];
+  ch->pose.ground[0] += r->glided * r->glide[0];
+  ch->pose.ground[1] += r->glided * r->glide[1];
   if (r->phase != SMGI_REST_LEAVE) {
     /* both feet stand (the IK holds them where this stage puts them) */
     ch->pose.contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
@@ -349,10 +429,11 @@ void smgi_rest_pose(smg_character* ch, float dt) {
 
 /* How far the stepping foot (r->foot) is through its step, 0..1 (1: it
  * stands). */
-static float step_progress(const smgi_rest* r) {
+static float step_progress(const smg_character* ch) {
+  const smgi_rest* r = &ch->rest;
   float u = 1.0f;
   if (r->phase == SMGI_REST_SETTLE) {
-    u = r->t / SMGI_REST_STEP_SECONDS;
+    u = r->t / step_seconds(ch);
   } else if (r->phase == SMGI_REST_TURN && r->step != SMGI_NONE) {
     const float each = r->turn_seconds / (float)r->steps;
     u = (r->t - (float)r->step * each) / each;
@@ -405,7 +486,7 @@ void smgi_rest_feet(smg_character* ch) {
     }
     return;
   }
-  const float u = step_progress(r);
+  const float u = step_progress(ch);
   for (uint32_t f = 0; f < 2u; ++f) {
     if (f == r->foot && u < 1.0f) {
       const float s = step_over(u);
@@ -477,8 +558,8 @@ void smgi_rest_flatten(smg_character* ch) {
   /* the standing foot turns flat over the settling; the stepping one is
    * carried flat (the IK raises the ankle by the step's arc) */
   const float amount =
-      r->phase == SMGI_REST_SETTLE ? smooth(r->t / SMGI_REST_FADE_IN) : 1.0f;
-  const float u = step_progress(r);
+      r->phase == SMGI_REST_SETTLE ? smooth(r->t / SMGI_REST_FOOT_FLAT) : 1.0f;
+  const float u = step_progress(ch);
   for (uint32_t f = 0; f < 2u; ++f) {
     const smgi_foot* foot = &ch->ik.feet[f];
     if (!ch->ik.leg_ok[f] || !(foot->stand_y < INFINITY)) continue;

@@ -31,6 +31,7 @@ typedef struct smgi_rest {
   float glide[2];       /* the hips' ground shift of the settling step */
   float glided;         /* of it shown now (0..1) */
   float glide_from;     /* glided when the fade out began */
+  float settle_seconds; /* how long the hips take to come to stand */
   float pivot[2];       /* turning: about this ground point */
   float turn;           /* radians to turn in all (+ = left) */
   float turned;         /* radians turned so far */
@@ -44,6 +45,11 @@ typedef struct smgi_rest {
                            foot from there */
 } smgi_rest;
 
+/* Where the settling step would take the hips of a character stopping on
+ * pool frame `frame`, relative to that frame's ground point, in its clip
+ * space (the steering chooses the frame to stop on with it). */
+void smgi_rest_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
+                            float* dz);
 /* Frames the lower body advances this step, given what the steering
  * wants: none while turning on the spot. */
 float smgi_rest_frames(const smg_character* ch, float frames);

@@ -141,6 +141,25 @@ static int frame_ground(const smg_character* ch, uint32_t k, float* x,
   return 1;
 }
 
+/* Where the hips come to stand when the character stops on the frame k
+ * frames after the playhead: its ground point moved on by the settling
+ * step (rest.c). */
+static void frame_stand(const smg_character* ch, uint32_t k, float* x,
+                        float* z) {
+  uint32_t entry, offset;
+  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, k, &entry,
+                     &offset))
+    return;
+  const smg_graph* g = ch->graph;
+  const smgi_qentry* q = smgi_q_at_c(&ch->lower, entry);
+  float dx, dz, wx, wz;
+  smgi_rest_settle_shift(g, g->data.lower_edges[q->edge].first_frame + offset,
+                         &dx, &dz);
+  smgi_rot2(entry_M(ch, entry).h, dx, dz, &wx, &wz);
+  *x += wx;
+  *z += wz;
+}
+
 /* Frames from the playhead to (seq, offset), or a negative value when the
  * queue no longer holds that entry. */
 static float frames_to(const smg_character* ch, uint32_t seq,
@@ -175,7 +194,6 @@ static void consider_stop(smg_character* ch) {
   const uint32_t limit =
       (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
-  const float lead = SMGI_STEER_STOP_LEAD * ch->graph->data.info->leg_length;
   /* decide only on a plan that reaches that far (not just after a
    * re-plan left the edge playing alone) */
   if (ahead < limit) return;
@@ -185,14 +203,15 @@ static void consider_stop(smg_character* ch) {
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
     uint32_t fl;
     if (!frame_ground(ch, k, &x, &z, &fl)) break;
-    /* the settling step carries the hips on by about `lead` (rest.c):
-     * the frame to stop on is that far before the end */
-    float d = fabsf(sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez)) - lead);
     /* both feet down: labelled so, or where the label passes from one
      * foot to the other (contact labels may leave no frame between the
      * two supports, though both feet are on the floor there) */
     int down = (fl & both) == both ||
                ((fl | prev) == both && (fl & both) != 0 && fl != prev);
+    /* where the hips will stand: on from the stop frame by the settling
+     * step, worked out for the frames it can start from */
+    if (down) frame_stand(ch, k, &x, &z);
+    float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
     if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
     prev = fl;
     if (d < best) {
@@ -455,27 +474,22 @@ void smgi_steer_apply(smg_character* ch, float dt) {
         const smgi_frame* f =
             &ch->graph->data.frames[ch->graph->data.lower_edges[q->edge]
                                         .first_frame + offset];
-        float sx, sz;
+        float sx, sz, dx, dz, wx, wz;
         smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], &sx,
                       &sz);
+        /* the hips then settle on by the settling step (rest.c) */
+        smgi_rest_settle_shift(
+            ch->graph, ch->graph->data.lower_edges[q->edge].first_frame + offset,
+            &dx, &dz);
+        smgi_rot2(entry_M(ch, entry).h, dx, dz, &wx, &wz);
+        sx += wx;
+        sz += wz;
         /* the rest of the braking lasts 2 * left / (fps * rate) */
         float remain =
             2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
         if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
-        /* to `lead` before the end (consider_stop) */
-        float ox = p->xz[2u * (p->count - 1u)] - sx;
-        float oz = p->xz[2u * (p->count - 1u) + 1u] - sz;
-        const float ol = sqrtf(ox * ox + oz * oz);
-        const float lead =
-            SMGI_STEER_STOP_LEAD * ch->graph->data.info->leg_length;
-        if (ol > lead) {
-          ox -= ox * lead / ol;
-          oz -= oz * lead / ol;
-        } else {
-          ox = oz = 0.0f;
-        }
-        want_sx = ox / remain;
-        want_sz = oz / remain;
+        want_sx = (p->xz[2u * (p->count - 1u)] - sx) / remain;
+        want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
       }
     } else {
       if (s->at_valid) { /* progress has not moved since */

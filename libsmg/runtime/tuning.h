@@ -169,10 +169,6 @@
                                     counts as this much further */
 #define SMGI_STEER_NO_FOOT 1.0f       /* ... with no foot down */
 #define SMGI_STEER_REST_RATE 0.03f    /* below this rate the stop is made */
-#define SMGI_STEER_STOP_LEAD 0.2f     /* leg lengths before the end the
-                                         stop frame's hips land: the
-                                         settling step (rest.c) carries
-                                         them on by about that */
 #define SMGI_STEER_BRAKE_FLOOR 0.8f   /* braking and starting play at least
                                          this fraction of real time (slower
                                          reads as slow motion) */
@@ -195,10 +191,12 @@
                                          follows, away from the end */
 
 /* ---- standing still (rest.c) ---- */
-#define SMGI_REST_STEP_SECONDS 0.45f /* the settling step (a walking step
-                                        lasts 0.3-0.6 s) */
-#define SMGI_REST_FADE_IN 0.6f   /* s: the hips glide over the feet and the
-                                    standing motion fades in */
+#define SMGI_REST_FOOT_FLAT 0.15f /* s a standing foot takes to lie flat
+                                     (heel or toe down) */
+#define SMGI_REST_SETTLE_MIN 0.3f /* s the hips take to come to stand over
+                                     the feet (and the standing motion to
+                                     fade in), at least ... */
+#define SMGI_REST_SETTLE_MAX 1.0f /* ... and at most */
 #define SMGI_REST_FADE_OUT 0.6f  /* s: the standing motion and the glide
                                     fade out as the walk begins */
 #define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at
@@ -212,7 +210,6 @@
                                     spot first */
 #define SMGI_REST_TURN_RATE 3.0f /* rad/s of turning on the spot, mean */
 #define SMGI_REST_TURN_STEP 1.6f /* rad of turn per step at most */
-#define SMGI_REST_TURN_STEP_SECONDS 0.3f /* s per turning step at least */
 #define SMGI_REST_REJOIN_SECONDS 0.2f /* s a lifted foot takes to join
                                          the locomotion's */
 #define SMGI_REST_KEEP_SECONDS 1.5f /* s a foot stays where it stood when

@@ -138,6 +138,10 @@ static void measure_stop(smg_graph* g, stop_measure* m) {
   }
   qsort(len, c, sizeof(float), rg_cmpf);
   m->swing_ratio = c ? longest / len[c / 2u] : 0.0f;
+  if (getenv("REST_DEBUG"))
+    for (uint32_t i = 0; i < k; ++i)
+      if (sw[i][0] + 60u >= rest)
+        fprintf(stderr, "stop swing %u..%u (%u) rest %u median %.0f\n", sw[i][0], sw[i][1], sw[i][1] - sw[i][0], rest, len[c / 2u]);
 }
 
 /* ---- the start ---- */
