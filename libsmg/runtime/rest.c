@@ -31,11 +31,14 @@
 #include <math.h>
 #include <string.h>
 
-#include "character_internal.h"
+#include "rest.h"
+
+#include "graph_derived.h"
+#include "idle.h"
 
 /* How long a step at rest takes: as long as the graph's swings. */
-static float step_seconds(const smg_character* ch) {
-  return smgi_derived_of(ch->graph)->idle.swing_seconds;
+static float step_seconds(const smgi_rest_io* io) {
+  return smgi_derived_of(io->in->graph)->idle.swing_seconds;
 }
 
 static float ease_out(float u) {
@@ -50,32 +53,32 @@ static float smooth(float u) {
 
 /* Where toe f is shown (x, z): as the foot IK last left it, else as the
  * last forward kinematics put it. */
-static void toe_shown(const smg_character* ch, uint32_t f, float* out) {
-  const smgi_foot* foot = &ch->ik.feet[f];
-  if (ch->ik.enabled && foot->shown[0] < INFINITY) {
+static void toe_shown(const smgi_rest_io* io, uint32_t f, float* out) {
+  const smgi_foot* foot = &io->ik->feet[f];
+  if (io->ik->enabled && foot->shown[0] < INFINITY) {
     out[0] = foot->shown[0];
     out[1] = foot->shown[1];
     return;
   }
-  const smgi_info* info = ch->graph->data.info;
+  const smgi_info* info = io->in->graph->data.info;
   uint32_t j = f ? info->right_leg[3] : info->left_leg[3];
-  if (j >= ch->joint_count) j = f ? info->right_leg[2] : info->left_leg[2];
-  out[0] = ch->pose.wpos[3u * j];
-  out[1] = ch->pose.wpos[3u * j + 2u];
+  if (j >= io->in->graph->data.joint_count) j = f ? info->right_leg[2] : info->left_leg[2];
+  out[0] = io->pose->wpos[3u * j];
+  out[1] = io->pose->wpos[3u * j + 2u];
 }
 
 /* The path's direction from the character, relative to its facing. */
-static float path_turn(const smg_character* ch) {
-  const smgi_path* p = &ch->path;
+static float path_turn(const smgi_rest_io* io) {
+  const smgi_path* p = io->in->path;
   if (p->count < 2u) return 0.0f;
-  float s = ch->progress + SMGI_REST_PURSUIT, x, z;
+  float s = io->in->progress + SMGI_REST_PURSUIT, x, z;
   if (s > p->length) s = p->length;
-  uint32_t seg = ch->seg;
+  uint32_t seg = io->in->seg;
   smgi_path_eval(p, s, &seg, &x, &z, NULL);
-  x -= ch->pose.ground[0];
-  z -= ch->pose.ground[1];
+  x -= io->pose->ground[0];
+  z -= io->pose->ground[1];
   if (x * x + z * z < 1e-4f) return 0.0f;
-  return smgi_wrap_angle(smgi_atan2f(x, z) - ch->pose.heading);
+  return smgi_wrap_angle(smgi_atan2f(x, z) - io->pose->heading);
 }
 
 /* The settling step from a pose with its toes at toe[2] (x, z), its hips'
@@ -163,20 +166,19 @@ void smgi_rest_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
   *dz = sp.end[1] - r2[1];
 }
 
-static void begin_settle(smg_character* ch) {
-  smgi_rest* r = &ch->rest;
-  const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
-  const smgi_info* info = ch->graph->data.info;
-  for (uint32_t f = 0; f < 2u; ++f) toe_shown(ch, f, r->hold[f]);
-  const float* hl = ch->pose.wpos + 3u * info->left_leg[0];
-  const float* hr = ch->pose.wpos + 3u * info->right_leg[0];
+static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
+  const smgi_idle* idle = &smgi_derived_of(io->in->graph)->idle;
+  const smgi_info* info = io->in->graph->data.info;
+  for (uint32_t f = 0; f < 2u; ++f) toe_shown(io, f, r->hold[f]);
+  const float* hl = io->pose->wpos + 3u * info->left_leg[0];
+  const float* hr = io->pose->wpos + 3u * info->right_leg[0];
   const float width = sqrtf((hl[0] - hr[0]) * (hl[0] - hr[0]) +
                             (hl[2] - hr[2]) * (hl[2] - hr[2]));
   settle_plan sp;
-  plan_settle(ch->graph, (const float(*)[2])r->hold, ch->pose.ground[0],
-              ch->pose.ground[1], ch->pose.heading, width, &sp);
+  plan_settle(io->in->graph, (const float(*)[2])r->hold, io->pose->ground[0],
+              io->pose->ground[1], io->pose->heading, width, &sp);
   if (idle->count > 0) {
-    const float* g0 = ch->graph->data.frames[idle->first].root2d;
+    const float* g0 = io->in->graph->data.frames[idle->first].root2d;
     const smgi_xform2 F = {g0[0], g0[1], g0[2]};
     r->M = smgi_xf_mul(sp.G, smgi_xf_inv(F));
   }
@@ -185,15 +187,15 @@ static void begin_settle(smg_character* ch) {
   r->glided = 0.0f;
   /* the hips keep their speed at first and slow down to a stop where
    * they stand: an ease-out over twice the way at that speed */
-  const float way = sqrtf((sp.end[0] - ch->pose.ground[0]) *
-                              (sp.end[0] - ch->pose.ground[0]) +
-                          (sp.end[1] - ch->pose.ground[1]) *
-                              (sp.end[1] - ch->pose.ground[1]));
+  const float way = sqrtf((sp.end[0] - io->pose->ground[0]) *
+                              (sp.end[0] - io->pose->ground[0]) +
+                          (sp.end[1] - io->pose->ground[1]) *
+                              (sp.end[1] - io->pose->ground[1]));
   /* the speed the motion had, less the steering's slide, which fades out
    * on top of the glide */
-  const float slide = sqrtf(ch->steer.slide[0] * ch->steer.slide[0] +
-                            ch->steer.slide[1] * ch->steer.slide[1]);
-  const float v = fmaxf(ch->steer.own_speed - slide, 0.1f);
+  const float slide = sqrtf(io->steer->slide[0] * io->steer->slide[0] +
+                            io->steer->slide[1] * io->steer->slide[1]);
+  const float v = fmaxf(io->steer->own_speed - slide, 0.1f);
   r->settle_seconds = smgi_clampf(2.0f * way / v, SMGI_REST_SETTLE_MIN,
                                   SMGI_REST_SETTLE_MAX);
   r->foot = sp.step;
@@ -207,19 +209,18 @@ static void begin_settle(smg_character* ch) {
   r->t = 0.0f;
 }
 
-static void begin_turn(smg_character* ch, float angle) {
-  smgi_rest* r = &ch->rest;
+static void begin_turn(smgi_rest* r, const smgi_rest_io* io, float angle) {
   /* about the hips as last shown */
-  r->pivot[0] = ch->pose.wpos[0];
-  r->pivot[1] = ch->pose.wpos[2];
+  r->pivot[0] = io->pose->wpos[0];
+  r->pivot[1] = io->pose->wpos[2];
   r->turn = angle;
   r->turned = 0.0f;
   r->turn_seconds = fabsf(angle) / SMGI_REST_TURN_RATE;
   r->steps = (uint32_t)ceilf(fabsf(angle) / SMGI_REST_TURN_STEP);
   if (r->steps < 2u) r->steps = 2u;
   /* a step is never shorter than in walking */
-  if (r->turn_seconds < (float)r->steps * step_seconds(ch))
-    r->turn_seconds = (float)r->steps * step_seconds(ch);
+  if (r->turn_seconds < (float)r->steps * step_seconds(io))
+    r->turn_seconds = (float)r->steps * step_seconds(io);
   /* the foot on the side turned to opens the turn */
   r->foot = angle > 0.0f ? 1u : 0u; /* flipped by the first step */
   r->phase = SMGI_REST_TURN;
@@ -228,8 +229,7 @@ static void begin_turn(smg_character* ch, float angle) {
   r->placed[0] = r->placed[1] = 0.0f;
 }
 
-static void begin_leave(smg_character* ch) {
-  smgi_rest* r = &ch->rest;
+static void begin_leave(smgi_rest* r) {
   r->w_from = r->w;
   r->glide_from = r->glided;
   r->keep = 3u;
@@ -244,12 +244,11 @@ static float turn_at(const smgi_rest* r, float t) {
 }
 
 /* Turning: the body about the pivot, one foot at a time. */
-static void turn_step(smg_character* ch) {
-  smgi_rest* r = &ch->rest;
+static void turn_step(smgi_rest* r, const smgi_rest_io* io) {
   const float a = turn_at(r, r->t);
   const float da = a - r->turned;
   if (da != 0.0f) {
-    smgi_steer_move(ch, da, r->pivot[0], r->pivot[1], 0.0f, 0.0f);
+    smgi_steer_move(io->steer, io->pose, io->lower, da, r->pivot[0], r->pivot[1]);
     /* the standing motion turns with it */
     float x, z;
     smgi_rot2(da, r->M.x - r->pivot[0], r->M.z - r->pivot[1], &x, &z);
@@ -281,11 +280,10 @@ static void turn_step(smg_character* ch) {
 }
 
 /* The standing motion at r->at laid over the pose with weight w. */
-static void overlay(smg_character* ch, float w) {
-  const smg_graph* g = ch->graph;
+static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
+  const smg_graph* g = io->in->graph;
   const smgi_idle* idle = &smgi_derived_of(g)->idle;
-  const smgi_rest* r = &ch->rest;
-  const uint32_t J = ch->joint_count;
+  const uint32_t J = io->in->graph->data.joint_count;
   uint32_t i0 = (uint32_t)r->at;
   if (i0 >= idle->count) i0 = idle->count - 1u;
   const float a = smgi_clampf(r->at - (float)i0, 0.0f, 1.0f);
@@ -294,10 +292,10 @@ static void overlay(smg_character* ch, float w) {
   const unsigned char* ra = smgi_graph_pose(g, fa);
   const unsigned char* rb = smgi_graph_pose(g, fb);
   float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
-  float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : ch->pose.tmp;
+  float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : io->pose->tmp;
   /* the upper body: the action's, or the standing motion's own when it
    * comes from locomotion (an action's arms would wave unasked) */
-  const smgi_joint_set set = ch->upper.action != 0 || !idle->whole
+  const smgi_joint_set set = io->action != 0 || !idle->whole
                                  ? SMGI_JOINTS_NOT_UPPER
                                  : SMGI_JOINTS_ALL;
   smgi_sample_joints(g, ra, rb, a, set, tmp);
@@ -313,58 +311,58 @@ static void overlay(smg_character* ch, float w) {
   smgi_xf_point(r->M, pa[0] + a * (pb[0] - pa[0]), pa[2] + a * (pb[2] - pa[2]),
                 &x, &z);
   const float y = pa[1] + a * (pb[1] - pa[1]) - g->data.info->ground_height;
-  ch->pose.root[0] += w * (x - ch->pose.root[0]);
-  ch->pose.root[1] += w * (y - ch->pose.root[1]);
-  ch->pose.root[2] += w * (z - ch->pose.root[2]);
-  smgi_q_nlerp(ch->pose.rot, root, w, q);
-  memcpy(ch->pose.rot, q, sizeof q);
+  io->pose->root[0] += w * (x - io->pose->root[0]);
+  io->pose->root[1] += w * (y - io->pose->root[1]);
+  io->pose->root[2] += w * (z - io->pose->root[2]);
+  smgi_q_nlerp(io->pose->rot, root, w, q);
+  memcpy(io->pose->rot, q, sizeof q);
   const smgi_joint* joints = g->data.joints;
   for (uint32_t j = 1; j < J; ++j) {
     if (set == SMGI_JOINTS_NOT_UPPER && joints[j].body_part == SMG_BODY_UPPER)
       continue;
-    smgi_q_nlerp(ch->pose.rot + 4u * j, tmp + 4u * j, w, q);
-    memcpy(ch->pose.rot + 4u * j, q, sizeof q);
+    smgi_q_nlerp(io->pose->rot + 4u * j, tmp + 4u * j, w, q);
+    memcpy(io->pose->rot + 4u * j, q, sizeof q);
   }
 }
 
-float smgi_rest_frames(const smg_character* ch, float frames) {
-  return ch->rest.phase == SMGI_REST_TURN ? 0.0f : frames;
+float smgi_rest_frames(const smgi_rest* r, float frames) {
+  return r->phase == SMGI_REST_TURN ? 0.0f : frames;
 }
 
-int smgi_rest_steers(const smg_character* ch) {
-  return ch->rest.phase != SMGI_REST_TURN;
+int smgi_rest_steers(const smgi_rest* r) {
+  return r->phase != SMGI_REST_TURN;
 }
 
-void smgi_rest_pose(smg_character* ch, float dt) {
-  smgi_rest* r = &ch->rest;
-  const int resting = ch->steer.enabled && ch->steer.mode == SMGI_STEER_REST;
+int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
+  int replan = 0;
+  const int resting = io->steer->enabled && io->steer->mode == SMGI_STEER_REST;
   /* the step that comes to rest still played the motion up to the stop
    * frame: the settling starts with the next one */
   float step_dt = dt;
   if (r->phase == SMGI_REST_OFF) {
-    if (!resting) return;
-    begin_settle(ch);
+    if (!resting) return 0;
+    begin_settle(r, io);
     step_dt = 0.0f;
   } else if (!resting &&
              (r->phase == SMGI_REST_SETTLE || r->phase == SMGI_REST_STAND)) {
-    const float a = path_turn(ch);
+    const float a = path_turn(io);
     if (fabsf(a) > SMGI_REST_TURN_MIN)
-      begin_turn(ch, a);
+      begin_turn(r, io, a);
     else
-      begin_leave(ch);
+      begin_leave(r);
   } else if (resting && r->phase == SMGI_REST_LEAVE) {
-    begin_settle(ch);
+    begin_settle(r, io);
     step_dt = 0.0f;
   }
   r->t += step_dt;
   r->dt = dt;
-  const smgi_idle* idle = &smgi_derived_of(ch->graph)->idle;
+  const smgi_idle* idle = &smgi_derived_of(io->in->graph)->idle;
   switch (r->phase) {
     case SMGI_REST_SETTLE: {
       const float g = ease_out(r->t / r->settle_seconds);
       r->glided = g;
       r->w = idle->count ? g : 0.0f;
-      if (r->t >= r->settle_seconds && r->t >= step_seconds(ch)) {
+      if (r->t >= r->settle_seconds && r->t >= step_seconds(io)) {
         r->phase = SMGI_REST_STAND;
         r->t = 0.0f;
       }
@@ -375,15 +373,15 @@ void smgi_rest_pose(smg_character* ch, float dt) {
       r->glided = 1.0f;
       break;
     case SMGI_REST_TURN:
-      turn_step(ch);
+      turn_step(r, io);
       if (r->t >= r->turn_seconds) {
         /* facing the path: the plan was made for the old facing */
         if (resting) {
           r->phase = SMGI_REST_STAND;
           r->t = 0.0f;
         } else {
-          smgi_replan(ch);
-          begin_leave(ch);
+          replan = 1;
+          begin_leave(r);
         }
       }
       break;
@@ -394,7 +392,7 @@ void smgi_rest_pose(smg_character* ch, float dt) {
           (r->keep == 0u || r->t >= SMGI_REST_KEEP_SECONDS)) {
         r->phase = SMGI_REST_OFF;
         r->w = 0.0f;
-        return;
+        return replan;
       }
       break;
     default:
@@ -404,18 +402,18 @@ void smgi_rest_pose(smg_character* ch, float dt) {
    * character's position), not played, so that the locomotion walks on
    * from where its feet are; the steering has already taken the ground
    * point it compares the next step with */
-  ch->pose.root[0] += r->glided * r->glide[0];
-  ch->pose.root[2] += r->glided * r->glide[1];
-  ch->pose.ground[0] += r->glided * r->glide[0];
-  ch->pose.ground[1] += r->glided * r->glide[1];
+  io->pose->root[0] += r->glided * r->glide[0];
+  io->pose->root[2] += r->glided * r->glide[1];
+  io->pose->ground[0] += r->glided * r->glide[0];
+  io->pose->ground[1] += r->glided * r->glide[1];
   if (r->phase != SMGI_REST_LEAVE) {
     /* both feet stand (the IK holds them where this stage puts them) */
-    ch->pose.contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
+    io->pose->contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
   }
   if (idle->count > 1u && r->w > 0.0f) {
     /* forwards and backwards through the standing motion */
     const float last = (float)(idle->count - 1u);
-    r->at += r->dir * dt * ch->fps;
+    r->at += r->dir * dt * io->in->fps;
     if (r->at > last) {
       r->at = fmaxf(2.0f * last - r->at, 0.0f);
       r->dir = -1.0f;
@@ -423,17 +421,17 @@ void smgi_rest_pose(smg_character* ch, float dt) {
       r->at = fminf(-r->at, last);
       r->dir = 1.0f;
     }
-    overlay(ch, r->w);
+    overlay(r, io, r->w);
   }
+  return replan;
 }
 
 /* How far the stepping foot (r->foot) is through its step, 0..1 (1: it
  * stands). */
-static float step_progress(const smg_character* ch) {
-  const smgi_rest* r = &ch->rest;
+static float step_progress(const smgi_rest* r, const smgi_rest_io* io) {
   float u = 1.0f;
   if (r->phase == SMGI_REST_SETTLE) {
-    u = r->t / step_seconds(ch);
+    u = r->t / step_seconds(io);
   } else if (r->phase == SMGI_REST_TURN && r->step != SMGI_NONE) {
     const float each = r->turn_seconds / (float)r->steps;
     u = (r->t - (float)r->step * each) / each;
@@ -444,32 +442,31 @@ static float step_progress(const smg_character* ch) {
 /* A step's shape at progress u: the foot rises on a sine arc and moves
  * over the ground only in the middle SMGI_REST_STEP_OVER of it, while it
  * is well off the floor. */
-static float step_lift(const smg_character* ch, float u) {
-  return SMGI_REST_LIFT * ch->graph->data.info->leg_length *
+static float step_lift(const smgi_rest_io* io, float u) {
+  return SMGI_REST_LIFT * io->in->graph->data.info->leg_length *
          sinf(SMGI_PI * u);
 }
 static float step_over(float u) {
   return smooth((u - 0.5f) / SMGI_REST_STEP_OVER + 0.5f);
 }
 
-void smgi_rest_feet(smg_character* ch) {
-  smgi_rest* r = &ch->rest;
-  if (r->phase == SMGI_REST_OFF || !ch->ik.enabled) return;
+void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io) {
+  if (r->phase == SMGI_REST_OFF || !io->ik->enabled) return;
   if (r->phase == SMGI_REST_LEAVE) {
     /* a foot stays where it stood until the locomotion's own contact
      * for it ends: then it swings, and the IK lets the difference go in
      * the air instead of sliding it along the floor */
     const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
-    const smgi_info* info = ch->graph->data.info;
+    const smgi_info* info = io->in->graph->data.info;
     for (uint32_t f = 0; f < 2u; ++f) {
       if (!(r->keep & (1u << f))) continue;
       uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
-      if (toe >= ch->joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
-      const float* ap = ch->pose.wpos + 3u * toe;
-      if (!(ch->pose.contacts & bits[f]) && r->rejoin[f] < 0.0f)
+      if (toe >= io->in->graph->data.joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
+      const float* ap = io->pose->wpos + 3u * toe;
+      if (!(io->pose->contacts & bits[f]) && r->rejoin[f] < 0.0f)
         r->rejoin[f] = 0.0f;
       if (r->rejoin[f] < 0.0f) {
-        smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
+        smgi_ik_guide(io->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
         continue;
       }
       /* released by the locomotion: joins its foot in the air, on an
@@ -478,40 +475,40 @@ void smgi_rest_feet(smg_character* ch) {
        * swing */
       const float u = r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
       const float s = step_over(u);
-      smgi_ik_guide(&ch->ik, f, r->hold[f][0] + s * (ap[0] - r->hold[f][0]),
+      smgi_ik_guide(io->ik, f, r->hold[f][0] + s * (ap[0] - r->hold[f][0]),
                     r->hold[f][1] + s * (ap[2] - r->hold[f][1]),
-                    step_lift(ch, u));
+                    step_lift(io, u));
       r->rejoin[f] += r->dt;
       if (r->rejoin[f] >= SMGI_REST_REJOIN_SECONDS) r->keep &= ~(1u << f);
     }
     return;
   }
-  const float u = step_progress(ch);
+  const float u = step_progress(r, io);
   for (uint32_t f = 0; f < 2u; ++f) {
     if (f == r->foot && u < 1.0f) {
       const float s = step_over(u);
-      smgi_ik_guide(&ch->ik, f,
+      smgi_ik_guide(io->ik, f,
                     r->from[0] + s * (r->hold[f][0] - r->from[0]),
                     r->from[1] + s * (r->hold[f][1] - r->from[1]),
-                    step_lift(ch, u));
+                    step_lift(io, u));
     } else {
-      smgi_ik_guide(&ch->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
+      smgi_ik_guide(io->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
     }
   }
 }
 
 /* Foot f's ankle turned so that its toe is at height y (its direction
  * over the ground kept), by `amount` (0..1) of that turn. */
-static void flatten_foot(smg_character* ch, uint32_t f, float y,
+static void flatten_foot(const smgi_rest_io* io, uint32_t f, float y,
                          float amount) {
-  const smgi_info* info = ch->graph->data.info;
+  const smgi_info* info = io->in->graph->data.info;
   const uint32_t ankle = f ? info->right_leg[2] : info->left_leg[2];
   const uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
-  const uint32_t J = ch->joint_count;
-  if (toe >= J || ankle >= J || ch->graph->data.joints[toe].parent < 0)
+  const uint32_t J = io->in->graph->data.joint_count;
+  if (toe >= J || ankle >= J || io->in->graph->data.joints[toe].parent < 0)
     return;
-  float* wpos = ch->pose.wpos;
-  float* wrot = ch->pose.wrot;
+  float* wpos = io->pose->wpos;
+  float* wrot = io->pose->wrot;
   const float v[3] = {wpos[3u * toe] - wpos[3u * ankle],
                       wpos[3u * toe + 1u] - wpos[3u * ankle + 1u],
                       wpos[3u * toe + 2u] - wpos[3u * ankle + 2u]};
@@ -528,30 +525,29 @@ static void flatten_foot(smg_character* ch, uint32_t f, float y,
   smgi_q_normalize(q);
   memcpy(wrot + 4u * ankle, q, sizeof q);
   /* the local rotation under the knee's world rotation */
-  const uint32_t knee = (uint32_t)ch->graph->data.joints[ankle].parent;
+  const uint32_t knee = (uint32_t)io->in->graph->data.joints[ankle].parent;
   smgi_q_conj(wrot + 4u * knee, pc);
-  smgi_q_mul(pc, q, ch->pose.rot + 4u * ankle);
-  smgi_q_normalize(ch->pose.rot + 4u * ankle);
-  const uint32_t* list = ch->ik.leg_joints + (size_t)f * J;
-  smgi_fk_joints(ch, list + 3u + ch->ik.leg_side[f], ch->ik.leg_below[f]);
+  smgi_q_mul(pc, q, io->pose->rot + 4u * ankle);
+  smgi_q_normalize(io->pose->rot + 4u * ankle);
+  const uint32_t* list = io->ik->leg_joints + (size_t)f * J;
+  smgi_fk_joints(io->pose, io->in->graph, list + 3u + io->ik->leg_side[f], io->ik->leg_below[f]);
 }
 
-void smgi_rest_flatten(smg_character* ch) {
-  const smgi_rest* r = &ch->rest;
-  if (r->phase == SMGI_REST_OFF || !ch->ik.enabled) return;
+void smgi_rest_flatten(const smgi_rest* r, const smgi_rest_io* io) {
+  if (r->phase == SMGI_REST_OFF || !io->ik->enabled) return;
   if (r->phase == SMGI_REST_LEAVE) {
     /* the feet take the locomotion's shape again as it fades in (a foot
      * kept where it stood rolls onto its toe with the locomotion's) */
     const float amount = 1.0f - smooth(r->t / SMGI_REST_FADE_OUT);
     for (uint32_t f = 0; f < 2u; ++f) {
-      const smgi_foot* foot = &ch->ik.feet[f];
-      if (!(r->keep & (1u << f)) || !ch->ik.leg_ok[f] ||
+      const smgi_foot* foot = &io->ik->feet[f];
+      if (!(r->keep & (1u << f)) || !io->ik->leg_ok[f] ||
           !(foot->stand_y < INFINITY) || amount <= 0.0f)
         continue;
       const float u = r->rejoin[f] < 0.0f
                           ? 0.0f
                           : r->rejoin[f] / SMGI_REST_REJOIN_SECONDS;
-      flatten_foot(ch, f, foot->stand_y, amount * (1.0f - smooth(u)));
+      flatten_foot(io, f, foot->stand_y, amount * (1.0f - smooth(u)));
     }
     return;
   }
@@ -559,11 +555,11 @@ void smgi_rest_flatten(smg_character* ch) {
    * carried flat (the IK raises the ankle by the step's arc) */
   const float amount =
       r->phase == SMGI_REST_SETTLE ? smooth(r->t / SMGI_REST_FOOT_FLAT) : 1.0f;
-  const float u = step_progress(ch);
+  const float u = step_progress(r, io);
   for (uint32_t f = 0; f < 2u; ++f) {
-    const smgi_foot* foot = &ch->ik.feet[f];
-    if (!ch->ik.leg_ok[f] || !(foot->stand_y < INFINITY)) continue;
-    flatten_foot(ch, f, foot->stand_y,
+    const smgi_foot* foot = &io->ik->feet[f];
+    if (!io->ik->leg_ok[f] || !(foot->stand_y < INFINITY)) continue;
+    flatten_foot(io, f, foot->stand_y,
                  f == r->foot && u < 1.0f ? 1.0f : amount);
   }
 }

@@ -7,8 +7,14 @@
 
 #include <stdint.h>
 
+#include "graph_internal.h"
+#include "ik.h"
+#include "lower.h"
+#include "pose.h"
 #include "rmath.h"
 #include "smg.h"
+#include "steer.h"
+#include "step_in.h"
 
 #define SMGI_REST_OFF 0u    /* following the locomotion */
 #define SMGI_REST_SETTLE 1u /* the last step: feet beside each other, hips
@@ -45,6 +51,20 @@ typedef struct smgi_rest {
                            foot from there */
 } smgi_rest;
 
+/* What the stage reads and moves besides its own state: the step's
+ * inputs (graph, path, progress), the steering (its mode and the motion's
+ * speed; the turn on the spot moves the pose and plan through it), the
+ * pose, the lower timeline (turned with the pose), the foot IK (where the
+ * feet are shown; this stage places them) and the upper body's action. */
+typedef struct smgi_rest_io {
+  const smgi_step_in* in;
+  smgi_steer* steer;
+  smgi_pose* pose;
+  smgi_lower* lower;
+  smgi_ik* ik;
+  uint32_t action;
+} smgi_rest_io;
+
 /* Where the settling step would take the hips of a character stopping on
  * pool frame `frame`, relative to that frame's ground point, in its clip
  * space (the steering chooses the frame to stop on with it). */
@@ -52,20 +72,21 @@ void smgi_rest_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
                             float* dz);
 /* Frames the lower body advances this step, given what the steering
  * wants: none while turning on the spot. */
-float smgi_rest_frames(const smg_character* ch, float frames);
+float smgi_rest_frames(const smgi_rest* r, float frames);
 /* Whether the steering should correct the pose this step (not while
  * turning on the spot: the turn is the correction). */
-int smgi_rest_steers(const smg_character* ch);
+int smgi_rest_steers(const smgi_rest* r);
 /* After the pose is composed and steered, before forward kinematics:
  * follow the steering into and out of rest, lay the standing motion over
- * the pose and move the character as it settles or turns. */
-void smgi_rest_pose(smg_character* ch, float dt);
+ * the pose and turn the character on the spot. Returns 1 when the plan
+ * should be chosen again (a turn on the spot ended). */
+int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt);
 /* After forward kinematics, before foot IK: where the feet go. */
-void smgi_rest_feet(smg_character* ch);
+void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io);
 /* After smgi_rest_feet, before foot IK: the feet this stage places are
  * laid flat (a stop pose can have a heel or a toe up; standing, both are
  * down); the IK keeps the ankles' world rotations, so the toes land where
  * they are placed. */
-void smgi_rest_flatten(smg_character* ch);
+void smgi_rest_flatten(const smgi_rest* r, const smgi_rest_io* io);
 
 #endif /* SMG_REST_H */
