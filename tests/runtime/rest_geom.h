@@ -159,8 +159,12 @@ static inline float rg_speed(const rg_run* r, uint32_t i, uint32_t w) {
   return sqrtf(dx * dx + dz * dz) / ((float)(b - a) * r->dt);
 }
 
-/* Fastest planted toe (cm/s) over frames [a, b). */
-static inline float rg_planted_max(const rg_run* r, uint32_t a, uint32_t b) {
+/* Planted toe speeds (cm/s) over frames [a, b): the fastest, and the
+ * 95th percentile in *p95 when given. */
+static inline float rg_planted(const rg_run* r, uint32_t a, uint32_t b,
+                               float* p95) {
+  static float v[2 * RG_MAX_FRAMES];
+  uint32_t n = 0;
   float best = 0.0f;
   for (int f = 0; f < 2; ++f) {
     const float fl = rg_floor(r, f);
@@ -170,11 +174,21 @@ static inline float rg_planted_max(const rg_run* r, uint32_t a, uint32_t b) {
         continue;
       float dx = r->toe[i][f][0] - r->toe[i - 1][f][0];
       float dz = r->toe[i][f][2] - r->toe[i - 1][f][2];
-      float v = 100.0f * sqrtf(dx * dx + dz * dz) / r->dt;
-      if (v > best) best = v;
+      float sp = 100.0f * sqrtf(dx * dx + dz * dz) / r->dt;
+      v[n++] = sp;
+      if (sp > best) best = sp;
     }
   }
+  if (p95) {
+    qsort(v, n, sizeof(float), rg_cmpf);
+    *p95 = n ? v[(n * 95u) / 100u] : 0.0f;
+  }
   return best;
+}
+
+/* Fastest planted toe (cm/s) over frames [a, b). */
+static inline float rg_planted_max(const rg_run* r, uint32_t a, uint32_t b) {
+  return rg_planted(r, a, b, NULL);
 }
 
 /* Swap the legs when the pose at frame 0 faces away from `heading`. */
