@@ -26,11 +26,12 @@
  * anchor while the body turns and slides above it.
  *
  * Coming to rest: near the end, the stage picks the queued frame with both
- * feet down whose root lands nearest the last point (a frame with one foot
- * down, or any, when the data has none) and slows the playback down onto
- * it with constant deceleration, sliding the remaining offset out on the
- * way. There it holds the pose (the graph need not contain standing
- * motion) until the path changes. Where the path turns too tightly for the
+ * feet down from which the settling step (rest.c) brings the hips nearest
+ * the last point (a frame with one foot down, or any, when the data has
+ * none: by its root) and slows the playback down onto it, never below
+ * SMGI_STEER_BRAKE_FLOOR of real time, sliding the remaining offset out on
+ * the way. There the playhead stays (the rest stage stands the character)
+ * until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the playback slows down (to no
  * less than SMGI_STEER_RATE_MIN). What the planner should make of the
  * correction is smgi_steer_plan_view / _plan_reach (inline,
