@@ -59,6 +59,30 @@ smg_result eval_bake_manifest(const smgb_manifest* m, uint32_t threads,
 }
 
 /* Seconds of the stages whose name contains `key` (NAN when none). */
+void* eval_bake_to_memory(const char* manifest, const char* data_dir,
+                          size_t* out_size) {
+  smgb_manifest man;
+  smgb_error merr;
+  smg_bake_result res;
+  void* copy = NULL;
+  memset(&man, 0, sizeof(man));
+  memset(&merr, 0, sizeof(merr));
+  if (smgb_manifest_load(manifest, data_dir, &man, &merr) != SMG_OK) {
+    eval_log("%s: %s", manifest, merr.message);
+    return NULL;
+  }
+  if (eval_bake_manifest(&man, 0, &res) == SMG_OK &&
+      posix_memalign(&copy, 16, res.blob_size) == 0) {
+    memcpy(copy, res.blob, res.blob_size);
+    *out_size = res.blob_size;
+  } else {
+    eval_log("%s: bake failed: %s", manifest, res.error);
+  }
+  smg_bake_result_free(&res);
+  smgb_manifest_free(&man);
+  return copy;
+}
+
 static double stage_seconds(const smg_bake_result* r, const char* key) {
   double s = 0.0;
   int found = 0;

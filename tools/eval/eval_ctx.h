@@ -34,7 +34,8 @@ typedef struct eval_ctx {
   char bandai_dir[1024]; /* <shared>/mocap/bandai-namco */
   int have_bandai;       /* the Bandai Namco clips are readable */
   const char* bandai_manifest; /* data/bandai.manifest */
-  const char* only;      /* --only SECTION: run just that one ("follow") */
+  const char* only;      /* --only SECTION: run just that one ("follow",
+                          * "behaviour") */
 } eval_ctx;
 
 /* Markdown output (no-op in check mode). */
@@ -94,6 +95,11 @@ struct smgb_manifest;
 struct smg_bake_result;
 smg_result eval_bake_manifest(const struct smgb_manifest* m, uint32_t threads,
                               struct smg_bake_result* res);
+/* Loads a manifest (clips in data_dir) and bakes it in-process into a
+ * 16-byte aligned block (free()) that lives in memory only; *out_size its
+ * size. NULL (with a log line) when the manifest or the bake fails. */
+void* eval_bake_to_memory(const char* manifest, const char* data_dir,
+                          size_t* out_size);
 /* Path following on five paths with transition and splice points. */
 void eval_section_paths(eval_ctx* ctx, const void* blob, size_t size);
 /* Feet from geometry: planted-toe speed with IK on and off on every path
@@ -108,6 +114,13 @@ void eval_figure_swing(eval_ctx* ctx, const void* blob, size_t size);
  * Namco blobs with steering on. */
 void eval_section_follow(eval_ctx* ctx, const void* cmu_blob,
                          size_t cmu_size);
+/* Doing what was asked, like a person (issue 24, eval_behaviour.c):
+ * style held, cadence, rest, start, a path behind, and what must keep
+ * holding, from the exported poses on the CMU blob, the sparse set and
+ * the Bandai Namco set (tables only); filmstrips of a stop and a start on
+ * the CMU graph. Report mode only. */
+void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
+                            size_t cmu_size);
 /* Splicing accuracy (Fig. 5) and the synchronization check. */
 void eval_section_splice(eval_ctx* ctx);
 /* Section 2's paths and tables on another baked graph (no figures);

@@ -429,32 +429,6 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
   }
 }
 
-/* Bakes a manifest (clips in `data_dir`) in-process into a 16-byte
- * aligned copy (free()); the copy lives in memory only. */
-static void* bake(const char* manifest, const char* data_dir,
-                  size_t* out_size) {
-  smgb_manifest man;
-  smgb_error merr;
-  smg_bake_result res;
-  void* copy = NULL;
-  memset(&man, 0, sizeof(man));
-  memset(&merr, 0, sizeof(merr));
-  if (smgb_manifest_load(manifest, data_dir, &man, &merr) != SMG_OK) {
-    eval_log("%s: %s", manifest, merr.message);
-    return NULL;
-  }
-  if (eval_bake_manifest(&man, 0, &res) == SMG_OK &&
-      posix_memalign(&copy, 16, res.blob_size) == 0) {
-    memcpy(copy, res.blob, res.blob_size);
-    *out_size = res.blob_size;
-  } else {
-    eval_log("%s: bake failed: %s", manifest, res.error);
-  }
-  smg_bake_result_free(&res);
-  smgb_manifest_free(&man);
-  return copy;
-}
-
 /* Check mode: the tight paths on one graph, steering on, against the
  * issue's targets (loose enough for any sane build, tight enough that a
  * character cutting corners or walking on past the end fails). */
@@ -500,7 +474,7 @@ static void check_bandai(eval_ctx* ctx) {
            ctx->bandai_dir);
     return;
   }
-  blob = bake(ctx->bandai_manifest, ctx->bandai_dir, &size);
+  blob = eval_bake_to_memory(ctx->bandai_manifest, ctx->bandai_dir, &size);
   if (!eval_check(ctx, blob && smg_graph_load_memory(blob, size, NULL, &g) ==
                                    SMG_OK,
                   "follow: Bandai Namco graph baked and loaded")) {
@@ -524,11 +498,12 @@ static void follow_graphs(eval_ctx* ctx, const void* cmu_blob,
   size_t k, used = 0;
   if (ctx->have_cmu) {
     eval_log("baking %s...", k_sparse);
-    blob[1] = bake(k_sparse, ctx->cmu_dir, &size[1]);
+    blob[1] = eval_bake_to_memory(k_sparse, ctx->cmu_dir, &size[1]);
   }
   if (ctx->have_bandai) {
     eval_log("baking %s...", ctx->bandai_manifest);
-    blob[2] = bake(ctx->bandai_manifest, ctx->bandai_dir, &size[2]);
+    blob[2] =
+        eval_bake_to_memory(ctx->bandai_manifest, ctx->bandai_dir, &size[2]);
   } else {
     eval_log("Bandai Namco clips not found at %s: skipping that graph",
              ctx->bandai_dir);

@@ -34,7 +34,7 @@ static void usage(void) {
           "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
           "--keep DIR also writes the baked blobs and per-path CSV traces "
           "to DIR\n"
-          "--only follow runs just the bake and the path-following section "
+          "--only follow|behaviour runs just the bake and that section "
           "(report to --out)\n");
 }
 
@@ -217,7 +217,8 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (ctx.only && strcmp(ctx.only, "follow") != 0) {
+  if (ctx.only && strcmp(ctx.only, "follow") != 0 &&
+      strcmp(ctx.only, "behaviour") != 0) {
     usage();
     return 2;
   }
@@ -270,7 +271,10 @@ int main(int argc, char** argv) {
   eval_section_bake(&ctx, &blob, &blob_size);
   if (!ctx.only) eval_section_paths(&ctx, blob, blob_size);
   if (!ctx.only) eval_section_feet(&ctx, blob, blob_size);
-  eval_section_follow(&ctx, blob, blob_size);
+  if (!ctx.only || !strcmp(ctx.only, "follow"))
+    eval_section_follow(&ctx, blob, blob_size);
+  if (!ctx.only || !strcmp(ctx.only, "behaviour"))
+    eval_section_behaviour(&ctx, blob, blob_size);
   if (!ctx.only) eval_section_splice(&ctx);
   free(blob);
 
