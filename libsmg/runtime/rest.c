@@ -198,6 +198,10 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
   const float v = fmaxf(io->steer->own_speed - slide, 0.1f);
   r->settle_seconds = smgi_clampf(2.0f * way / v, SMGI_REST_SETTLE_MIN,
                                   SMGI_REST_SETTLE_MAX);
+  /* the foot lands while the hips still move: a short last step, no
+   * longer than a swing */
+  r->step_seconds = fminf(step_seconds(io),
+                          SMGI_REST_STEP_SHARE * r->settle_seconds);
   r->foot = sp.step;
   r->from[0] = r->hold[sp.step][0];
   r->from[1] = r->hold[sp.step][1];
@@ -362,7 +366,7 @@ int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
       const float g = ease_out(r->t / r->settle_seconds);
       r->glided = g;
       r->w = idle->count ? g : 0.0f;
-      if (r->t >= r->settle_seconds && r->t >= step_seconds(io)) {
+      if (r->t >= r->settle_seconds && r->t >= r->step_seconds) {
         r->phase = SMGI_REST_STAND;
         r->t = 0.0f;
       }
@@ -428,10 +432,10 @@ int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
 
 /* How far the stepping foot (r->foot) is through its step, 0..1 (1: it
  * stands). */
-static float step_progress(const smgi_rest* r, const smgi_rest_io* io) {
+static float step_progress(const smgi_rest* r) {
   float u = 1.0f;
   if (r->phase == SMGI_REST_SETTLE) {
-    u = r->t / step_seconds(io);
+    u = r->t / r->step_seconds;
   } else if (r->phase == SMGI_REST_TURN && r->step != SMGI_NONE) {
     const float each = r->turn_seconds / (float)r->steps;
     u = (r->t - (float)r->step * each) / each;
@@ -483,16 +487,25 @@ void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io) {
     }
     return;
   }
-  const float u = step_progress(r, io);
+  /* heights from the floor the foot last stood on, not from the pose: a
+   * stop pose may hold a foot in the air (a run's flight) */
+  const smgi_info* info = io->in->graph->data.info;
+  const float u = step_progress(r);
   for (uint32_t f = 0; f < 2u; ++f) {
+    uint32_t toe = f ? info->right_leg[3] : info->left_leg[3];
+    if (toe >= io->in->graph->data.joint_count)
+      toe = f ? info->right_leg[2] : info->left_leg[2];
+    const float stand = io->ik->feet[f].stand_y;
+    const float down =
+        stand < INFINITY ? stand - io->pose->wpos[3u * toe + 1u] : 0.0f;
     if (f == r->foot && u < 1.0f) {
       const float s = step_over(u);
       smgi_ik_guide(io->ik, f,
                     r->from[0] + s * (r->hold[f][0] - r->from[0]),
                     r->from[1] + s * (r->hold[f][1] - r->from[1]),
-                    step_lift(io, u));
+                    down + step_lift(io, u));
     } else {
-      smgi_ik_guide(io->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
+      smgi_ik_guide(io->ik, f, r->hold[f][0], r->hold[f][1], down);
     }
   }
 }
@@ -555,7 +568,7 @@ void smgi_rest_flatten(const smgi_rest* r, const smgi_rest_io* io) {
    * carried flat (the IK raises the ankle by the step's arc) */
   const float amount =
       r->phase == SMGI_REST_SETTLE ? smooth(r->t / SMGI_REST_FOOT_FLAT) : 1.0f;
-  const float u = step_progress(r, io);
+  const float u = step_progress(r);
   for (uint32_t f = 0; f < 2u; ++f) {
     const smgi_foot* foot = &io->ik->feet[f];
     if (!io->ik->leg_ok[f] || !(foot->stand_y < INFINITY)) continue;

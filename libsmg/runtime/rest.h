@@ -38,6 +38,7 @@ typedef struct smgi_rest {
   float glided;         /* of it shown now (0..1) */
   float glide_from;     /* glided when the fade out began */
   float settle_seconds; /* how long the hips take to come to stand */
+  float step_seconds;   /* how long the settling step takes */
   float pivot[2];       /* turning: about this ground point */
   float turn;           /* radians to turn in all (+ = left) */
   float turned;         /* radians turned so far */
@@ -81,12 +82,13 @@ int smgi_rest_steers(const smgi_rest* r);
  * the pose and turn the character on the spot. Returns 1 when the plan
  * should be chosen again (a turn on the spot ended). */
 int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt);
-/* After forward kinematics, before foot IK: where the feet go. */
-void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io);
-/* After smgi_rest_feet, before foot IK: the feet this stage places are
+/* After forward kinematics, before foot IK: the feet this stage places are
  * laid flat (a stop pose can have a heel or a toe up; standing, both are
  * down); the IK keeps the ankles' world rotations, so the toes land where
  * they are placed. */
 void smgi_rest_flatten(const smgi_rest* r, const smgi_rest_io* io);
+/* Then, before foot IK: where the feet go (on the floor they last stood
+ * on, whatever height the pose has them at). */
+void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io);
 
 #endif /* SMG_REST_H */

@@ -147,8 +147,8 @@ smg_result smgi_step(smg_character* ch, float dt) {
   /* world transforms are cached: IK needs them, and the getters then
    * only convert (model matrices) or copy (local pose) */
   smgi_fk(g, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);
-  smgi_rest_feet(&ch->rest, &rest);
   smgi_rest_flatten(&ch->rest, &rest);
+  smgi_rest_feet(&ch->rest, &rest);
   smgi_ik_apply(&ch->ik, &ch->pose, g, dt);
   update_progress(ch);
   return SMG_OK;

@@ -198,6 +198,9 @@
                                      the feet (and the standing motion to
                                      fade in), at least ... */
 #define SMGI_REST_SETTLE_MAX 1.0f /* ... and at most */
+#define SMGI_REST_STEP_SHARE 0.55f /* of that time the settling step takes
+                                      at most: the foot is down before the
+                                      hips' last few centimetres */
 #define SMGI_REST_FADE_OUT 0.6f  /* s: the standing motion and the glide
                                     fade out as the walk begins */
 #define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at
