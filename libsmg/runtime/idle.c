@@ -3,6 +3,7 @@
  */
 #include "idle.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "rmath.h"
@@ -100,6 +101,7 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
       out->count = s[i].count;
       out->whole = whole;
       memcpy(out->toe, local, sizeof local);
+      out->floor = fminf(p[0][1], p[1][1]) - info->ground_height;
     }
   }
 }

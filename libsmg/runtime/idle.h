@@ -24,6 +24,8 @@ typedef struct smgi_idle {
   /* left and right toe (x, z) at `first`, in that frame's ground frame
    * (FRMI root2d): where the feet stand relative to the hips */
   float toe[2][2];
+  float floor;           /* the lower toe's height there (POSE space less
+                            the ground height): where the motion's floor is */
   /* how long a foot swings in the graph's locomotion (median of its
    * labelled swings, seconds): the steps made at rest take as long */
   float swing_seconds;

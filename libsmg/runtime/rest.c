@@ -181,6 +181,16 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
     const float* g0 = io->in->graph->data.frames[idle->first].root2d;
     const smgi_xform2 F = {g0[0], g0[1], g0[2]};
     r->M = smgi_xf_mul(sp.G, smgi_xf_inv(F));
+    /* its floor on the one the stop stands on (the lower toe as shown):
+     * clips are grounded each on its own lowest point */
+    const uint32_t tl = info->left_leg[3], tr = info->right_leg[3];
+    const uint32_t J = io->in->graph->data.joint_count;
+    if (tl < J && tr < J)
+      r->rise = fminf(io->pose->wpos[3u * tl + 1u],
+                      io->pose->wpos[3u * tr + 1u]) -
+                idle->floor;
+    else
+      r->rise = 0.0f;
   }
   r->glide[0] = sp.glide[0];
   r->glide[1] = sp.glide[1];
@@ -314,7 +324,8 @@ static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   smgi_q_mul(yaw, q, root);
   smgi_xf_point(r->M, pa[0] + a * (pb[0] - pa[0]), pa[2] + a * (pb[2] - pa[2]),
                 &x, &z);
-  const float y = pa[1] + a * (pb[1] - pa[1]) - g->data.info->ground_height;
+  const float y =
+      pa[1] + a * (pb[1] - pa[1]) - g->data.info->ground_height + r->rise;
   io->pose->root[0] += w * (x - io->pose->root[0]);
   io->pose->root[1] += w * (y - io->pose->root[1]);
   io->pose->root[2] += w * (z - io->pose->root[2]);
@@ -339,7 +350,11 @@ int smgi_rest_steers(const smgi_rest* r) {
 
 int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
   int replan = 0;
-  const int resting = io->steer->enabled && io->steer->mode == SMGI_STEER_REST;
+  /* the stage places the feet through the foot IK: without it the
+   * character holds its stop pose (a blend of two stances would take the
+   * feet through the floor) */
+  const int resting = io->steer->enabled && io->ik->enabled &&
+                      io->steer->mode == SMGI_STEER_REST;
   /* the step that comes to rest still played the motion up to the stop
    * frame: the settling starts with the next one */
   float step_dt = dt;
@@ -447,8 +462,9 @@ static float step_progress(const smgi_rest* r) {
  * over the ground only in the middle SMGI_REST_STEP_OVER of it, while it
  * is well off the floor. */
 static float step_lift(const smgi_rest_io* io, float u) {
-  return SMGI_REST_LIFT * io->in->graph->data.info->leg_length *
-         sinf(SMGI_PI * u);
+  float sn, cs; /* the library's own sine: the same bits on every libc */
+  smgi_sincosf(SMGI_PI * u, &sn, &cs);
+  return SMGI_REST_LIFT * io->in->graph->data.info->leg_length * sn;
 }
 static float step_over(float u) {
   return smooth((u - 0.5f) / SMGI_REST_STEP_OVER + 0.5f);

@@ -31,6 +31,8 @@ typedef struct smgi_rest {
   float w_from;         /* w when the fade out began */
   float at, dir;        /* standing motion: frames into it, +1 or -1 */
   smgi_xform2 M;        /* its frames -> world */
+  float rise;           /* and raised by this much: its floor on the
+                           stop's */
   float hold[2][2];     /* where each toe stands (x, z) */
   uint32_t foot;        /* the foot stepping now (0 left, 1 right) */
   float from[2];        /* its toe where the step began (x, z) */
