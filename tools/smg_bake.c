@@ -22,6 +22,7 @@
 #include "blob.h"
 #include "smg_bake.h"
 #include "smg_format.h"
+#include "standing.h"
 
 /* A buffer aligned as the blob reader requires (16 bytes). 64-bit
  * Windows has no posix_memalign, and its malloc already aligns to 16. */
@@ -163,6 +164,27 @@ static void graph_summary(const char* title, const smgi_graph_data* g,
   }
 }
 
+/* The standing motion the runtime will find (standing.h): what a
+ * character plays at rest. */
+static void standing_summary(const smgi_graph_data* g) {
+  uint32_t n = smgi_standing_find(g->frames, g->frame_count, g->clips,
+                                  g->clip_count, g->info->frame_rate,
+                                  g->info->leg_length, NULL, 0);
+  smgi_stand* s = n ? malloc(n * sizeof *s) : NULL;
+  double t[2] = {0.0, 0.0};
+  uint32_t k;
+  if (n && !s) return;
+  smgi_standing_find(g->frames, g->frame_count, g->clips, g->clip_count,
+                     g->info->frame_rate, g->info->leg_length, s, n);
+  for (k = 0; k < n; ++k)
+    t[(g->clips[s[k].clip].flags & SMGI_CLIP_LOWER) ? 0 : 1] +=
+        s[k].count / g->info->frame_rate;
+  printf("standing motion: %u stretches, %.1f s in locomotion clips, %.1f s "
+         "in action clips%s\n", n, t[0], t[1],
+         n ? "" : " (none)");
+  free(s);
+}
+
 static int info(const char* path) {
   FILE* f = fopen(path, "rb");
   long size;
@@ -277,6 +299,7 @@ static int info(const char* path) {
       printf("  %-10s %u candidates, distance best %.3f m, mean %.3f m\n",
              g.strings + g.actions[a].name, cnt, best, sum / cnt);
   }
+  standing_summary(&g);
   printf("sections:\n");
   for (i = 0; i < h->section_count; ++i)
     printf("  %s %9llu bytes  %7u records\n", tag_name(secs[i].tag, tn),

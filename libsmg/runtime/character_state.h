@@ -19,6 +19,7 @@
 #include "path.h"
 #include "planner.h"
 #include "pose.h"
+#include "rest.h"
 #include "rmath.h"
 #include "smg.h"
 #include "steer.h"
@@ -54,6 +55,7 @@ struct smg_character {
   smgi_sync sync;
   smgi_pose pose;
   smgi_steer steer;
+  smgi_rest rest;
   smgi_ik ik;
 };
 

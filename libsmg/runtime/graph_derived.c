@@ -846,6 +846,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   }
   dv->natural_next = natural;
   dv->style_can_stop = can_stop;
+  smgi_idle_choose(g, &dv->idle);
   g->derived = dv;
   return SMG_OK;
 }

@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "graph_internal.h"
+#include "idle.h"
 #include "tuning.h"
 
 #define SMGI_HOPS_UNREACHABLE 255u
@@ -67,6 +68,8 @@ typedef struct smgi_derived {
    * from one foot to the other - a pose a character can come to rest on
    * (walks have them, runs with their flight phases do not). */
   const uint8_t* style_can_stop;
+  /* The standing motion played at rest (idle.h; count 0: none). */
+  smgi_idle idle;
 } smgi_derived;
 
 /* Build g->derived through g->allocator. The graph must be validated. */

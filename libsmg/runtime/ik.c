@@ -331,6 +331,7 @@ void smgi_ik_reset(smgi_ik* ik) {
     ik->feet[f].weight = 0.0f;
     ik->feet[f].landing = 0;
     ik->feet[f].let_go = 0;
+    ik->feet[f].guided = 0;
     ik->feet[f].toe[0] = ik->feet[f].toe[2] = 0.0f;
     ik->feet[f].toe[1] = INFINITY;
     ik->feet[f].floor_y = -INFINITY;
@@ -363,6 +364,14 @@ static float swing_lift(const smgi_foot* foot, float toe_y, float speed,
   return s * s * (3.0f - 2.0f * s) * lift;
 }
 
+void smgi_ik_guide(smgi_ik* ik, uint32_t f, float x, float z, float raise) {
+  smgi_foot* foot = &ik->feet[f & 1u];
+  foot->guided = 1;
+  foot->guide[0] = x;
+  foot->guide[1] = z;
+  foot->guide[2] = raise;
+}
+
 void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
                    float dt) {
   if (!ik->enabled) {
@@ -380,7 +389,17 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
     /* the planted point: the toe when the skeleton has one */
     uint32_t toe = legs[f][3] < g->data.joint_count ? legs[f][3] : ankle;
     const float* ap = pose->wpos + 3u * toe;
-    int contact = (pose->contacts & bits[f]) != 0;
+    int contact = (pose->contacts & bits[f]) || foot->guided;
+    if (foot->guided) {
+      /* placed by the caller: planted where it says, no landing to
+       * follow and no drift to let go of */
+      foot->planted = 1;
+      foot->landing = 0;
+      foot->let_go = 0;
+      foot->anchor[0] = foot->guide[0];
+      foot->anchor[1] = ap[1];
+      foot->anchor[2] = foot->guide[1];
+    }
     if (foot->weight <= 0.0f) foot->let_go = 0;
     if (contact && !foot->planted && !foot->let_go) {
       foot->planted = 1;
@@ -431,7 +450,7 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
       travel = sqrtf(sx * sx + sz * sz);
     }
     memcpy(foot->toe, ap, sizeof foot->toe);
-    if (foot->planted) {
+    if (foot->planted && !foot->guided) {
       float dx = foot->anchor[0] - ap[0], dz = foot->anchor[2] - ap[2];
       float lim = SMGI_IK_RELEASE * info->leg_length;
       if (dx * dx + dz * dz > lim * lim) {
@@ -469,7 +488,8 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
        * at the animation's height (the data's feet are on the data's
        * floor; IK only stops them sliding) */
       const float* an = pose->wpos + 3u * ankle;
-      float target[3] = {foot->anchor[0] + an[0] - ap[0], an[1],
+      float target[3] = {foot->anchor[0] + an[0] - ap[0],
+                         an[1] + (foot->guided ? foot->guide[2] : 0.0f),
                          foot->anchor[2] + an[2] - ap[2]};
       solve_leg(ik, pose, g, f, target, w, foot->fix);
     } else {
@@ -513,5 +533,6 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
     }
     foot->shown[0] = ap[0];
     foot->shown[1] = ap[2];
+    foot->guided = 0;
   }
 }

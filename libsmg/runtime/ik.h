@@ -31,6 +31,9 @@ typedef struct smgi_foot {
                           too far): not planted again before the weight
                           is back to 0 or the contact ends */
   float weight;        /* IK blend weight 0..1 */
+  uint32_t guided;     /* placed by the caller this step (smgi_ik_guide) */
+  float guide[3];      /* where: toe x, z and the ankle's raise above the
+                          animation */
   float fix[2][4];     /* world-space hip and knee rotations the last solve
                           added (identity when the foot was not solved): the
                           next solve starts from them */
@@ -64,6 +67,11 @@ void smgi_ik_reset(smgi_ik* ik);
 /* Anchor feet in contact and solve their legs on the pose: its local
  * rotations and the cached world transforms (kept true for every joint
  * moved). */
+/* For the next smgi_ik_apply only: hold foot f's toe at (x, z), its ankle
+ * `raise` metres above where the animation has it, whatever the contact
+ * labels say (rest.c places the feet of a character coming to rest or
+ * turning on the spot); the foot stays planted there afterwards. */
+void smgi_ik_guide(smgi_ik* ik, uint32_t f, float x, float z, float raise);
 void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
                    float dt);
 

@@ -26,11 +26,12 @@
  * anchor while the body turns and slides above it.
  *
  * Coming to rest: near the end, the stage picks the queued frame with both
- * feet down whose root lands nearest the last point (a frame with one foot
- * down, or any, when the data has none) and slows the playback down onto
- * it with constant deceleration, sliding the remaining offset out on the
- * way. There it holds the pose (the graph need not contain standing
- * motion) until the path changes. Where the path turns too tightly for the
+ * feet down from which the settling step (rest.c) brings the hips nearest
+ * the last point (a frame with one foot down, or any, when the data has
+ * none: by its root) and slows the playback down onto it, never below
+ * SMGI_STEER_BRAKE_FLOOR of real time, sliding the remaining offset out on
+ * the way. There the playhead stays (the rest stage stands the character)
+ * until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the character slows down: the
  * playback to no less than SMGI_STEER_RATE_MIN (slower is slow motion),
  * the rest by shorter strides (part of each step's travel slid back,
@@ -45,6 +46,7 @@
  */
 #include <math.h>
 
+#include "rest.h"
 #include "steer.h"
 
 /* v moved towards target by at most step. */
@@ -78,6 +80,10 @@ void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
 }
 
 void smgi_steer_path_changed(smgi_steer* s) {
+  /* from rest the first step plays at a natural cadence, not as a slow
+   * motion ramp from 0 */
+  if (s->mode == SMGI_STEER_REST && s->rate < SMGI_STEER_BRAKE_FLOOR)
+    s->rate = SMGI_STEER_BRAKE_FLOOR;
   s->mode = SMGI_STEER_FOLLOW;
   s->heading_seg = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
@@ -113,6 +119,22 @@ static int frame_ground(const smgi_lower* lower, const smg_graph* g,
                 x, z);
   if (flags) *flags = f->flags;
   return 1;
+}
+
+/* (x, z), the ground point of the frame k frames after the playhead,
+ * moved on to where the hips come to stand when the character stops on
+ * that frame: the settling step (rest.c). */
+static void frame_stand(const smgi_lower* lower, const smg_graph* g,
+                        uint32_t k, float* x, float* z) {
+  uint32_t entry, offset;
+  if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset)) return;
+  const smgi_qentry* q = smgi_q_at_c(lower, entry);
+  float dx, dz, wx, wz;
+  smgi_rest_settle_shift(g, g->data.lower_edges[q->edge].first_frame + offset,
+                         &dx, &dz);
+  smgi_rot2(smgi_q_placement(lower, entry).h, dx, dz, &wx, &wz);
+  *x += wx;
+  *z += wz;
 }
 
 /* Frames from the playhead to (seq, offset), or a negative value when the
@@ -159,12 +181,15 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
     uint32_t fl;
     if (!frame_ground(lower, g, k, &x, &z, &fl)) break;
-    float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
     /* both feet down: labelled so, or where the label passes from one
      * foot to the other (contact labels may leave no frame between the
      * two supports, though both feet are on the floor there) */
     int down = (fl & both) == both ||
                ((fl | prev) == both && (fl & both) != 0 && fl != prev);
+    /* where the hips will stand: on from the stop frame by the settling
+     * step, worked out for the frames it can start from */
+    if (down) frame_stand(lower, g, k, &x, &z);
+    float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
     if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
     prev = fl;
     if (d < best) {
@@ -274,6 +299,11 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
   float r = s->rate > SMGI_STEER_REST_RATE ? s->rate : SMGI_STEER_REST_RATE;
   float decel = left > 1e-3f ? in->fps * r * r / (2.0f * left) : INFINITY;
   float r1 = r - decel * dt;
+  /* never slow motion: the last step plays at no less than
+   * SMGI_STEER_BRAKE_FLOOR of real time, and the stage that takes over at
+   * rest (rest.c) lets the hips glide on over the feet */
+  if (r1 < SMGI_STEER_BRAKE_FLOOR && r >= SMGI_STEER_BRAKE_FLOOR)
+    r1 = SMGI_STEER_BRAKE_FLOOR;
   float frames = 0.5f * (r + (r1 > 0.0f ? r1 : 0.0f)) * full;
   if (r1 <= SMGI_STEER_REST_RATE || frames >= left) {
     s->mode = SMGI_STEER_REST;
@@ -330,6 +360,63 @@ static void lag_write(smgi_lower* lower) {
   smgi_lag_reset(&lower->lag);
 }
 
+/* Move the pose just composed and every queued placement by d (its c and
+ * s filled here): the plan moves with the character. */
+static void move(smgi_pose* pose, smgi_lower* lower, delta* d) {
+  const float gx = pose->ground[0], gz = pose->ground[1];
+  const float gh = pose->heading;
+  /* the half angle's sine and cosine give the pose's yaw quaternion and,
+   * by the double-angle formulas, the turn itself: one sincos a step */
+  float sh, chh;
+  smgi_sincosf(0.5f * d->da, &sh, &chh);
+  d->s = 2.0f * sh * chh;
+  d->c = 1.0f - 2.0f * sh * sh;
+  if (d->da == 0.0f && d->tx == 0.0f && d->tz == 0.0f) return;
+  /* the pose just composed (turned about d's pivot) ... */
+  float rx = pose->root[0] - d->px, rz = pose->root[2] - d->pz, q[4];
+  float ux = gx - d->px, uz = gz - d->pz;
+  const float yaw[4] = {0.0f, sh, 0.0f, chh};
+  pose->root[0] = d->px + d->c * rx + d->s * rz + d->tx;
+  pose->root[2] = d->pz - d->s * rx + d->c * rz + d->tz;
+  smgi_q_mul(yaw, pose->rot, q);
+  smgi_q_normalize(q);
+  pose->rot[0] = q[0];
+  pose->rot[1] = q[1];
+  pose->rot[2] = q[2];
+  pose->rot[3] = q[3];
+  pose->ground[0] = d->px + d->c * ux + d->s * uz + d->tx;
+  pose->ground[1] = d->pz - d->s * ux + d->c * uz + d->tz;
+  pose->heading = smgi_wrap_angle(gh + d->da);
+  /* ... and every queued placement, so the plan moves with it: the two
+   * entries the pose samples now, further ones when read (writing every
+   * planned entry every step was most of this stage's cache misses in
+   * a crowd) */
+  for (uint32_t i = 0; i < lower->count && i < 2u; ++i) {
+    smgi_qentry* e = smgi_q_at(lower, i);
+    delta_xf(d, &e->W);
+    delta_xf(d, &e->M);
+  }
+  if (lower->count > 2u) {
+    lag_follow(&lower->lag, d);
+    if (lower->lag.steps >= SMGI_STEER_LAG_STEPS) lag_write(lower);
+  } else {
+    smgi_lag_reset(&lower->lag);
+  }
+}
+
+void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
+                     float da, float px, float pz) {
+  delta d;
+  d.da = da;
+  d.px = px;
+  d.pz = pz;
+  d.tx = d.tz = 0.0f;
+  move(pose, lower, &d);
+  s->prev_x = pose->ground[0];
+  s->prev_z = pose->ground[1];
+  s->prev_h = pose->heading;
+}
+
 void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                       const smgi_step_in* in, float dt) {
   const smg_graph* g = in->graph;
@@ -380,6 +467,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
         float sx, sz;
         smgi_xf_point(smgi_q_placement(lower, entry), f->root2d[0],
                       f->root2d[1], &sx, &sz);
+        /* the hips then settle on by the settling step (rest.c) */
+        frame_stand(lower, g,
+                    (uint32_t)(lower->t - floorf(lower->t) + left + 0.5f),
+                    &sx, &sz);
         /* the rest of the braking lasts 2 * left / (fps * rate) */
         float remain =
             2.0f * left / (in->fps * (s->rate > 0.05f ? s->rate : 0.05f));
@@ -431,47 +522,11 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   const float back_z = (s->stride - 1.0f) * travel_z;
   delta d;
   d.da = s->turn * dt;
-  /* the half angle's sine and cosine give the pose's yaw quaternion and,
-   * by the double-angle formulas, the turn itself: one sincos a step */
-  float sh, chh;
-  smgi_sincosf(0.5f * d.da, &sh, &chh);
-  d.s = 2.0f * sh * chh;
-  d.c = 1.0f - 2.0f * sh * sh;
   d.px = gx;
   d.pz = gz;
   d.tx = s->slide[0] * dt + back_x;
   d.tz = s->slide[1] * dt + back_z;
-  if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
-    /* the pose just composed ... */
-    float rx = pose->root[0] - gx, rz = pose->root[2] - gz, q[4];
-    const float yaw[4] = {0.0f, sh, 0.0f, chh};
-    pose->root[0] = gx + d.c * rx + d.s * rz + d.tx;
-    pose->root[2] = gz - d.s * rx + d.c * rz + d.tz;
-    smgi_q_mul(yaw, pose->rot, q);
-    smgi_q_normalize(q);
-    pose->rot[0] = q[0];
-    pose->rot[1] = q[1];
-    pose->rot[2] = q[2];
-    pose->rot[3] = q[3];
-    pose->ground[0] = gx + d.tx;
-    pose->ground[1] = gz + d.tz;
-    pose->heading = smgi_wrap_angle(gh + d.da);
-    /* ... and every queued placement, so the plan moves with it: the two
-     * entries the pose samples now, further ones when read (writing every
-     * planned entry every step was most of this stage's cache misses in
-     * a crowd) */
-    for (uint32_t i = 0; i < lower->count && i < 2u; ++i) {
-      smgi_qentry* e = smgi_q_at(lower, i);
-      delta_xf(&d, &e->W);
-      delta_xf(&d, &e->M);
-    }
-    if (lower->count > 2u) {
-      lag_follow(&lower->lag, &d);
-      if (lower->lag.steps >= SMGI_STEER_LAG_STEPS) lag_write(lower);
-    } else {
-      smgi_lag_reset(&lower->lag);
-    }
-  }
+  move(pose, lower, &d);
   s->drift_turn += fabsf(d.da);
   /* shorter strides move the plan back along the path with the
    * character, not off it: no reason to choose the edges again */

@@ -82,6 +82,11 @@ void smgi_steer_replanned(smgi_steer* s);
  * the queue to choose the frame to come to rest on. */
 float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
                         const smgi_step_in* in, float dt);
+/* Turn the pose just composed and every queued placement by da radians
+ * about (px, pz): the character turns as a whole, its plan with it
+ * (rest.c: turning on the spot). */
+void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
+                     float da, float px, float pz);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
 void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,

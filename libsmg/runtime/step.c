@@ -112,7 +112,8 @@ smg_result smgi_step(smg_character* ch, float dt) {
     smgi_character_replan(ch);
     smgi_steer_replanned(&ch->steer);
   }
-  const float frames = smgi_steer_frames(&ch->steer, &ch->lower, &in, dt);
+  const float frames = smgi_rest_frames(
+      &ch->rest, smgi_steer_frames(&ch->steer, &ch->lower, &in, dt));
   /* planner: keep the horizon planned; this step's frames are guaranteed
    * whatever the budget */
   const smgi_steer_envelope env = smgi_steer_envelope_of(&ch->steer);
@@ -123,8 +124,11 @@ smg_result smgi_step(smg_character* ch, float dt) {
 
   /* upper body: time advance and crossfade, splice scheduling; entering
    * an action's edge anew starts synchronization afresh */
+  /* at rest the lower body stands still but an action goes on */
+  const float upper_frames =
+      ch->rest.phase != SMGI_REST_OFF ? dt * in.fps : frames;
   int entered = smgi_upper_advance(&ch->upper, g, &ch->rng, ch->pose.rot,
-                                   frames, ch->sync.rate, dt);
+                                   upper_frames, ch->sync.rate, dt);
   uint32_t key = smgi_q_at(&ch->lower, 0)->seq * 4096u + (uint32_t)ch->lower.t;
   int new_frame = key != ch->lower.last_frame;
   ch->lower.last_frame = key;
@@ -134,10 +138,17 @@ smg_result smgi_step(smg_character* ch, float dt) {
   if (new_frame) smgi_sync_update(&ch->sync, &ch->upper, &ch->lower, &in);
 
   smgi_pose_compose(&ch->pose, &ch->lower, &ch->upper, g);
-  smgi_steer_apply(&ch->steer, &ch->pose, &ch->lower, &in, dt);
+  if (smgi_rest_steers(&ch->rest))
+    smgi_steer_apply(&ch->steer, &ch->pose, &ch->lower, &in, dt);
+  /* standing still: settling, standing motion, turning on the spot */
+  const smgi_rest_io rest = {&in,       &ch->steer, &ch->pose,
+                             &ch->lower, &ch->ik,    ch->upper.action};
+  if (smgi_rest_pose(&ch->rest, &rest, dt)) smgi_character_replan(ch);
   /* world transforms are cached: IK needs them, and the getters then
    * only convert (model matrices) or copy (local pose) */
   smgi_fk(g, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);
+  smgi_rest_flatten(&ch->rest, &rest);
+  smgi_rest_feet(&ch->rest, &rest);
   smgi_ik_apply(&ch->ik, &ch->pose, g, dt);
   update_progress(ch);
   return SMG_OK;

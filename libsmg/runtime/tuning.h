@@ -175,6 +175,10 @@
                                     counts as this much further */
 #define SMGI_STEER_NO_FOOT 1.0f       /* ... with no foot down */
 #define SMGI_STEER_REST_RATE 0.03f    /* below this rate the stop is made */
+#define SMGI_STEER_BRAKE_FLOOR SMGI_STEER_RATE_MIN /* braking and starting
+                                         play at least this fraction of real
+                                         time: the one floor below which
+                                         playback reads as slow motion */
 #define SMGI_STEER_PLAN_WEIGHT 0.5f   /* the planner counts an error the
                                          steering can remove at this
                                          fraction of itself */
@@ -192,5 +196,33 @@
                                          distance searched for a stop */
 #define SMGI_STEER_HORIZON 1.0f       /* s planned ahead while steering
                                          follows, away from the end */
+
+/* ---- standing still (rest.c) ---- */
+#define SMGI_REST_FOOT_FLAT 0.15f /* s a standing foot takes to lie flat
+                                     (heel or toe down) */
+#define SMGI_REST_SETTLE_MIN 0.3f /* s the hips take to come to stand over
+                                     the feet (and the standing motion to
+                                     fade in), at least ... */
+#define SMGI_REST_SETTLE_MAX 1.0f /* ... and at most */
+#define SMGI_REST_STEP_SHARE 0.55f /* of that time the settling step takes
+                                      at most: the foot is down before the
+                                      hips' last few centimetres */
+#define SMGI_REST_FADE_OUT 0.6f  /* s: the standing motion and the glide
+                                    fade out as the walk begins */
+#define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at
+                                    most (6-7 cm) */
+#define SMGI_REST_STEP_OVER 0.7f /* of a step the foot moves over the
+                                    ground in (the middle: lifted) */
+#define SMGI_REST_GLIDE_MAX 0.6f /* leg lengths the hips glide at most */
+#define SMGI_REST_PURSUIT 1.0f   /* m along a new path: where to face */
+#define SMGI_REST_TURN_MIN 1.05f /* rad (60 deg): a path starting further
+                                    off the facing is met by turning on the
+                                    spot first */
+#define SMGI_REST_TURN_RATE 3.0f /* rad/s of turning on the spot, mean */
+#define SMGI_REST_TURN_STEP 1.6f /* rad of turn per step at most */
+#define SMGI_REST_REJOIN_SECONDS 0.2f /* s a lifted foot takes to join
+                                         the locomotion's */
+#define SMGI_REST_KEEP_SECONDS 1.5f /* s a foot stays where it stood when
+                                       walking on, at most */
 
 #endif /* SMG_TUNING_H */

@@ -1,0 +1,42 @@
+/*
+ * idle.h - the standing motion a character plays at rest, chosen once at
+ * load (idle.c, called by graph_derived.c) from the stretches standing.h
+ * finds in the pool: the longest one whose feet stand naturally close
+ * (toes at most SMGI_IDLE_STANCE leg lengths apart), one from a
+ * locomotion clip (the whole body stands) before one from an action.
+ */
+#ifndef SMG_IDLE_H
+#define SMG_IDLE_H
+
+#include <stdint.h>
+
+#include "graph_internal.h"
+
+#define SMGI_IDLE_STANCE 0.5f /* leg lengths between the toes, at most */
+#define SMGI_IDLE_SWING_DEFAULT 0.4f /* s a step takes in a graph without
+                                        labelled swings */
+
+typedef struct smgi_idle {
+  uint32_t first, count; /* pool frames; count 0: the graph has none */
+  uint32_t whole;        /* 1: from a locomotion clip, the whole body
+                            stands; 0: from an action performed standing,
+                            only its lower body is standing motion */
+  /* left and right toe (x, z) at `first`, in that frame's ground frame
+   * (FRMI root2d): where the feet stand relative to the hips */
+  float toe[2][2];
+  float floor;           /* the lower toe's height there (POSE space less
+                            the ground height): where the motion's floor is */
+  /* how long a foot swings in the graph's locomotion (median of its
+   * labelled swings, seconds): the steps made at rest take as long */
+  float swing_seconds;
+} smgi_idle;
+
+/* Clip-space position of joint j in pool frame f (the chain from the root
+ * composed joint by joint: a leg is a handful of joints). */
+void smgi_frame_joint(const smg_graph* g, uint32_t f, uint32_t j,
+                      float* out);
+/* Chooses g's idle motion (validated data). Bounded by the pool's size;
+ * no allocation. */
+void smgi_idle_choose(const smg_graph* g, smgi_idle* out);
+
+#endif /* SMG_IDLE_H */
