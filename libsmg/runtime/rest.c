@@ -485,8 +485,8 @@ void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io) {
       if (toe >= io->in->graph->data.joint_count) toe = f ? info->right_leg[2] : info->left_leg[2];
       const float* ap = io->pose->wpos + 3u * toe;
       /* the locomotion's foot has left the floor when its contact has
-       * ended and it moves over the ground like a swinging foot (some
-       * data slides the toe along the floor into the swing) */
+       * ended and it is lifted or moves over the ground like a swinging
+       * foot (some data slides the toe along the floor into the swing) */
       const smgi_foot* ft = &io->ik->feet[f];
       float speed = 0.0f;
       if (ft->toe[1] < INFINITY && r->dt > 0.0f)
@@ -494,7 +494,8 @@ void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io) {
                       (ap[2] - ft->toe[2]) * (ap[2] - ft->toe[2])) /
                 r->dt;
       if (!(io->pose->contacts & bits[f]) && r->rejoin[f] < 0.0f &&
-          speed > SMGI_IK_SWING_SLOW * info->leg_length)
+          (speed > SMGI_IK_SWING_SLOW * info->leg_length ||
+           ap[1] > ft->stand_y + SMGI_IK_CLEAR * info->leg_length))
         r->rejoin[f] = 0.0f;
       if (r->rejoin[f] < 0.0f) {
         smgi_ik_guide(io->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
