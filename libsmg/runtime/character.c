@@ -1,14 +1,18 @@
 /*
  * character.c - character lifetime (one allocation at create, carved into
- * every buffer the character will use), path edits, immediate controls,
- * per-frame entry point and the state/pose getters.
+ * every buffer the character will use), path and constraint edits,
+ * immediate controls, per-frame entry point and the state/pose getters.
+ * Arguments are validated here; their defaults are settled in
+ * settings.c; edits that invalidate the plan have it chosen again
+ * (smgi_character_replan, step.c).
  */
 #include <math.h>
 #include <string.h>
 
 #include "abi.h"
 #include "alloc.h"
-#include "character_internal.h"
+#include "character_state.h"
+#include "settings.h"
 
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
@@ -50,8 +54,8 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   l->total = o;
 }
 
-/* Steering limits: 0 (the default, resolved in steer.c so the setter
- * shares the rule) up to their maxima (false for NaN too). Finite is not
+/* Steering limits: 0 (the default, settled in settings.c, which the
+ * setter shares) up to their maxima (false for NaN too). Finite is not
  * enough: a stop time of 1e30 s made the braking frame count infinite, and
  * a slide ratio of 1000 moved the root at 1000 times the motion's speed
  * (both found by the runtime fuzz target). */
@@ -68,16 +72,8 @@ static int clearance_ok(float c) {
   return isfinite(c) && c >= 0.0f && c <= SMG_MAX_SWING_CLEARANCE;
 }
 
-/* The clearance swing clearance keeps, in metres (0: off); `clearance`
- * already checked by clearance_ok, 0 = the default. */
-static float swing_clearance_of(const smg_graph* g, uint32_t enabled,
-                                float clearance) {
-  if (!enabled) return 0.0f;
-  return clearance > 0.0f ? clearance
-                          : SMGI_IK_SWING_CLEAR * g->data.info->leg_length;
-}
-
-/* Resolve desc (NULL, partial struct_size) into a full one with defaults. */
+/* Resolve desc (NULL, partial struct_size) into a full one, validated;
+ * 0 still means the default (smgi_settle). */
 static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
                                smg_character_desc* d) {
   memset(d, 0, sizeof *d);
@@ -104,14 +100,9 @@ static smg_result resolve_desc(const smg_graph* g, const smg_character_desc* in,
       !limits_ok(d->steer_turn_rate, d->steer_slide_ratio, d->stop_seconds) ||
       !clearance_ok(d->swing_clearance))
     return SMG_ERROR_INVALID_ARGUMENT;
-  if (d->path_capacity == 0) d->path_capacity = SMGI_DEFAULT_PATH_CAPACITY;
-  if (d->constraint_capacity == 0)
-    d->constraint_capacity = SMGI_DEFAULT_CONSTRAINT_CAPACITY;
   if (d->path_capacity > SMGI_MAX_PATH_CAPACITY ||
       d->constraint_capacity > SMGI_MAX_CONSTRAINT_CAPACITY)
     return SMG_ERROR_INVALID_ARGUMENT;
-  if (d->horizon == 0.0f) d->horizon = SMGI_DEFAULT_HORIZON;
-  if (d->error_threshold == 0.0f) d->error_threshold = SMGI_DEFAULT_THRESHOLD;
   if ((d->allocator.alloc == NULL) != (d->allocator.free == NULL))
     return SMG_ERROR_INVALID_ARGUMENT;
   return SMG_OK;
@@ -124,9 +115,11 @@ SMG_API smg_result smg_character_memory_size(const smg_graph* graph,
   smg_character_desc d;
   smg_result r = resolve_desc(graph, desc, &d);
   if (r != SMG_OK) return r;
+  smgi_settings st;
+  smgi_settle(graph, &d, &st);
   layout l;
-  compute_layout(graph->data.joint_count, d.path_capacity,
-                 d.constraint_capacity, &l);
+  compute_layout(graph->data.joint_count, st.path_capacity,
+                 st.constraint_capacity, &l);
   *out_bytes = l.total;
   return SMG_OK;
 }
@@ -160,9 +153,11 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   smg_allocator a;
   r = smgi_allocator_resolve(&d.allocator, &a);
   if (r != SMG_OK) return r;
+  smgi_settings st;
+  smgi_settle(graph, &d, &st);
   const uint32_t J = graph->data.joint_count;
   layout l;
-  compute_layout(J, d.path_capacity, d.constraint_capacity, &l);
+  compute_layout(J, st.path_capacity, st.constraint_capacity, &l);
   uint8_t* mem = (uint8_t*)smgi_alloc(&a, l.total, 16);
   if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
   memset(mem, 0, l.total);
@@ -172,21 +167,19 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->joint_count = J;
   ch->flags = d.flags;
   ch->ik.enabled = (d.flags & SMG_CHARACTER_NO_IK) ? 0u : 1u;
-  ch->ik.swing_clearance = swing_clearance_of(
-      graph, (d.flags & SMG_CHARACTER_NO_SWING_CLEARANCE) ? 0u : 1u,
-      d.swing_clearance);
+  ch->ik.swing_clearance = st.swing_clearance;
+  ch->ik.swing_default = st.swing_default;
   smgi_steer_init(&ch->steer,
                   (d.flags & SMG_CHARACTER_NO_STEERING) ? 0u : 1u,
-                  d.steer_turn_rate, d.steer_slide_ratio, d.stop_seconds);
+                  st.turn_limit, st.slide_ratio, st.stop_seconds);
   ch->rng = d.seed ? d.seed : 0x9e3779b9u;
   ch->plan.phase = plan_phase(&d);
-  ch->plan.horizon = d.horizon;
-  ch->plan.error_threshold = d.error_threshold;
+  ch->plan.horizon = st.horizon;
+  ch->plan.error_threshold = st.error_threshold;
   ch->fps = graph->data.info->frame_rate;
-  float window = graph->data.info->window_seconds;
-  ch->upper.fade_rate = 1.0f / (window > 1e-3f ? window : SMGI_DEFAULT_WINDOW);
+  ch->upper.fade_rate = st.fade_rate;
   ch->cons.items = (smgi_constraint*)(mem + l.constraints);
-  ch->cons.capacity = d.constraint_capacity;
+  ch->cons.capacity = st.constraint_capacity;
   ch->cons.next_id = 1;
   ch->lower.queue = (smgi_qentry*)(mem + l.queue);
   ch->pose.rot = (float*)(mem + l.rot);
@@ -203,23 +196,29 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   smgi_ik_reset(&ch->ik);
   ch->path.xz = (float*)(mem + l.xz);
   ch->path.cum = (float*)(mem + l.cum);
-  ch->path.capacity = d.path_capacity;
+  ch->path.capacity = st.path_capacity;
   ch->cons.base_style = d.initial_style;
   ch->cons.base_action = d.initial_action;
   ch->cons.base_style_arc = -1.0f;
   ch->cons.base_action_arc = -1.0f;
   ch->anchor[0] = d.position[0];
   ch->anchor[1] = d.position[2];
-  ch->sync.rate = 1.0f;
-  ch->sync.error = NAN;
+  smgi_sync_reset(&ch->sync);
   ch->lower.last_frame = 0xffffffffu;
-  r = smgi_plan_start(ch, d.position[0], d.position[2], d.heading);
+  {
+    const smgi_step_in in = smgi_step_in_of(ch);
+    const smgi_steer_envelope env = smgi_steer_envelope_of(&ch->steer);
+    r = smgi_plan_start(&ch->plan, &ch->lower, &in, &env, &ch->rng,
+                        d.position[0], d.position[2], d.heading);
+  }
   if (r != SMG_OK) {
     smgi_free(&a, mem);
     return r;
   }
   smgi_graph_retain(graph);
-  smgi_upper_start(ch);
+  smgi_upper_start(&ch->upper, graph, &ch->rng, ch->pose.rot,
+                   ch->cons.base_action);
+  smgi_sync_reset(&ch->sync);
   /* a valid pose before the first step */
   smgi_step(ch, 0.0f);
   *out_character = ch;
@@ -253,7 +252,7 @@ SMG_API smg_result smg_character_set_path(smg_character* ch, const float* xz,
   ch->cons.base_action_arc = ch->cons.base_action_arc < 0.0f ? -1.0f : 0.0f;
   ch->end_reached = 0;
   smgi_steer_path_changed(&ch->steer);
-  smgi_replan(ch);
+  smgi_character_replan(ch);
   return SMG_OK;
 }
 
@@ -275,7 +274,7 @@ SMG_API smg_result smg_character_append_path(smg_character* ch,
   }
   ch->end_reached = 0;
   smgi_steer_path_changed(&ch->steer);
-  smgi_replan(ch);
+  smgi_character_replan(ch);
   return SMG_OK;
 }
 
@@ -295,7 +294,7 @@ SMG_API smg_result smg_character_clear_path(smg_character* ch) {
   smgi_xform2 end = smgi_xf_mul(h->W, d);
   ch->anchor[0] = end.x;
   ch->anchor[1] = end.z;
-  smgi_replan(ch);
+  smgi_character_replan(ch);
   return SMG_OK;
 }
 
@@ -303,6 +302,57 @@ SMG_API smg_result smg_character_get_path_length(const smg_character* ch,
                                                  float* out_length) {
   if (!ch || !out_length) return SMG_ERROR_INVALID_ARGUMENT;
   *out_length = ch->path.length;
+  return SMG_OK;
+}
+
+/* ---- constraints (constraints.c holds them) ---- */
+
+SMG_API smg_result smg_character_add_transition(smg_character* ch, float arc,
+                                                uint32_t style,
+                                                uint32_t* out_id) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!isfinite(arc)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (style >= ch->graph->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
+  smg_result r = smgi_constraints_add(&ch->cons, ch->path.length, arc,
+                                      SMGI_CONSTRAINT_TRANSITION, style,
+                                      out_id);
+  if (r == SMG_OK) smgi_character_replan(ch);
+  return r;
+}
+
+SMG_API smg_result smg_character_add_splice(smg_character* ch, float arc,
+                                            uint32_t action,
+                                            uint32_t* out_id) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!isfinite(arc)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (action >= ch->graph->data.action_count)
+    return SMG_ERROR_UNKNOWN_ACTION;
+  smg_result r = smgi_constraints_add(&ch->cons, ch->path.length, arc,
+                                      SMGI_CONSTRAINT_SPLICE, action, out_id);
+  if (r == SMG_OK) smgi_character_replan(ch);
+  return r;
+}
+
+SMG_API smg_result smg_character_move_constraint(smg_character* ch,
+                                                 uint32_t id, float arc) {
+  if (!ch || id == 0) return SMG_ERROR_INVALID_ARGUMENT;
+  smg_result r = smgi_constraints_move(&ch->cons, ch->path.length, id, arc);
+  if (r == SMG_OK) smgi_character_replan(ch);
+  return r;
+}
+
+SMG_API smg_result smg_character_remove_constraint(smg_character* ch,
+                                                   uint32_t id) {
+  if (!ch || id == 0) return SMG_ERROR_INVALID_ARGUMENT;
+  smg_result r = smgi_constraints_remove(&ch->cons, id);
+  if (r == SMG_OK) smgi_character_replan(ch);
+  return r;
+}
+
+SMG_API smg_result smg_character_clear_constraints(smg_character* ch) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  smgi_constraints_clear(&ch->cons);
+  smgi_character_replan(ch);
   return SMG_OK;
 }
 
@@ -314,7 +364,7 @@ SMG_API smg_result smg_character_set_style(smg_character* ch,
   if (style >= ch->graph->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
   ch->cons.base_style = style;
   ch->cons.base_style_arc = ch->progress;
-  smgi_replan(ch);
+  smgi_character_replan(ch);
   return SMG_OK;
 }
 
@@ -333,8 +383,13 @@ SMG_API smg_result smg_character_set_error_threshold(smg_character* ch,
                                                      float metres) {
   if (!ch || !isfinite(metres) || metres < 0.0f)
     return SMG_ERROR_INVALID_ARGUMENT;
-  ch->plan.error_threshold = metres > 0.0f ? metres : SMGI_DEFAULT_THRESHOLD;
-  smgi_replan(ch);
+  smg_character_desc d;
+  smgi_settings st;
+  memset(&d, 0, sizeof d);
+  d.error_threshold = metres;
+  smgi_settle(ch->graph, &d, &st);
+  ch->plan.error_threshold = st.error_threshold;
+  smgi_character_replan(ch);
   return SMG_OK;
 }
 
@@ -358,7 +413,13 @@ SMG_API smg_result smg_character_set_swing_clearance(smg_character* ch,
                                                      uint32_t enabled,
                                                      float clearance) {
   if (!ch || !clearance_ok(clearance)) return SMG_ERROR_INVALID_ARGUMENT;
-  ch->ik.swing_clearance = swing_clearance_of(ch->graph, enabled, clearance);
+  smg_character_desc d;
+  smgi_settings st;
+  memset(&d, 0, sizeof d);
+  d.flags = enabled ? 0u : SMG_CHARACTER_NO_SWING_CLEARANCE;
+  d.swing_clearance = clearance;
+  smgi_settle(ch->graph, &d, &st);
+  ch->ik.swing_clearance = st.swing_clearance;
   return SMG_OK;
 }
 
@@ -368,7 +429,15 @@ SMG_API smg_result smg_character_set_steering_limits(smg_character* ch,
                                                      float stop_seconds) {
   if (!ch || !limits_ok(turn_rate, slide_ratio, stop_seconds))
     return SMG_ERROR_INVALID_ARGUMENT;
-  smgi_steer_set_limits(&ch->steer, turn_rate, slide_ratio, stop_seconds);
+  smg_character_desc d;
+  smgi_settings st;
+  memset(&d, 0, sizeof d);
+  d.steer_turn_rate = turn_rate;
+  d.steer_slide_ratio = slide_ratio;
+  d.stop_seconds = stop_seconds;
+  smgi_settle(ch->graph, &d, &st);
+  smgi_steer_set_limits(&ch->steer, st.turn_limit, st.slide_ratio,
+                        st.stop_seconds);
   return SMG_OK;
 }
 

@@ -2,11 +2,13 @@
  * constraints.c - transition points (lower-body style from an arc length
  * on) and splice points (upper-body action from an arc length on). A small
  * fixed array (capacity chosen at create) scanned linearly: with tens of
- * constraints a scan is cheaper than keeping anything sorted.
+ * constraints a scan is cheaper than keeping anything sorted. Data only:
+ * the API (character.c) validates, edits through these and has the plan
+ * chosen again.
  */
 #include <math.h>
 
-#include "character_internal.h"
+#include "constraints.h"
 
 #define ARC_SLACK 1e-4f /* tolerance when comparing with the path length */
 
@@ -47,83 +49,51 @@ float smgi_next_constraint_arc(const smgi_constraints* c, float s) {
   return next;
 }
 
-static smg_result check_arc(const smg_character* ch, float arc) {
+static smg_result check_arc(float path_length, float arc) {
   if (!isfinite(arc)) return SMG_ERROR_INVALID_ARGUMENT;
-  if (arc < 0.0f || arc > ch->path.length + ARC_SLACK)
+  if (arc < 0.0f || arc > path_length + ARC_SLACK)
     return SMG_ERROR_OUT_OF_RANGE;
   return SMG_OK;
 }
 
-static smg_result add(smg_character* ch, float arc, uint32_t kind,
-                      uint32_t value, uint32_t* out_id) {
-  smg_result r = check_arc(ch, arc);
+smg_result smgi_constraints_add(smgi_constraints* c, float path_length,
+                                float arc, uint32_t kind, uint32_t value,
+                                uint32_t* out_id) {
+  smg_result r = check_arc(path_length, arc);
   if (r != SMG_OK) return r;
-  if (ch->cons.count >= ch->cons.capacity)
-    return SMG_ERROR_CAPACITY;
-  smgi_constraint* c = &ch->cons.items[ch->cons.count++];
-  c->id = ch->cons.next_id++;
-  if (ch->cons.next_id == 0) ch->cons.next_id = 1; /* ids stay > 0 after wrap */
-  c->kind = kind;
-  c->value = value;
-  c->arc = arc;
-  if (out_id) *out_id = c->id;
-  smgi_replan(ch);
+  if (c->count >= c->capacity) return SMG_ERROR_CAPACITY;
+  smgi_constraint* k = &c->items[c->count++];
+  k->id = c->next_id++;
+  if (c->next_id == 0) c->next_id = 1; /* ids stay > 0 after wrap */
+  k->kind = kind;
+  k->value = value;
+  k->arc = arc;
+  if (out_id) *out_id = k->id;
   return SMG_OK;
 }
 
-SMG_API smg_result smg_character_add_transition(smg_character* ch, float arc,
-                                                uint32_t style,
-                                                uint32_t* out_id) {
-  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
-  if (!isfinite(arc)) return SMG_ERROR_INVALID_ARGUMENT;
-  if (style >= ch->graph->data.style_count) return SMG_ERROR_UNKNOWN_STYLE;
-  return add(ch, arc, SMGI_CONSTRAINT_TRANSITION, style, out_id);
-}
-
-SMG_API smg_result smg_character_add_splice(smg_character* ch, float arc,
-                                            uint32_t action,
-                                            uint32_t* out_id) {
-  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
-  if (!isfinite(arc)) return SMG_ERROR_INVALID_ARGUMENT;
-  if (action >= ch->graph->data.action_count)
-    return SMG_ERROR_UNKNOWN_ACTION;
-  return add(ch, arc, SMGI_CONSTRAINT_SPLICE, action, out_id);
-}
-
-static smgi_constraint* find(smg_character* ch, uint32_t id) {
-  for (uint32_t i = 0; i < ch->cons.count; ++i)
-    if (ch->cons.items[i].id == id) return &ch->cons.items[i];
+static smgi_constraint* find(smgi_constraints* c, uint32_t id) {
+  for (uint32_t i = 0; i < c->count; ++i)
+    if (c->items[i].id == id) return &c->items[i];
   return NULL;
 }
 
-SMG_API smg_result smg_character_move_constraint(smg_character* ch,
-                                                 uint32_t id, float arc) {
-  if (!ch || id == 0) return SMG_ERROR_INVALID_ARGUMENT;
-  smg_result r = check_arc(ch, arc);
+smg_result smgi_constraints_move(smgi_constraints* c, float path_length,
+                                 uint32_t id, float arc) {
+  smg_result r = check_arc(path_length, arc);
   if (r != SMG_OK) return r;
-  smgi_constraint* c = find(ch, id);
-  if (!c) return SMG_ERROR_NOT_FOUND;
-  c->arc = arc;
-  smgi_replan(ch);
+  smgi_constraint* k = find(c, id);
+  if (!k) return SMG_ERROR_NOT_FOUND;
+  k->arc = arc;
   return SMG_OK;
 }
 
-SMG_API smg_result smg_character_remove_constraint(smg_character* ch,
-                                                   uint32_t id) {
-  if (!ch || id == 0) return SMG_ERROR_INVALID_ARGUMENT;
-  smgi_constraint* c = find(ch, id);
-  if (!c) return SMG_ERROR_NOT_FOUND;
+smg_result smgi_constraints_remove(smgi_constraints* c, uint32_t id) {
+  smgi_constraint* k = find(c, id);
+  if (!k) return SMG_ERROR_NOT_FOUND;
   /* keep insertion order: ties between equal arcs stay deterministic */
-  smgi_constraint* end = ch->cons.items + ch->cons.count;
-  for (smgi_constraint* p = c; p + 1 < end; ++p) p[0] = p[1];
-  ch->cons.count--;
-  smgi_replan(ch);
-  return SMG_OK;
-}
-
-SMG_API smg_result smg_character_clear_constraints(smg_character* ch) {
-  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
-  ch->cons.count = 0;
-  smgi_replan(ch);
+  smgi_constraint* end = c->items + c->count;
+  for (smgi_constraint* p = k; p + 1 < end; ++p) p[0] = p[1];
+  c->count--;
   return SMG_OK;
 }

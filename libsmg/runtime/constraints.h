@@ -4,12 +4,14 @@
  * points (upper-body action from an arc length on), plus the style and
  * action set directly (smg_character_set_style/_action), which hold from
  * where they were set. The planner, the upper body and synchronization
- * only read this.
+ * only read this; the API edits it (character.c).
  */
 #ifndef SMG_CONSTRAINTS_H
 #define SMG_CONSTRAINTS_H
 
 #include <stdint.h>
+
+#include "smg.h"
 
 #define SMGI_CONSTRAINT_TRANSITION 0u
 #define SMGI_CONSTRAINT_SPLICE 1u
@@ -36,5 +38,17 @@ uint32_t smgi_style_at(const smgi_constraints* c, float s);
 uint32_t smgi_action_at(const smgi_constraints* c, float s, float* out_arc);
 /* Arc of the first constraint strictly after s, or +infinity. */
 float smgi_next_constraint_arc(const smgi_constraints* c, float s);
+
+/* Edits. An arc must be finite (else SMG_ERROR_INVALID_ARGUMENT) and lie
+ * on a path `path_length` long (else SMG_ERROR_OUT_OF_RANGE). */
+smg_result smgi_constraints_add(smgi_constraints* c, float path_length,
+                                float arc, uint32_t kind, uint32_t value,
+                                uint32_t* out_id);
+smg_result smgi_constraints_move(smgi_constraints* c, float path_length,
+                                 uint32_t id, float arc);
+smg_result smgi_constraints_remove(smgi_constraints* c, uint32_t id);
+static inline void smgi_constraints_clear(smgi_constraints* c) {
+  c->count = 0;
+}
 
 #endif /* SMG_CONSTRAINTS_H */

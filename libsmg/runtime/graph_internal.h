@@ -53,7 +53,7 @@ typedef enum smgi_joint_set {
 /* out[4j .. 4j+4) = nlerp of joint j's rotations in POSE records ra and rb
  * at t, for the joints of `set` (others untouched); packed rotations are
  * decoded straight into the nlerp, four joints at a time where four
- * consecutive joints are wanted (pose.c). */
+ * consecutive joints are wanted (graph_sample.c). */
 void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
                         const unsigned char* rb, float t,
                         smgi_joint_set set, float* out);

@@ -32,7 +32,11 @@
 #include <math.h>
 #include <string.h>
 
-#include "character_internal.h"
+#include "ik.h"
+
+#include "pose.h"
+#include "rmath.h"
+#include "tuning.h"
 #include "simd.h"
 
 #ifndef IK_SSE /* -DIK_SSE=0 builds the plain C path */
@@ -143,16 +147,17 @@ static inline void hip_turn(float* a, float* b, const float* t, float d2,
  * foot's previous corrections: while a foot is planted the target hardly
  * moves between steps, so CCD starts next to the answer and its sweeps add
  * up across steps instead of restarting from the raw animation. */
-static void solve_leg(smg_character* ch, uint32_t f, const float* target,
+static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
+                      uint32_t f, const float* target,
                       float w, float (*fix)[4]) {
-  const smgi_joint* joints = ch->graph->data.joints;
-  const uint32_t* list = ch->ik.leg_joints + (size_t)f * ch->joint_count;
+  const smgi_joint* joints = g->data.joints;
+  const uint32_t* list = ik->leg_joints + (size_t)f * g->data.joint_count;
   const uint32_t hip = list[0], knee = list[1], ankle = list[2];
-  smgi_foot* foot = &ch->ik.feet[f];
+  smgi_foot* foot = &ik->feet[f];
   const uint32_t hp = (uint32_t)joints[hip].parent;
-  const float* p0 = ch->pose.wpos + 3u * hip;
-  const float* p1 = ch->pose.wpos + 3u * knee;
-  const float* p2 = ch->pose.wpos + 3u * ankle;
+  const float* p0 = pose->wpos + 3u * hip;
+  const float* p1 = pose->wpos + 3u * knee;
+  const float* p2 = pose->wpos + 3u * ankle;
   float a0[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
   float b0[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
   float t[3] = {target[0] - p0[0], target[1] - p0[1], target[2] - p0[2]};
@@ -243,29 +248,29 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   /* back to local rotations, blended with the animation by w; the ankle
    * keeps its animated world orientation */
   float r0[4], r1[4], inv[4], local[4];
-  float* wrot = ch->pose.wrot;
+  float* wrot = pose->wrot;
   qmul(Th, wrot + 4u * hip, r0);
   qmul(Tk, wrot + 4u * knee, r1);
   smgi_q_conj(wrot + 4u * hp, inv);
   qmul(inv, r0, local);
-  blend_local(ch->pose.rot + 4u * hip, local, w);
+  blend_local(pose->rot + 4u * hip, local, w);
   smgi_q_conj(r0, inv);
   qmul(inv, r1, local);
-  blend_local(ch->pose.rot + 4u * knee, local, w);
+  blend_local(pose->rot + 4u * knee, local, w);
   smgi_q_conj(r1, inv);
   qmul(inv, wrot + 4u * ankle, local);
-  blend_local(ch->pose.rot + 4u * ankle, local, w);
+  blend_local(pose->rot + 4u * ankle, local, w);
 
   /* keep the world transform cache true for every joint IK moved */
-  const uint32_t side = ch->ik.leg_side[f], below = ch->ik.leg_below[f];
+  const uint32_t side = ik->leg_side[f], below = ik->leg_below[f];
   if (w < 1.0f) { /* blended: the solve's transforms are not the pose's */
-    smgi_fk_joints(ch, list, 3u + side + below);
+    smgi_fk_joints(pose, g, list, 3u + side + below);
     return;
   }
   /* At full weight the solve already has the pose's hip and knee (what FK
    * of the new local rotations gives, to rounding) and the ankle keeps its
    * world rotation, so joints below it only move with it. */
-  float* wpos = ch->pose.wpos;
+  float* wpos = pose->wpos;
   memcpy(wrot + 4u * hip, r0, sizeof r0);
   memcpy(wrot + 4u * knee, r1, sizeof r1);
   const float ax = p0[0] + a[0] + b[0], ay = p0[1] + a[1] + b[1],
@@ -277,7 +282,7 @@ static void solve_leg(smg_character* ch, uint32_t f, const float* target,
   wpos[3u * ankle] = ax;
   wpos[3u * ankle + 1u] = ay;
   wpos[3u * ankle + 2u] = az;
-  smgi_fk_joints(ch, list + 3, side);
+  smgi_fk_joints(pose, g, list + 3, side);
   for (uint32_t i = 3u + side; i < 3u + side + below; ++i) {
     float* p = wpos + 3u * list[i];
     p[0] += dx;
@@ -358,23 +363,24 @@ static float swing_lift(const smgi_foot* foot, float toe_y, float speed,
   return s * s * (3.0f - 2.0f * s) * lift;
 }
 
-void smgi_ik_apply(smg_character* ch, float dt) {
-  if (!ch->ik.enabled) {
-    smgi_ik_reset(&ch->ik);
+void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
+                   float dt) {
+  if (!ik->enabled) {
+    smgi_ik_reset(ik);
     return;
   }
-  const smgi_info* info = ch->graph->data.info;
+  const smgi_info* info = g->data.info;
   const uint32_t bits[2] = {SMG_STATE_LEFT_CONTACT, SMG_STATE_RIGHT_CONTACT};
   const uint32_t* legs[2] = {info->left_leg, info->right_leg};
   const float step_in = dt / SMGI_IK_BLEND;
   for (uint32_t f = 0; f < 2u; ++f) {
-    smgi_foot* foot = &ch->ik.feet[f];
-    if (!ch->ik.leg_ok[f]) continue;
+    smgi_foot* foot = &ik->feet[f];
+    if (!ik->leg_ok[f]) continue;
     uint32_t ankle = legs[f][2];
     /* the planted point: the toe when the skeleton has one */
-    uint32_t toe = legs[f][3] < ch->joint_count ? legs[f][3] : ankle;
-    const float* ap = ch->pose.wpos + 3u * toe;
-    int contact = (ch->pose.contacts & bits[f]) != 0;
+    uint32_t toe = legs[f][3] < g->data.joint_count ? legs[f][3] : ankle;
+    const float* ap = pose->wpos + 3u * toe;
+    int contact = (pose->contacts & bits[f]) != 0;
     if (foot->weight <= 0.0f) foot->let_go = 0;
     if (contact && !foot->planted && !foot->let_go) {
       foot->planted = 1;
@@ -462,10 +468,10 @@ void smgi_ik_apply(smg_character* ch, float dt) {
       /* ankle target: the animated ankle-from-toe offset at the anchor,
        * at the animation's height (the data's feet are on the data's
        * floor; IK only stops them sliding) */
-      const float* an = ch->pose.wpos + 3u * ankle;
+      const float* an = pose->wpos + 3u * ankle;
       float target[3] = {foot->anchor[0] + an[0] - ap[0], an[1],
                          foot->anchor[2] + an[2] - ap[2]};
-      solve_leg(ch, f, target, w, foot->fix);
+      solve_leg(ik, pose, g, f, target, w, foot->fix);
     } else {
       /* a later contact starts from the animation again */
       memcpy(foot->fix[0], k_identity, sizeof k_identity);
@@ -485,11 +491,11 @@ void smgi_ik_apply(smg_character* ch, float dt) {
       const float sx = ap[0] - foot->shown[0], sz = ap[2] - foot->shown[1];
       speed = sqrtf(sx * sx + sz * sz) / dt;
     }
-    const float c = ch->ik.swing_clearance;
+    const float c = ik->swing_clearance;
     const float want = swing_lift(foot, ap[1], speed, c, info->leg_length);
     /* rates on the scale of the clearance, at least the default's: a
      * lift left when the clearance is turned off (c = 0) still returns */
-    float scale = SMGI_IK_SWING_CLEAR * info->leg_length;
+    float scale = ik->swing_default;
     if (c > scale) scale = c;
     const float most = foot->lift + scale * dt / SMGI_IK_SWING_RISE;
     const float least = foot->lift - scale * dt / SMGI_IK_SWING_FALL;
@@ -498,12 +504,12 @@ void smgi_ik_apply(smg_character* ch, float dt) {
       /* on top of whatever the contact solve left: the whole foot up by
        * the lift, from the pose as it is now, not from the contact's
        * correction */
-      const float* an = ch->pose.wpos + 3u * ankle;
+      const float* an = pose->wpos + 3u * ankle;
       const float target[3] = {an[0], an[1] + foot->lift, an[2]};
       float fix[2][4];
       memcpy(fix[0], k_identity, sizeof k_identity);
       memcpy(fix[1], k_identity, sizeof k_identity);
-      solve_leg(ch, f, target, 1.0f, fix);
+      solve_leg(ik, pose, g, f, target, 1.0f, fix);
     }
     foot->shown[0] = ap[0];
     foot->shown[1] = ap[2];

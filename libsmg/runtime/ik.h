@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "graph_internal.h"
+#include "pose.h"
 #include "smg.h"
 
 typedef struct smgi_foot {
@@ -39,6 +40,10 @@ typedef struct smgi_ik {
   uint32_t enabled;
   float swing_clearance; /* metres a fast swinging toe keeps above its
                             floor (0: none) */
+  float swing_default;   /* the default clearance for this skeleton
+                            (settings.c): the lift's rates scale with at
+                            least this, so a lift left when clearance is
+                            turned off still returns */
   smgi_foot feet[2];
   /* 2J: per leg f at f*J, the joints whose world transforms IK changes,
    * parents first: hip, knee, ankle, then the hip's other descendants not
@@ -56,7 +61,10 @@ typedef struct smgi_ik {
 void smgi_ik_init_legs(smgi_ik* ik, const smg_graph* g, uint8_t* mark);
 /* Feet unplanted, with no correction to start the next solve from. */
 void smgi_ik_reset(smgi_ik* ik);
-/* Anchor feet in contact and solve their legs on the character's pose. */
-void smgi_ik_apply(smg_character* ch, float dt);
+/* Anchor feet in contact and solve their legs on the pose: its local
+ * rotations and the cached world transforms (kept true for every joint
+ * moved). */
+void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
+                   float dt);
 
 #endif /* SMG_IK_H */

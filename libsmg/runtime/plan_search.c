@@ -1,7 +1,8 @@
 /*
  * plan_search.c - the planner's sequence search (Kovar et al. 2002 path
  * synthesis, bounded for a per-frame budget; plan_search.h says what it
- * computes). Everything here reads the character; nothing writes it.
+ * computes). It reads the step's inputs and the steering envelope
+ * copied into the search context; it writes only the context.
  */
 #include "plan_search.h"
 
@@ -66,20 +67,19 @@ static void extend_past_end(const smgi_path* p, float beyond, float* x,
 }
 
 /* Where to stay when there is nothing (more) to follow. */
-static void end_target(const smg_character* ch, float* x, float* z) {
-  const smgi_path* p = &ch->path;
+static void end_target(const smgi_step_in* in, float* x, float* z) {
+  const smgi_path* p = in->path;
   if (p->count > 0) {
     *x = p->xz[2u * (p->count - 1u)];
     *z = p->xz[2u * (p->count - 1u) + 1u];
   } else {
-    *x = ch->anchor[0];
-    *z = ch->anchor[1];
+    *x = in->anchor[0];
+    *z = in->anchor[1];
   }
 }
 
-static float style_penalty(const smg_character* ch, const smgi_edge* e,
+static float style_penalty(const smg_graph* g, const smgi_edge* e,
                            uint32_t desired) {
-  const smg_graph* g = ch->graph;
   uint32_t S = g->data.style_count;
   if (desired >= S || e->label == desired) return 0.0f;
   const uint8_t* hops = smgi_derived_of(g)->lower_hops;
@@ -91,30 +91,29 @@ static float style_penalty(const smg_character* ch, const smgi_edge* e,
 }
 
 /* Distance of a planned ground position from the path point at s. */
-float smgi_plan_start_error(const smg_character* ch, smgi_xform2 W, float s,
-                         uint32_t seg) {
-  if (ch->path.count < 2u) return 0.0f;
+float smgi_plan_start_error(const smgi_path* path, smgi_xform2 W, float s,
+                            uint32_t seg) {
+  if (path->count < 2u) return 0.0f;
   float x, z;
-  smgi_path_eval(&ch->path, s, &seg, &x, &z, NULL);
+  smgi_path_eval(path, s, &seg, &x, &z, NULL);
   return sqrtf((W.x - x) * (W.x - x) + (W.z - z) * (W.z - z));
 }
 
 /* An edge that spans arc lengths [s0, s1] is in style if its label is
  * wanted at either end: transition edges cross the point where the style
  * changes, and an edge ending exactly on a transition point is fine. */
-static float edge_style_penalty(const smg_character* ch, const smgi_edge* e,
+static float edge_style_penalty(const smgi_seq_ctx* c, const smgi_edge* e,
                                 float s0, float s1) {
-  uint32_t a = smgi_style_at(&ch->cons, s0), b = smgi_style_at(&ch->cons, s1);
+  uint32_t a = smgi_style_at(c->cons, s0), b = smgi_style_at(c->cons, s1);
   if (e->label == a || e->label == b) return 0.0f;
-  return style_penalty(ch, e, b);
+  return style_penalty(c->g, e, b);
 }
 
 /* Lost (far off the path): the wanted style yields to the graph's most
  * agile one until the path is rejoined - a style that cannot turn (CMU
  * runs) would otherwise carry the character away for good. */
-static float lost_style_penalty(const smg_character* ch,
-                                const smgi_edge* e) {
-  return style_penalty(ch, e, smgi_derived_of(ch->graph)->agile_style);
+static float lost_style_penalty(const smg_graph* g, const smgi_edge* e) {
+  return style_penalty(g, e, smgi_derived_of(g)->agile_style);
 }
 
 /* Error of one root sample at (x, z) facing h, after arc u, having moved
@@ -122,7 +121,7 @@ static float lost_style_penalty(const smg_character* ch,
 static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
                          float u, float mx, float mz, float w,
                          uint32_t* seg, float* dist) {
-  const smgi_path* p = &c->ch->path;
+  const smgi_path* p = c->track;
   float m2 = mx * mx + mz * mz;
   if (!c->following) {
     float dx = x - c->tx, dz = z - c->tz;
@@ -131,7 +130,7 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
     /* at the end prefer motion that travels least and, there being no
      * idle clips, turns back towards the end point (circles around it
      * instead of walking off) */
-    float sc = d + SMGI_END_SPEED_WEIGHT * sqrtf(m2) * c->ch->fps /
+    float sc = d + SMGI_END_SPEED_WEIGHT * sqrtf(m2) * c->fps /
                        (w > 1.0f ? w : 1.0f);
     if (d > SMGI_END_EPS)
       sc += SMGI_HEADING_WEIGHT * fabsf(smgi_wrap_angle(h - fast_atan2(-dx, -dz)));
@@ -159,7 +158,7 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
   }
   /* as it will look after the root steering's correction (steer.c) */
   if (!c->lost)
-    smgi_steer_plan_view(&c->ch->steer, u, c->ch->fps * sqrtf(m2) /
+    smgi_steer_plan_view(&c->steer, u, c->fps * sqrtf(m2) /
                          (w > 1.0f ? w : 1.0f), &d, &ha);
   /* lost (far off the path): options differ little in distance (all move
    * away for the next second or two) but much in where they face; the
@@ -173,14 +172,14 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
 /* Style penalty of an edge at arc lengths [a, b] of the path. */
 static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b) {
   if (!c->following)
-    return c->yield ? 10.0f * lost_style_penalty(c->ch, e)
-                    : 10.0f * style_penalty(c->ch, e, c->style0);
-  if (c->lost || c->yield) return lost_style_penalty(c->ch, e);
+    return c->yield ? 10.0f * lost_style_penalty(c->g, e)
+                    : 10.0f * style_penalty(c->g, e, c->style0);
+  if (c->lost || c->yield) return lost_style_penalty(c->g, e);
   /* s0 <= a <= b: before the next constraint the wanted style is the one
    * at s0 (what edge_style_penalty would find with two scans) */
   if (b < c->style_end)
-    return e->label == c->style0 ? 0.0f : style_penalty(c->ch, e, c->style0);
-  return edge_style_penalty(c->ch, e, a, b);
+    return e->label == c->style0 ? 0.0f : style_penalty(c->g, e, c->style0);
+  return edge_style_penalty(c, e, a, b);
 }
 
 /* Append edge `ei` to the sequence in `in`: root samples at the edge's
@@ -189,7 +188,7 @@ static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b
 void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw,
                      uint32_t ei, float pen_scale, float bound,
                      smgi_seq_state* out, float* maxd) {
-  const smg_graph* g = c->ch->graph;
+  const smg_graph* g = c->g;
   const smgi_edge* e = &g->data.lower_edges[ei];
   /* one rotation (cw, sw = cos, sin of in->W.h, computed once by the
    * caller for all of a state's children) places both the edge's end and
@@ -265,7 +264,7 @@ static float seq_value(const smgi_seq_ctx* c, const smgi_seq_state* st) {
  * continuation (derived node_trail, a few samples looked up, no edge
  * walk) stands for the rest of the window, style included. */
 float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
-  const smg_graph* g = c->ch->graph;
+  const smg_graph* g = c->g;
   const smgi_derived* dv = smgi_derived_of(g);
   const float* tr = dv->node_trail + 4u * (size_t)st.node * SMGI_TRAIL_SAMPLES;
   const float* tf = dv->node_trail_frames + (size_t)st.node * SMGI_TRAIL_SAMPLES;
@@ -276,7 +275,7 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
    * heading still missing once the node's best reachable turn (derived
    * node_turn) is spent costs like a heading error */
   if (c->following) {
-    const smgi_path* p = &c->ch->path;
+    const smgi_path* p = c->track;
     float sr = c->s0 + st.u, rx, rz, qx, qz;
     uint32_t sg = st.seg;
     path_at(p, sr, &sg, &rx, &rz);
@@ -329,7 +328,7 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
  * when the graph or the budget ends first). */
 void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
                     uint32_t depth, float* best) {
-  const smg_graph* g = c->ch->graph;
+  const smg_graph* g = c->g;
   const smgi_derived* dv = smgi_derived_of(g);
   for (uint32_t d = 0; d < SMGI_SEQ_MAX_DEPTH && depth < SMGI_SEQ_PATH_CAP; ++d) {
     const smgi_node* n = &g->data.lower_nodes[st.node];
@@ -389,18 +388,24 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
   }
 }
 
-void smgi_seq_init(smgi_seq_ctx* c, const smg_character* ch, smgi_xform2 W,
-                     float s, uint32_t seg) {
-  c->ch = ch;
+void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
+                   const smgi_steer_envelope* steer, smgi_xform2 W, float s,
+                   uint32_t seg) {
+  c->g = in->graph;
+  c->track = in->path;
+  c->cons = in->cons;
+  c->fps = in->fps;
+  c->steer = *steer;
   c->s0 = s;
-  c->T = SMGI_SEQ_SECONDS * ch->fps;
-  c->following = ch->path.count >= 2u && s < ch->path.length - SMGI_END_EPS;
-  c->lost = c->following && smgi_plan_start_error(ch, W, s, seg) > SMGI_LOST_DISTANCE;
+  c->T = SMGI_SEQ_SECONDS * in->fps;
+  c->following = in->path->count >= 2u && s < in->path->length - SMGI_END_EPS;
+  c->lost = c->following &&
+            smgi_plan_start_error(in->path, W, s, seg) > SMGI_LOST_DISTANCE;
   c->yield = 0;
   c->leaf_err = c->best_err = 0.0f;
-  end_target(ch, &c->tx, &c->tz);
-  c->style0 = smgi_style_at(&ch->cons, s);
-  c->style_end = smgi_next_constraint_arc(&ch->cons, s);
-  c->budget = smgi_seq_budget(ch);
+  end_target(in, &c->tx, &c->tz);
+  c->style0 = smgi_style_at(in->cons, s);
+  c->style_end = smgi_next_constraint_arc(in->cons, s);
+  c->budget = smgi_seq_budget(steer);
 }
 

@@ -19,10 +19,22 @@
 
 #include <stdint.h>
 
-#include "character_internal.h"
+#include "constraints.h"
+#include "graph_derived.h"
+#include "graph_internal.h"
+#include "path.h"
+#include "rmath.h"
+#include "steer_envelope.h"
+#include "step_in.h"
+#include "tuning.h"
 
 typedef struct smgi_seq_ctx {
-  const smg_character* ch;
+  /* the inputs, copied from the step's (step_in.h) */
+  const smg_graph* g;
+  const smgi_path* track;    /* the path followed */
+  const smgi_constraints* cons;
+  float fps;
+  smgi_steer_envelope steer; /* what the steering will correct */
   float s0;          /* path arc length where the sequences start */
   float T;           /* frames a sequence covers */
   int following;     /* a path to follow from s0 on (else: stay near tx,tz) */
@@ -54,17 +66,18 @@ typedef struct smgi_seq_state {
  * steering's reach, and the whole budget was spent), while the residual
  * error of a slightly worse sequence is corrected anyway: each ranking
  * searches half as wide (docs/runtime.md, Root steering, measured). */
-static inline uint32_t smgi_seq_budget(const smg_character* ch) {
-  return ch->steer.enabled ? SMGI_SEQ_BUDGET_STEER : SMGI_SEQ_BUDGET;
+static inline uint32_t smgi_seq_budget(const smgi_steer_envelope* steer) {
+  return steer->enabled ? SMGI_SEQ_BUDGET_STEER : SMGI_SEQ_BUDGET;
 }
 
 /* Distance of a planned ground position W from the path point at s. */
-float smgi_plan_start_error(const smg_character* ch, smgi_xform2 W, float s,
+float smgi_plan_start_error(const smgi_path* path, smgi_xform2 W, float s,
                             uint32_t seg);
 /* A search starting at ground transform W, path arc s (segment hint seg):
  * following or staying, lost or not, the wanted style, a full budget. */
-void smgi_seq_init(smgi_seq_ctx* c, const smg_character* ch, smgi_xform2 W,
-                   float s, uint32_t seg);
+void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
+                   const smgi_steer_envelope* steer, smgi_xform2 W, float s,
+                   uint32_t seg);
 /* Append edge `ei` to the sequence in `in` (cw, sw: cosine and sine of
  * in->W.h); `pen_scale` weighs its style penalty; a cost reaching `bound`
  * stops early with an infinite cost. *maxd gets the largest sample

@@ -27,8 +27,18 @@
 #include <math.h>
 #include <string.h>
 
-#include "character_internal.h"
+#include "planner.h"
+
 #include "plan_search.h"
+
+/* The planner's job: its own state, the timeline it extends and its
+ * inputs (planner.h). */
+typedef struct job {
+  smgi_planner* pl;
+  smgi_lower* lower;
+  const smgi_step_in* in;
+  const smgi_steer_envelope* steer;
+} job;
 
 typedef struct cand {
   uint32_t edge;
@@ -55,11 +65,11 @@ static smgi_xform2 disp_of(const smgi_edge* e) {
  * less what the root steering takes out by the edge's end (steer.c), `u`
  * metres of planned motion before it: the threshold judges the motion as
  * it will be shown. */
-static float edge_error(const smg_character* ch, const smgi_edge* e,
+static float edge_error(const job* j, const smgi_edge* e,
                         float u, float d) {
-  float speed = ch->fps * e->arc_length / (float)e->frame_count;
+  float speed = j->in->fps * e->arc_length / (float)e->frame_count;
   float reach =
-      smgi_steer_plan_reach(&ch->steer, u + e->arc_length, speed);
+      smgi_steer_plan_reach(j->steer, u + e->arc_length, speed);
   return d > reach ? d - reach : 0.0f;
 }
 
@@ -67,42 +77,43 @@ static float edge_error(const smg_character* ch, const smgi_edge* e,
  * progress there and its distance error, `u` metres into the sequence
  * that was ranked (the search valued it with the steering's reach from
  * the sequence's start, so the threshold does too). */
-static void make_cand(const smg_character* ch, smgi_xform2 W, float s,
+static void make_cand(const job* j, smgi_xform2 W, float s,
                       uint32_t seg, float u, uint32_t ei, cand* x) {
-  const smgi_edge* e = &ch->graph->data.lower_edges[ei];
+  const smgi_edge* e = &j->in->graph->data.lower_edges[ei];
   memset(x, 0, sizeof *x);
   x->edge = ei;
   x->end = smgi_xf_mul(W, disp_of(e));
   x->s_end = s + e->arc_length;
   x->seg_end = seg;
   x->work = 1u;
-  if (ch->path.count >= 2u) {
+  if (j->in->path->count >= 2u) {
     float d;
     uint32_t sg = seg;
-    float sp = smgi_path_project_local(&ch->path, x->end.x, x->end.z, &sg, &d);
+    float sp = smgi_path_project_local(j->in->path, x->end.x, x->end.z, &sg, &d);
     x->s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
     x->seg_end = sg;
-    if (s < ch->path.length - SMGI_END_EPS) x->err = edge_error(ch, e, u, d);
+    if (s < j->in->path->length - SMGI_END_EPS) x->err = edge_error(j, e, u, d);
   }
 }
 
 /* Score all out-edges of `node` from (W, s, seg), sorted best first
  * (ties by edge index, so the order is deterministic). */
-static uint32_t rank_pass(const smg_character* ch, uint32_t node,
+static uint32_t rank_pass(const job* j, uint32_t node,
                           smgi_xform2 W, float s, uint32_t seg, cand* c,
                           uint32_t* seq, uint32_t* seq_len, int yield,
                           int* following) {
-  const smg_graph* g = ch->graph;
+  const smg_graph* g = j->in->graph;
   const smgi_node* n = &g->data.lower_nodes[node];
   uint32_t count = n->edge_count < SMGI_MAX_CANDIDATES ? n->edge_count
                                                        : SMGI_MAX_CANDIDATES;
   smgi_seq_ctx sc;
-  smgi_seq_init(&sc, ch, W, s, seg);
+  smgi_seq_init(&sc, j->in, j->steer, W, s, seg);
   sc.best_len = 0;
   /* coming to rest at the end in a style with no pose to rest on (a
    * run): the graph's most agile style (walking) is wanted for the last
    * metres (steer.c) */
-  sc.yield = yield || (smgi_steer_settling(ch, s) &&
+  sc.yield = yield || (smgi_steer_settling(j->steer, j->in->path->count,
+                                           j->in->path->length, s) &&
                        !smgi_derived_of(g)->style_can_stop[sc.style0]);
   *following = sc.following && !sc.lost;
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg};
@@ -127,13 +138,13 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
      * to where the character actually is) */
     uint32_t sg = seg;
     float s_end = s + e->arc_length, d;
-    if (ch->path.count >= 2u) {
-      float sp = smgi_path_project_local(&ch->path, x->end.x, x->end.z, &sg,
+    if (j->in->path->count >= 2u) {
+      float sp = smgi_path_project_local(j->in->path, x->end.x, x->end.z, &sg,
                                          &d);
       s_end = smgi_clampf(sp, s, s + e->arc_length + 0.25f);
       /* the paper's distance error (what the threshold is compared
        * with): how far the edge leaves the character from the path */
-      if (sc.following) x->err = edge_error(ch, e, 0.0f, d);
+      if (sc.following) x->err = edge_error(j, e, 0.0f, d);
     }
     x->s_end = s_end;
     x->seg_end = sg;
@@ -179,7 +190,7 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
     c[k].work = 1u;
     if (!isfinite(c[k].score)) c[k].score = INFINITY;
   }
-  c[0].work = smgi_seq_budget(ch) - pool;
+  c[0].work = smgi_seq_budget(j->steer) - pool;
   if (seq_len) {
     /* the best sequence: the one the search found, or (when no search
      * beat an estimate) just the best candidate, decided below */
@@ -207,15 +218,16 @@ static uint32_t rank_pass(const smg_character* ch, uint32_t node,
  * style leaves the path by more than SMGI_YIELD_ERROR on average (a run asked
  * for where the path turns tighter than runs can), rank again letting the
  * style yield to the most agile one - before the character is lost. */
-static uint32_t rank_node(const smg_character* ch, uint32_t node,
+static uint32_t rank_node(const job* j, uint32_t node,
                           smgi_xform2 W, float s, uint32_t seg, cand* c,
                           uint32_t* seq, uint32_t* seq_len) {
   int following;
-  uint32_t n = rank_pass(ch, node, W, s, seg, c, seq, seq_len, 0, &following);
+  uint32_t n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 0, &following);
   if (n > 0 && following && c[0].seq_err > SMGI_YIELD_ERROR &&
-      smgi_derived_of(ch->graph)->agile_style != smgi_style_at(&ch->cons, s)) {
-    n = rank_pass(ch, node, W, s, seg, c, seq, seq_len, 1, &following);
-    for (uint32_t i = 0; i < n; ++i) c[i].work = i == 0 ? 2u * smgi_seq_budget(ch) : 0u;
+      smgi_derived_of(j->in->graph)->agile_style != smgi_style_at(j->in->cons, s)) {
+    n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 1, &following);
+    for (uint32_t i = 0; i < n; ++i)
+      c[i].work = i == 0 ? 2u * smgi_seq_budget(j->steer) : 0u;
   }
   return n;
 }
@@ -232,18 +244,18 @@ static void spend(uint32_t* budget, uint32_t w) {
   *budget = *budget > w ? *budget - w : 0u;
 }
 
-static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
+static void push(const job* j, smgi_xform2 W, float s, const cand* c,
                  uint32_t rank, uint32_t count) {
-  const smg_graph* g = ch->graph;
+  const smg_graph* g = j->in->graph;
   const smgi_edge* e = &g->data.lower_edges[c->edge];
-  const uint32_t i = ch->lower.count++;
-  smgi_qentry* q = smgi_q_at(&ch->lower, i);
-  ch->lower.frames += e->frame_count;
+  const uint32_t i = j->lower->count++;
+  smgi_qentry* q = smgi_q_at(j->lower, i);
+  j->lower->frames += e->frame_count;
   q->edge = c->edge;
-  q->seq = ch->lower.next_seq++;
+  q->seq = j->lower->next_seq++;
   /* beyond the next two, stored (W and M) as before the steering's
    * pending correction (smgi_q_ground) */
-  if (i >= 2u) W = smgi_lag_undo(&ch->steer, W);
+  if (i >= 2u) W = smgi_lag_undo(&j->lower->lag, W);
   q->W = W;
   q->M = smgi_xf_mul(
       W, smgi_xf_inv(ground_of(g, g->data.lower_nodes[e->from].frame)));
@@ -256,12 +268,12 @@ static void push(smg_character* ch, smgi_xform2 W, float s, const cand* c,
 }
 
 /* The state planning continues from: after the last queued edge. */
-static void tail_state(const smg_character* ch, uint32_t* node,
+static void tail_state(const job* j, uint32_t* node,
                        smgi_xform2* W, float* s, uint32_t* seg) {
-  const smgi_qentry* q = smgi_q_at_c(&ch->lower, ch->lower.count - 1u);
-  const smgi_edge* e = &ch->graph->data.lower_edges[q->edge];
+  const smgi_qentry* q = smgi_q_at_c(j->lower, j->lower->count - 1u);
+  const smgi_edge* e = &j->in->graph->data.lower_edges[q->edge];
   *node = e->to;
-  *W = smgi_xf_mul(smgi_q_ground(ch, ch->lower.count - 1u), disp_of(e));
+  *W = smgi_xf_mul(smgi_q_ground(j->lower, j->lower->count - 1u), disp_of(e));
   *s = q->s_end;
   *seg = q->seg_end;
 }
@@ -274,18 +286,18 @@ static void tail_state(const smg_character* ch, uint32_t* node,
  * best alternative replaces the old choice only if it does better, so
  * backtracking can never make the plan worse than plain greedy. The entry
  * is then final (not backed up into again). Returns 1 if the plan changed. */
-static int backtrack(smg_character* ch, uint32_t* budget) {
-  const smg_graph* g = ch->graph;
+static int backtrack(const job* j, uint32_t* budget) {
+  const smg_graph* g = j->in->graph;
   cand c[SMGI_MAX_CANDIDATES]; /* the caller's ranking must survive */
-  if (ch->lower.count < 2u || ch->plan.backtracks >= SMGI_MAX_BACKTRACKS) return 0;
-  smgi_qentry* lastp = smgi_q_at(&ch->lower, ch->lower.count - 1u);
+  if (j->lower->count < 2u || j->pl->backtracks >= SMGI_MAX_BACKTRACKS) return 0;
+  smgi_qentry* lastp = smgi_q_at(j->lower, j->lower->count - 1u);
   if (lastp->rank >= SMGI_MAX_RANK) return 0;
   smgi_qentry last = *lastp;
-  last.W = smgi_q_ground(ch, ch->lower.count - 1u);
-  ch->plan.backtracks++;
+  last.W = smgi_q_ground(j->lower, j->lower->count - 1u);
+  j->pl->backtracks++;
   uint32_t from = g->data.lower_edges[last.edge].from;
-  uint32_t seg = smgi_q_at(&ch->lower, ch->lower.count - 2u)->seg_end;
-  uint32_t n = rank_node(ch, from, last.W, last.s_start, seg, c, NULL, NULL);
+  uint32_t seg = smgi_q_at(j->lower, j->lower->count - 2u)->seg_end;
+  uint32_t n = rank_node(j, from, last.W, last.s_start, seg, c, NULL, NULL);
   spend(budget, work_of(c, n));
   /* the current choice in this ranking (an edge committed as part of a
    * searched sequence need not rank first on its own) */
@@ -303,7 +315,7 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
     uint32_t r = i < limit ? i : cur;
     if (r != cur && c[r].pen > c[cur].pen) continue;
     uint32_t to = g->data.lower_edges[c[r].edge].to;
-    uint32_t m = rank_node(ch, to, c[r].end, c[r].s_end, c[r].seg_end, child,
+    uint32_t m = rank_node(j, to, c[r].end, c[r].s_end, c[r].seg_end, child,
                            NULL, NULL);
     spend(budget, work_of(child, m));
     float v = c[r].err;
@@ -313,10 +325,10 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
       best_r = r;
     }
   }
-  ch->lower.count--;
-  ch->lower.frames -= g->data.lower_edges[last.edge].frame_count;
-  push(ch, last.W, last.s_start, &c[best_r], best_r, n);
-  smgi_q_at(&ch->lower, ch->lower.count - 1u)->rank = (uint16_t)SMGI_MAX_RANK; /* final */
+  j->lower->count--;
+  j->lower->frames -= g->data.lower_edges[last.edge].frame_count;
+  push(j, last.W, last.s_start, &c[best_r], best_r, n);
+  smgi_q_at(j->lower, j->lower->count - 1u)->rank = (uint16_t)SMGI_MAX_RANK; /* final */
   return c[best_r].edge != last.edge;
 }
 
@@ -327,19 +339,19 @@ static int backtrack(smg_character* ch, uint32_t* budget) {
  * SMGI_STEER_HORIZON ahead (the search itself still judges 2 s sequences).
  * Near the end the full horizon comes back: choosing the stop frame needs
  * the braking distance and a gait cycle beyond it planned. */
-static float plan_horizon(const smg_character* ch) {
-  const smgi_steer* s = &ch->steer;
-  const float full = ch->plan.horizon;
-  if (!s->enabled || ch->path.count < 2u || full <= SMGI_STEER_HORIZON)
+static float plan_horizon(const job* j) {
+  const smgi_steer_envelope* s = j->steer;
+  const float full = j->pl->horizon;
+  if (!s->enabled || j->in->path->count < 2u || full <= SMGI_STEER_HORIZON)
     return full;
-  const float to_end = ch->path.length - ch->progress;
+  const float to_end = j->in->path->length - j->in->progress;
   const float near = s->own_speed * (s->stop_seconds + SMGI_STEER_STOP_SCAN +
                                      SMGI_STEER_SETTLE_SECONDS + full) +
                      SMGI_STEER_STOP_NEAR;
   return to_end > near ? SMGI_STEER_HORIZON : full;
 }
 
-void smgi_plan(smg_character* ch, uint32_t budget, float step_frames) {
+static void plan(const job* j, uint32_t budget, float step_frames) {
   cand c[SMGI_MAX_CANDIDATES];
   /* this step's frames plus one to interpolate towards */
   const float min_frames = step_frames + 2.0f;
@@ -354,97 +366,96 @@ void smgi_plan(smg_character* ch, uint32_t budget, float step_frames) {
    * whole frame meets both kinds of step. */
   const float span = step_frames > 1.0f ? step_frames : 1.0f;
   const float horizon_frames =
-      plan_horizon(ch) * ch->fps + ch->plan.phase * span;
+      plan_horizon(j) * j->in->fps + j->pl->phase * span;
   for (;;) {
-    if (ch->lower.count == 0 || ch->lower.count >= SMGI_QUEUE_CAP) return;
-    float ahead = smgi_frames_ahead(&ch->lower);
+    if (j->lower->count == 0 || j->lower->count >= SMGI_QUEUE_CAP) return;
+    float ahead = smgi_frames_ahead(j->lower);
     int forced = ahead < min_frames;
     if (!forced && (ahead >= horizon_frames || budget == 0)) return;
     uint32_t node, seg;
     smgi_xform2 W;
     float s;
-    tail_state(ch, &node, &W, &s, &seg);
+    tail_state(j, &node, &W, &s, &seg);
     uint32_t seq[SMGI_SEQ_PATH_CAP], seq_len = 0;
-    uint32_t n = rank_node(ch, node, W, s, seg, c, seq, &seq_len);
+    uint32_t n = rank_node(j, node, W, s, seg, c, seq, &seq_len);
     if (n == 0) return; /* dead end: playback holds the last frame */
     spend(&budget, work_of(c, n));
     /* Backtracking can only help when the planned state is itself on the
      * path: when the character is already off it (new path far away, or
      * unavoidable drift), no local choice fixes that and the greedy pick
      * steers back. */
-    if (c[0].err > ch->plan.error_threshold &&
-        smgi_plan_start_error(ch, W, s, seg) <= ch->plan.error_threshold &&
-        backtrack(ch, &budget))
+    if (c[0].err > j->pl->error_threshold &&
+        smgi_plan_start_error(j->in->path, W, s, seg) <= j->pl->error_threshold &&
+        backtrack(j, &budget))
       continue;
-    push(ch, W, s, &c[0], 0, n);
-    if (c[0].err <= ch->plan.error_threshold) ch->plan.backtracks = 0;
+    push(j, W, s, &c[0], 0, n);
+    if (c[0].err <= j->pl->error_threshold) j->pl->backtracks = 0;
     /* commit a little more of the best sequence at once (what its next
      * rankings would most likely choose anyway): fewer searches per
      * second of motion; each edge still faces the threshold */
     if (seq_len > 1u && seq[0] == c[0].edge) {
-      float frames = (float)ch->graph->data.lower_edges[seq[0]].frame_count;
-      float u = ch->graph->data.lower_edges[seq[0]].arc_length;
-      for (uint32_t j = 1; j < seq_len && frames < SMGI_SEQ_COMMIT_FRAMES &&
-                           ch->lower.count < SMGI_QUEUE_CAP; ++j) {
+      float frames = (float)j->in->graph->data.lower_edges[seq[0]].frame_count;
+      float u = j->in->graph->data.lower_edges[seq[0]].arc_length;
+      for (uint32_t k = 1; k < seq_len && frames < SMGI_SEQ_COMMIT_FRAMES &&
+                           j->lower->count < SMGI_QUEUE_CAP; ++k) {
         cand x;
-        tail_state(ch, &node, &W, &s, &seg);
-        if (ch->graph->data.lower_edges[seq[j]].from != node) break;
-        make_cand(ch, W, s, seg, u, seq[j], &x);
-        if (x.err > ch->plan.error_threshold) break;
-        push(ch, W, s, &x, 0, 1);
-        frames += (float)ch->graph->data.lower_edges[seq[j]].frame_count;
-        u += ch->graph->data.lower_edges[seq[j]].arc_length;
+        tail_state(j, &node, &W, &s, &seg);
+        if (j->in->graph->data.lower_edges[seq[k]].from != node) break;
+        make_cand(j, W, s, seg, u, seq[k], &x);
+        if (x.err > j->pl->error_threshold) break;
+        push(j, W, s, &x, 0, 1);
+        frames += (float)j->in->graph->data.lower_edges[seq[k]].frame_count;
+        u += j->in->graph->data.lower_edges[seq[k]].arc_length;
       }
     }
   }
 }
 
-void smgi_replan(smg_character* ch) {
-  if (ch->lower.count == 0) return;
-  if (ch->time == 0.0 && ch->lower.t == 0.0f) {
+static void replan(const job* j) {
+  if (j->lower->count == 0) return;
+  if (j->in->time == 0.0 && j->lower->t == 0.0f) {
     /* nothing played yet: the first edge itself may be re-chosen */
-    smgi_qentry h = *smgi_q_at(&ch->lower, 0);
+    smgi_qentry h = *smgi_q_at(j->lower, 0);
     cand c[SMGI_MAX_CANDIDATES];
-    uint32_t from = ch->graph->data.lower_edges[h.edge].from;
-    uint32_t n = rank_node(ch, from, h.W, ch->progress, ch->seg, c, NULL, NULL);
-    ch->lower.count = 0;
-    ch->lower.frames = 0;
-    ch->plan.backtracks = 0;
-    smgi_lag_reset(&ch->steer);
-    ch->upper.pending.valid = 0;
-    push(ch, h.W, ch->progress, &c[0], 0, n);
+    uint32_t from = j->in->graph->data.lower_edges[h.edge].from;
+    uint32_t n = rank_node(j, from, h.W, j->in->progress, j->in->seg, c, NULL, NULL);
+    j->lower->count = 0;
+    j->lower->frames = 0;
+    j->pl->backtracks = 0;
+    smgi_lag_reset(&j->lower->lag);
+    push(j, h.W, j->in->progress, &c[0], 0, n);
     return;
   }
-  ch->lower.count = 1; /* keep only the edge that is playing */
-  smgi_lag_reset(&ch->steer); /* nothing beyond the next two is left */
-  ch->lower.frames =
-      ch->graph->data.lower_edges[smgi_q_at(&ch->lower, 0)->edge].frame_count;
-  ch->plan.backtracks = 0;
-  smgi_qentry* h = smgi_q_at(&ch->lower, 0);
-  const smgi_edge* e = &ch->graph->data.lower_edges[h->edge];
+  j->lower->count = 1; /* keep only the edge that is playing */
+  smgi_lag_reset(&j->lower->lag); /* nothing beyond the next two is left */
+  j->lower->frames =
+      j->in->graph->data.lower_edges[smgi_q_at(j->lower, 0)->edge].frame_count;
+  j->pl->backtracks = 0;
+  smgi_qentry* h = smgi_q_at(j->lower, 0);
+  const smgi_edge* e = &j->in->graph->data.lower_edges[h->edge];
   smgi_xform2 end = smgi_xf_mul(h->W, disp_of(e));
-  uint32_t seg = ch->seg;
+  uint32_t seg = j->in->seg;
   float dist;
-  h->s_start = ch->progress;
-  h->s_end = smgi_path_project_local(&ch->path, end.x, end.z, &seg, &dist);
+  h->s_start = j->in->progress;
+  h->s_end = smgi_path_project_local(j->in->path, end.x, end.z, &seg, &dist);
   h->seg_end = seg;
-  if (ch->upper.pending.valid && ch->upper.pending.seq != h->seq) ch->upper.pending.valid = 0;
 }
 
-smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
-  const smg_graph* g = ch->graph;
+static smg_result plan_start(const job* j, uint32_t* rng, float x, float z,
+                             float h) {
+  const smg_graph* g = j->in->graph;
   uint32_t LN = g->data.lower_node_count;
   /* a node of the initial style with out-edges, chosen by the seed */
   uint32_t matches = 0;
   for (uint32_t n = 0; n < LN; ++n)
-    if (g->data.lower_nodes[n].label == ch->cons.base_style &&
+    if (g->data.lower_nodes[n].label == j->in->cons->base_style &&
         g->data.lower_nodes[n].edge_count > 0)
       ++matches;
   uint32_t node = SMGI_NONE;
   if (matches > 0) {
-    uint32_t pick = smgi_xorshift(&ch->rng) % matches;
+    uint32_t pick = smgi_xorshift(rng) % matches;
     for (uint32_t n = 0; n < LN; ++n) {
-      if (g->data.lower_nodes[n].label == ch->cons.base_style &&
+      if (g->data.lower_nodes[n].label == j->in->cons->base_style &&
           g->data.lower_nodes[n].edge_count > 0) {
         if (pick == 0) {
           node = n;
@@ -460,13 +471,34 @@ smg_result smgi_plan_start(smg_character* ch, float x, float z, float h) {
   if (node == SMGI_NONE) return SMG_ERROR_BLOB_VALUE; /* no edges at all */
   cand c[SMGI_MAX_CANDIDATES];
   smgi_xform2 W = {x, z, smgi_wrap_angle(h)};
-  uint32_t n = rank_node(ch, node, W, ch->progress, ch->seg, c, NULL, NULL);
-  ch->lower.head = 0;
-  ch->lower.count = 0;
-  ch->lower.frames = 0;
-  ch->lower.t = 0.0f;
-  smgi_lag_reset(&ch->steer);
-  push(ch, W, ch->progress, &c[0], 0, n);
-  ch->lower.node = node;
+  uint32_t n = rank_node(j, node, W, j->in->progress, j->in->seg, c, NULL, NULL);
+  j->lower->head = 0;
+  j->lower->count = 0;
+  j->lower->frames = 0;
+  j->lower->t = 0.0f;
+  smgi_lag_reset(&j->lower->lag);
+  push(j, W, j->in->progress, &c[0], 0, n);
+  j->lower->node = node;
   return SMG_OK;
+}
+
+void smgi_plan(smgi_planner* pl, smgi_lower* lower, const smgi_step_in* in,
+               const smgi_steer_envelope* steer, uint32_t budget,
+               float step_frames) {
+  const job j = {pl, lower, in, steer};
+  plan(&j, budget, step_frames);
+}
+
+void smgi_replan(smgi_planner* pl, smgi_lower* lower, const smgi_step_in* in,
+                 const smgi_steer_envelope* steer) {
+  const job j = {pl, lower, in, steer};
+  replan(&j);
+}
+
+smg_result smgi_plan_start(smgi_planner* pl, smgi_lower* lower,
+                           const smgi_step_in* in,
+                           const smgi_steer_envelope* steer, uint32_t* rng,
+                           float x, float z, float h) {
+  const job j = {pl, lower, in, steer};
+  return plan_start(&j, rng, x, z, h);
 }

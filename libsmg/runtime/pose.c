@@ -3,62 +3,16 @@
  * playhead (lerp root, nlerp rotations, across edge boundaries), place it in
  * the world with the entry's ground transform, then lay the upper body on
  * top (spliced action with the Horn correction at the spine base, or the
- * locomotion's own) with a crossfade after every switch. Also forward
+ * locomotion's own) with a crossfade after every switch. Its inputs are
+ * the lower timeline and the upper body's state, both const. Also forward
  * kinematics for IK and the model-matrix getter.
  */
 #include <string.h>
 
-#include "character_internal.h"
-#include "pose_simd.h"
+#include "pose.h"
 
-void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
-                        const unsigned char* rb, float t,
-                        smgi_joint_set set, float* out) {
-  const uint32_t J = g->data.joint_count;
-  const smgi_joint* joints = g->data.joints;
-  const unsigned char* qa = smgi_pose_rot(ra, 0);
-  const unsigned char* qb = smgi_pose_rot(rb, 0);
-#define WANTED(j)                                                     \
-  (set == SMGI_JOINTS_ALL ||                                          \
-   (set == SMGI_JOINTS_UPPER) == (joints[j].body_part == SMG_BODY_UPPER))
-  uint32_t j = 1;
-#if SMGI_QPACK_SSE
-  /* Every joint four at a time: the last group is moved back to end at
-   * J (rewriting a few joints with the same values), and a group that
-   * mixes wanted and unwanted joints goes through a scratch copy. Decoding
-   * an unwanted joint is harmless: its bytes are inside the record. */
-  if (J >= 5u) {
-    for (; j < J; j += 4u) {
-      const uint32_t base = j + 4u <= J ? j : J - 4u;
-      const unsigned want = (WANTED(base) ? 1u : 0u) |
-                            (WANTED(base + 1u) ? 2u : 0u) |
-                            (WANTED(base + 2u) ? 4u : 0u) |
-                            (WANTED(base + 3u) ? 8u : 0u);
-      if (want == 0u) continue;
-      if (want == 15u) {
-        smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
-                             qb + SMGI_QPACK_BYTES * base, t, out + 4u * base);
-        continue;
-      }
-      float q[16];
-      smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
-                           qb + SMGI_QPACK_BYTES * base, t, q);
-      for (uint32_t k = 0; k < 4u; ++k)
-        if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
-    }
-    return;
-  }
-#endif
-  for (; j < J; ++j) {
-    if (!WANTED(j)) continue;
-    /* the same operations as one lane of smgi_pose_nlerp4_sse */
-    float ja[4], jb[4];
-    smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
-    smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
-    smgi_q_nlerp(ja, jb, t, out + 4u * j);
-  }
-#undef WANTED
-}
+#include "pose_simd.h"
+#include "rmath.h"
 
 /* A queue entry's frame -> world transform with its trigonometry done:
  * both sampled frames usually share one entry, so its sines and cosines
@@ -102,15 +56,15 @@ static void place(const smg_graph* g, uint32_t frame, const placement* pl,
   *gh = pl->M.h + r[2];
 }
 
-void smgi_pose_compose(smg_character* ch) {
-  const smg_graph* g = ch->graph;
-  const uint32_t J = ch->joint_count;
+void smgi_pose_compose(smgi_pose* pose, const smgi_lower* lower,
+                       const smgi_upper* upper, const smg_graph* g) {
+  const uint32_t J = g->data.joint_count;
   const smgi_edge* edges = g->data.lower_edges;
-  const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
+  const smgi_qentry* h = smgi_q_at_c(lower, 0);
   const smgi_edge* e = &edges[h->edge];
-  uint32_t i0 = (uint32_t)ch->lower.t;
+  uint32_t i0 = (uint32_t)lower->t;
   if (i0 >= e->frame_count) i0 = e->frame_count - 1u;
-  float a = ch->lower.t - (float)i0;
+  float a = lower->t - (float)i0;
   a = smgi_clampf(a, 0.0f, 1.0f);
   uint32_t fa = e->first_frame + i0, fb = fa;
   placement pa_pl, pb_pl;
@@ -118,8 +72,8 @@ void smgi_pose_compose(smg_character* ch) {
   const placement* plb = &pa_pl;
   if (i0 + 1u < e->frame_count) {
     fb = fa + 1u;
-  } else if (ch->lower.count > 1u) {
-    const smgi_qentry* n = smgi_q_at(&ch->lower, 1);
+  } else if (lower->count > 1u) {
+    const smgi_qentry* n = smgi_q_at_c(lower, 1);
     fb = edges[n->edge].first_frame;
     placement_init(n->M, &pb_pl);
     plb = &pb_pl;
@@ -127,37 +81,37 @@ void smgi_pose_compose(smg_character* ch) {
   float pa[3], pb[3], ra[4], rb[4], gax, gaz, gah, gbx, gbz, gbh;
   place(g, fa, &pa_pl, pa, ra, &gax, &gaz, &gah);
   place(g, fb, plb, pb, rb, &gbx, &gbz, &gbh);
-  for (int k = 0; k < 3; ++k) ch->pose.root[k] = pa[k] + a * (pb[k] - pa[k]);
-  smgi_q_nlerp(ra, rb, a, ch->pose.rot);
-  ch->pose.ground[0] = gax + a * (gbx - gax);
-  ch->pose.ground[1] = gaz + a * (gbz - gaz);
-  ch->pose.heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));
+  for (int k = 0; k < 3; ++k) pose->root[k] = pa[k] + a * (pb[k] - pa[k]);
+  smgi_q_nlerp(ra, rb, a, pose->rot);
+  pose->ground[0] = gax + a * (gbx - gax);
+  pose->ground[1] = gaz + a * (gbz - gaz);
+  pose->heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));
   /* Decode both frames' joints straight into their nlerps, four joints at
    * a time. While an action plays, its sample replaces every upper-body
    * joint below, so the locomotion's own are not sampled at all. */
   smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), a,
-                     ch->upper.action != 0 ? SMGI_JOINTS_NOT_UPPER
+                     upper->action != 0 ? SMGI_JOINTS_NOT_UPPER
                                      : SMGI_JOINTS_ALL,
-                     ch->pose.rot);
+                     pose->rot);
   uint32_t flags = g->data.frames[a < 0.5f ? fa : fb].flags;
-  ch->pose.contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
+  pose->contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
                                                      : 0u) |
                  ((flags & SMGI_FRAME_RIGHT_CONTACT) ? SMG_STATE_RIGHT_CONTACT
                                                       : 0u);
 
   /* upper body */
-  if (ch->upper.action == 0 && ch->upper.fade >= 1.0f) return;
+  if (upper->action == 0 && upper->fade >= 1.0f) return;
   /* smoothstep keeps the crossfade's velocity continuous at both ends */
-  float w = ch->upper.fade >= 1.0f ? 1.0f : ch->upper.fade * ch->upper.fade * (3.0f - 2.0f * ch->upper.fade);
+  float w = upper->fade >= 1.0f ? 1.0f : upper->fade * upper->fade * (3.0f - 2.0f * upper->fade);
   const smgi_joint* joints = g->data.joints;
-  if (ch->upper.action != 0 && w >= 1.0f) {
+  if (upper->action != 0 && w >= 1.0f) {
     /* no crossfade: the action's upper body goes straight into the pose
      * (the upper joints were not written above). Only when the spine-base
      * correction lands on an upper joint too, as in every baked skeleton;
      * otherwise the general path below keeps it off the pose. */
     const uint32_t sb = g->data.info->spine_base_joint;
     if (sb == 0 || sb >= J || joints[sb].body_part == SMG_BODY_UPPER) {
-      smgi_upper_sample(ch, ch->pose.rot);
+      smgi_upper_sample(upper, g, pose->rot);
       return;
     }
   }
@@ -166,69 +120,20 @@ void smgi_pose_compose(smg_character* ch) {
    * SMGI_POSE_STACK_JOINTS joints (pose.tmp exists only for bigger
    * skeletons) */
   float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
-  float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : ch->pose.tmp;
-  if (ch->upper.action != 0) smgi_upper_sample(ch, tmp);
+  float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : pose->tmp;
+  if (upper->action != 0) smgi_upper_sample(upper, g, tmp);
   for (uint32_t j = 1; j < J; ++j) {
     if (joints[j].body_part != SMG_BODY_UPPER) continue;
-    float* out = ch->pose.rot + 4u * j;
-    const float* target = ch->upper.action != 0 ? tmp + 4u * j : out;
+    float* out = pose->rot + 4u * j;
+    const float* target = upper->action != 0 ? tmp + 4u * j : out;
     if (w >= 1.0f) {
       memcpy(out, target, sizeof(float) * 4u);
     } else {
       float q[4];
-      smgi_q_nlerp(ch->upper.snap + 4u * j, target, w, q);
+      smgi_q_nlerp(upper->snap + 4u * j, target, w, q);
       memcpy(out, q, sizeof q);
     }
   }
-}
-
-/* Start fetching what this step's pose will touch (see the header). */
-void smgi_pose_prefetch(const smg_character* ch) {
-#if defined(__GNUC__) || defined(__clang__)
-#define PREFETCH_RANGE(ptr, bytes, rw)                                   \
-  do {                                                                   \
-    const char* p_ = (const char*)(ptr);                                 \
-    const size_t n_ = (size_t)(bytes);                                   \
-    for (size_t o_ = 0; o_ < n_; o_ += 64u) __builtin_prefetch(p_ + o_, rw, 3); \
-    __builtin_prefetch(p_ + n_ - 1u, rw, 3);                             \
-  } while (0)
-  const uint32_t J = ch->joint_count;
-  /* The character itself (its fields are read one after the other, so
-   * each line would otherwise miss only when first used), then the pose
-   * and its world transforms, which are rewritten. character.c lays them
-   * out in that order in one block: one range then, else three. */
-  const char* c0 = (const char*)ch;
-  const char* c1 = (const char*)(ch->pose.wrot + 4u * J);
-  if ((const char*)ch->pose.rot > c0 && (const char*)ch->pose.wpos > c0 &&
-      (const char*)ch->pose.wrot > c0 && c1 > c0 &&
-      (size_t)(c1 - c0) <= sizeof *ch + sizeof(float) * 12u * J + 64u) {
-    PREFETCH_RANGE(c0, c1 - c0, 1);
-  } else {
-    PREFETCH_RANGE(ch, sizeof *ch, 1);
-    PREFETCH_RANGE(ch->pose.rot, sizeof(float) * 4u * J, 1);
-    PREFETCH_RANGE(ch->pose.wpos, sizeof(float) * 3u * J, 1);
-    PREFETCH_RANGE(ch->pose.wrot, sizeof(float) * 4u * J, 1);
-  }
-  /* the queue entries the pose is placed with */
-  PREFETCH_RANGE(smgi_q_at_c(&ch->lower, 0), sizeof(smgi_qentry), 0);
-  if (ch->lower.count > 1u) PREFETCH_RANGE(smgi_q_at_c(&ch->lower, 1), sizeof(smgi_qentry), 0);
-  /* the path around the character's projection (progress tracking) */
-  if (ch->seg + 2u < ch->path.count) {
-    PREFETCH_RANGE(ch->path.xz + 2u * ch->seg, sizeof(float) * 6u, 0);
-    PREFETCH_RANGE(ch->path.cum + ch->seg, sizeof(float) * 3u, 0);
-  }
-  /* the lower-body records the playhead is at and goes to next */
-  const smg_graph* g = ch->graph;
-  const smgi_qentry* h = smgi_q_at_c(&ch->lower, 0);
-  const smgi_edge* e = &g->data.lower_edges[h->edge];
-  const uint32_t i0 = (uint32_t)ch->lower.t;
-  if (i0 + 1u < e->frame_count)
-    PREFETCH_RANGE(smgi_graph_pose(g, e->first_frame + i0),
-                   2u * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
-#undef PREFETCH_RANGE
-#else
-  (void)ch;
-#endif
 }
 
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
@@ -266,11 +171,11 @@ void smgi_fk(const smg_graph* g, const float* root, const float* rot,
 #endif
 }
 
-void smgi_fk_joints(smg_character* ch, const uint32_t* list,
+void smgi_fk_joints(smgi_pose* pose, const smg_graph* g, const uint32_t* list,
                     uint32_t count) {
-  const smgi_joint* joints = ch->graph->data.joints;
-  float* wpos = ch->pose.wpos;
-  float* wrot = ch->pose.wrot;
+  const smgi_joint* joints = g->data.joints;
+  float* wpos = pose->wpos;
+  float* wrot = pose->wrot;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t j = list[i];
     const uint32_t p = (uint32_t)joints[j].parent;
@@ -278,11 +183,11 @@ void smgi_fk_joints(smg_character* ch, const uint32_t* list,
     __m128 unused;
     (void)smgi_fk_joint_sse(_mm_loadu_ps(wrot + 4u * p),
                             smgi_load3_sse(wpos + 3u * p),
-                            _mm_loadu_ps(joints[j].offset), ch->pose.rot + 4u * j,
+                            _mm_loadu_ps(joints[j].offset), pose->rot + 4u * j,
                             wpos + 3u * j, wrot + 4u * j, &unused);
 #else
     smgi_fk_joint_c(wrot + 4u * p, wpos + 3u * p, joints[j].offset,
-                    ch->pose.rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
+                    pose->rot + 4u * j, wpos + 3u * j, wrot + 4u * j);
 #endif
   }
 }

@@ -9,7 +9,9 @@
 #include <stdint.h>
 
 #include "graph_internal.h"
+#include "lower.h"
 #include "smg.h"
+#include "upper.h"
 
 typedef struct smgi_pose {
   float root[3];     /* world position of joint 0 */
@@ -24,19 +26,17 @@ typedef struct smgi_pose {
   float* wrot;       /* 4J: world joint rotations */
 } smgi_pose;
 
-/* Prefetch the pose buffers the step rewrites and the lower-body records
- * it will sample. Called before planning: in a big crowd these lines were
- * evicted since the character's last step, and the planner's work hides
- * the fetches. A hint only (no effect on results). */
-void smgi_pose_prefetch(const smg_character* ch);
-/* Sample the lower body at the playhead, place it, lay the upper body on. */
-void smgi_pose_compose(smg_character* ch);
+/* Sample the lower body at the playhead, place it, lay the upper body on
+ * (crossfading from upper->snap after a switch). */
+void smgi_pose_compose(smgi_pose* pose, const smgi_lower* lower,
+                       const smgi_upper* upper, const smg_graph* g);
 /* Forward kinematics of a whole local pose. */
 void smgi_fk(const smg_graph* g, const float* root, const float* rot,
              float* wpos, float* wrot);
 /* Re-run FK of the cached world transforms for `count` joints listed
  * parents first (after IK changed some of their local rotations). */
-void smgi_fk_joints(smg_character* ch, const uint32_t* list, uint32_t count);
+void smgi_fk_joints(smgi_pose* pose, const smg_graph* g, const uint32_t* list,
+                    uint32_t count);
 /* Column-major 4x4 matrices of the cached world transforms, in world
  * space or relative to the character's ground transform (SMG_SPACE_*). */
 void smgi_pose_model_matrices(const smgi_pose* p, uint32_t joint_count,

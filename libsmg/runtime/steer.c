@@ -33,14 +33,17 @@
  * motion) until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the playback slows down (to no
  * less than SMGI_STEER_RATE_MIN). What the planner should make of the
- * correction is smgi_steer_plan_view / _plan_reach (inline, steer.h).
+ * correction is smgi_steer_plan_view / _plan_reach (inline,
+ * steer_envelope.h). When the correction since the plan was chosen adds
+ * up, the stage asks the step to plan again (smgi_steer_wants_replan)
+ * rather than planning itself.
  *
  * Deterministic, no allocation, O(frames planned ahead) near the end and
  * O(1) otherwise.
  */
 #include <math.h>
 
-#include "character_internal.h"
+#include "steer.h"
 
 /* v moved towards target by at most step. */
 static float approach(float v, float target, float step) {
@@ -48,8 +51,6 @@ static float approach(float v, float target, float step) {
   if (target < v - step) return v - step;
   return target;
 }
-
-static float limit_or(float v, float def) { return v > 0.0f ? v : def; }
 
 void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
                      float slide_ratio, float stop_seconds) {
@@ -63,14 +64,13 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->rate = 1.0f;
   s->drift_turn = s->drift_move = 0.0f;
   s->heading_seg = SMGI_NONE;
-  smgi_lag_reset(s);
 }
 
 void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
                            float slide_ratio, float stop_seconds) {
-  s->turn_limit = limit_or(turn_limit, SMGI_STEER_TURN_LIMIT);
-  s->slide_ratio = limit_or(slide_ratio, SMGI_STEER_SLIDE_RATIO);
-  s->stop_seconds = limit_or(stop_seconds, SMGI_STEER_STOP_SECONDS);
+  s->turn_limit = turn_limit;
+  s->slide_ratio = slide_ratio;
+  s->stop_seconds = stop_seconds;
 }
 
 void smgi_steer_path_changed(smgi_steer* s) {
@@ -95,56 +95,30 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
   }
 }
 
-/* Queue entry i's placement (frame -> world). The correction keeps W
- * and M up to date only for the two entries the pose samples; further
- * ones get the correction pending since they were written (the lag is a
- * rigid transform applied on the world side, so it moves M as it moves
- * W). */
-static smgi_xform2 entry_M(const smg_character* ch, uint32_t i) {
-  const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
-  return i < 2u ? q->M : smgi_lag_apply(&ch->steer, q->M);
-}
-
-/* Queue entry i (beyond the next two when the lag was composed) as it is
- * now: the pending correction written into its W and M. */
-static void lag_write_entry(smg_character* ch, uint32_t i) {
-  smgi_qentry* q = smgi_q_at(&ch->lower, i);
-  q->W = smgi_lag_apply(&ch->steer, q->W);
-  q->M = smgi_lag_apply(&ch->steer, q->M);
-}
-
-void smgi_steer_refresh(smg_character* ch, uint32_t pops) {
-  /* the entries that moved to index 0 or 1 from further back */
-  for (uint32_t i = pops < 2u ? 2u - pops : 0u;
-       pops > 0 && i < 2u && i < ch->lower.count; ++i)
-    lag_write_entry(ch, i);
-}
-
 /* Ground position of the frame k frames after the playhead (0 when the
  * queue is shorter). */
-static int frame_ground(const smg_character* ch, uint32_t k, float* x,
-                        float* z, uint32_t* flags) {
+static int frame_ground(const smgi_lower* lower, const smg_graph* g,
+                        uint32_t k, float* x, float* z, uint32_t* flags) {
   uint32_t entry, offset;
-  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, k, &entry,
-                     &offset))
+  if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset))
     return 0;
-  const smg_graph* g = ch->graph;
-  const smgi_qentry* q = smgi_q_at_c(&ch->lower, entry);
+  const smgi_qentry* q = smgi_q_at_c(lower, entry);
   const smgi_frame* f =
       &g->data.frames[g->data.lower_edges[q->edge].first_frame + offset];
-  smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], x, z);
+  smgi_xf_point(smgi_q_placement(lower, entry), f->root2d[0], f->root2d[1],
+                x, z);
   if (flags) *flags = f->flags;
   return 1;
 }
 
 /* Frames from the playhead to (seq, offset), or a negative value when the
  * queue no longer holds that entry. */
-static float frames_to(const smg_character* ch, uint32_t seq,
-                       uint32_t offset) {
-  const smgi_edge* edges = ch->graph->data.lower_edges;
-  float f = -ch->lower.t;
-  for (uint32_t i = 0; i < ch->lower.count; ++i) {
-    const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
+static float frames_to(const smgi_lower* lower, const smg_graph* g,
+                       uint32_t seq, uint32_t offset) {
+  const smgi_edge* edges = g->data.lower_edges;
+  float f = -lower->t;
+  for (uint32_t i = 0; i < lower->count; ++i) {
+    const smgi_qentry* q = smgi_q_at_c(lower, i);
     if (q->seq == seq) return f + (float)offset;
     f += (float)edges[q->edge].frame_count;
   }
@@ -154,32 +128,33 @@ static float frames_to(const smg_character* ch, uint32_t seq,
 /* Near the end: choose the queued frame to come to rest on and start
  * braking once it is as many frames ahead as braking from the current
  * rate over stop_seconds covers. */
-static void consider_stop(smg_character* ch) {
-  smgi_steer* s = &ch->steer;
-  const smgi_path* p = &ch->path;
+static void consider_stop(smgi_steer* s, const smgi_lower* lower,
+                          const smgi_step_in* in) {
+  const smgi_path* p = in->path;
+  const smg_graph* g = in->graph;
   const float ex = p->xz[2u * (p->count - 1u)];
   const float ez = p->xz[2u * (p->count - 1u) + 1u];
-  const float brake_frames = 0.5f * s->stop_seconds * ch->fps * s->rate;
+  const float brake_frames = 0.5f * s->stop_seconds * in->fps * s->rate;
   /* nothing to decide while the end is further along the path than
    * braking needs (by progress: a loop may pass near its end early) */
-  if (p->length - ch->progress >
+  if (p->length - in->progress >
       s->own_speed * s->stop_seconds + SMGI_STEER_STOP_NEAR)
     return;
-  const uint32_t ahead = (uint32_t)smgi_frames_ahead(&ch->lower);
+  const uint32_t ahead = (uint32_t)smgi_frames_ahead(lower);
   /* a gait cycle past the braking distance: a frame with both feet down
    * is always among them */
   const uint32_t limit =
-      (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * ch->fps);
+      (uint32_t)(brake_frames + SMGI_STEER_STOP_SCAN * in->fps);
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
   /* decide only on a plan that reaches that far (not just after a
    * re-plan left the edge playing alone) */
   if (ahead < limit) return;
   float best = INFINITY, x, z;
   uint32_t best_k = 0, prev = 0;
-  if (!frame_ground(ch, 0, &x, &z, &prev)) return;
+  if (!frame_ground(lower, g, 0, &x, &z, &prev)) return;
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
     uint32_t fl;
-    if (!frame_ground(ch, k, &x, &z, &fl)) break;
+    if (!frame_ground(lower, g, k, &x, &z, &fl)) break;
     float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
     /* both feet down: labelled so, or where the label passes from one
      * foot to the other (contact labels may leave no frame between the
@@ -194,13 +169,12 @@ static void consider_stop(smg_character* ch) {
     }
   }
   if (best_k == 0 || best > SMGI_STEER_STOP_NEAR + SMGI_STEER_NO_FOOT) return;
-  float frames = (float)best_k - (ch->lower.t - floorf(ch->lower.t));
+  float frames = (float)best_k - (lower->t - floorf(lower->t));
   if (frames > brake_frames) return;
   uint32_t entry, offset;
-  if (!smgi_q_locate(&ch->lower, ch->graph->data.lower_edges, best_k,
-                     &entry, &offset))
+  if (!smgi_q_locate(lower, g->data.lower_edges, best_k, &entry, &offset))
     return;
-  s->stop_seq = smgi_q_at(&ch->lower, entry)->seq;
+  s->stop_seq = smgi_q_at_c(lower, entry)->seq;
   s->stop_offset = offset;
   s->mode = SMGI_STEER_BRAKE;
 }
@@ -238,28 +212,29 @@ static float curvature_ahead(smgi_steer* st, const smgi_path* p, float s,
   return (fabsf(a) > fabsf(b) ? a : b) / half;
 }
 
-float smgi_steer_frames(smg_character* ch, float dt) {
-  smgi_steer* s = &ch->steer;
-  const float full = dt * ch->fps;
+int smgi_steer_wants_replan(const smgi_steer* s, const smgi_step_in* in) {
+  return s->enabled && in->path->count >= 2u && s->mode == SMGI_STEER_FOLLOW &&
+         (s->drift_turn > SMGI_STEER_REPLAN_TURN ||
+          s->drift_move > SMGI_STEER_REPLAN_MOVE);
+}
+
+void smgi_steer_replanned(smgi_steer* s) {
+  s->drift_turn = s->drift_move = 0.0f;
+}
+
+float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
+                        const smgi_step_in* in, float dt) {
+  const float full = dt * in->fps;
   s->at_valid = 0;
-  if (!s->enabled || ch->path.count < 2u) {
+  if (!s->enabled || in->path->count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
     return full * s->rate;
   }
-  if (s->mode == SMGI_STEER_FOLLOW &&
-      (s->drift_turn > SMGI_STEER_REPLAN_TURN ||
-       s->drift_move > SMGI_STEER_REPLAN_MOVE)) {
-    /* the planned edges were chosen for where the character would have
-     * been without the correction since: choose them again from where it
-     * is (the edge playing stays) */
-    smgi_replan(ch);
-    s->drift_turn = s->drift_move = 0.0f;
-  }
   if (s->mode == SMGI_STEER_FOLLOW) {
     /* slow down where the path turns tighter than the steering can turn
      * at this speed */
-    float kappa = curvature_ahead(s, &ch->path, ch->progress, ch->seg);
+    float kappa = curvature_ahead(s, in->path, in->progress, in->seg);
     float r = s->rate > 0.05f ? s->rate : 0.05f;
     /* the correction the path asks for at full playback: its turning at
      * the motion's speed minus the motion's own turning */
@@ -268,7 +243,7 @@ float smgi_steer_frames(smg_character* ch, float dt) {
     if (need > s->turn_limit)
       want = smgi_clampf(s->turn_limit / need, SMGI_STEER_RATE_MIN, 1.0f);
     s->rate = approach(s->rate, want, SMGI_STEER_RATE_ACCEL * dt);
-    consider_stop(ch);
+    consider_stop(s, lower, in);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
   }
   if (s->mode == SMGI_STEER_REST) {
@@ -276,13 +251,13 @@ float smgi_steer_frames(smg_character* ch, float dt) {
     return 0.0f;
   }
   /* braking: constant deceleration that ends on the stop frame */
-  float left = frames_to(ch, s->stop_seq, s->stop_offset);
+  float left = frames_to(lower, in->graph, s->stop_seq, s->stop_offset);
   if (left < 0.0f) { /* re-planned away: follow again */
     s->mode = SMGI_STEER_FOLLOW;
     return full * s->rate;
   }
   float r = s->rate > SMGI_STEER_REST_RATE ? s->rate : SMGI_STEER_REST_RATE;
-  float decel = left > 1e-3f ? ch->fps * r * r / (2.0f * left) : INFINITY;
+  float decel = left > 1e-3f ? in->fps * r * r / (2.0f * left) : INFINITY;
   float r1 = r - decel * dt;
   float frames = 0.5f * (r + (r1 > 0.0f ? r1 : 0.0f)) * full;
   if (r1 <= SMGI_STEER_REST_RATE || frames >= left) {
@@ -312,21 +287,21 @@ static inline void delta_xf(const delta* d, smgi_xform2* x) {
  * D(L(x)) = R(a + da)(x - p) + p + R(da)(t + p - g) - (p - g) + dt. The
  * turn's pivot p is moved to the character when the lag starts, so p - g
  * stays as small as the way walked since. */
-static void lag_follow(smgi_steer* s, const delta* d) {
-  if (s->lag_c == 1.0f && s->lag_s == 0.0f && s->lag_t[0] == 0.0f &&
-      s->lag_t[1] == 0.0f) { /* identity: any pivot */
-    s->lag_p[0] = d->px;
-    s->lag_p[1] = d->pz;
+static void lag_follow(smgi_lag* l, const delta* d) {
+  if (l->c == 1.0f && l->s == 0.0f && l->t[0] == 0.0f &&
+      l->t[1] == 0.0f) { /* identity: any pivot */
+    l->p[0] = d->px;
+    l->p[1] = d->pz;
   }
-  float ux = s->lag_p[0] - d->px, uz = s->lag_p[1] - d->pz;
-  float vx = s->lag_t[0] + ux, vz = s->lag_t[1] + uz;
-  s->lag_t[0] = d->c * vx + d->s * vz - ux + d->tx;
-  s->lag_t[1] = -d->s * vx + d->c * vz - uz + d->tz;
-  float c = s->lag_c * d->c - s->lag_s * d->s;
-  s->lag_s = s->lag_s * d->c + s->lag_c * d->s;
-  s->lag_c = c;
-  s->lag_a = smgi_wrap_angle(s->lag_a + d->da);
-  s->lag_steps++;
+  float ux = l->p[0] - d->px, uz = l->p[1] - d->pz;
+  float vx = l->t[0] + ux, vz = l->t[1] + uz;
+  l->t[0] = d->c * vx + d->s * vz - ux + d->tx;
+  l->t[1] = -d->s * vx + d->c * vz - uz + d->tz;
+  float c = l->c * d->c - l->s * d->s;
+  l->s = l->s * d->c + l->c * d->s;
+  l->c = c;
+  l->a = smgi_wrap_angle(l->a + d->da);
+  l->steps++;
 }
 
 /* Write the pending correction into the entries beyond the next two and
@@ -334,15 +309,17 @@ static void lag_follow(smgi_steer* s, const delta* d) {
  * sine drift apart from a rotation's, its pivot falls behind) would grow
  * with the time since a re-plan, which following a gentle path can make
  * long. */
-static void lag_write(smg_character* ch) {
-  for (uint32_t i = 2u; i < ch->lower.count; ++i) lag_write_entry(ch, i);
-  smgi_lag_reset(&ch->steer);
+static void lag_write(smgi_lower* lower) {
+  for (uint32_t i = 2u; i < lower->count; ++i)
+    smgi_lower_lag_write_entry(lower, i);
+  smgi_lag_reset(&lower->lag);
 }
 
-void smgi_steer_apply(smg_character* ch, float dt) {
-  smgi_steer* s = &ch->steer;
-  const float gx = ch->pose.ground[0], gz = ch->pose.ground[1];
-  const float gh = ch->pose.heading;
+void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
+                      const smgi_step_in* in, float dt) {
+  const smg_graph* g = in->graph;
+  const float gx = pose->ground[0], gz = pose->ground[1];
+  const float gh = pose->heading;
   if (dt <= 0.0f) return;
   /* the motion's own speed and turning this step, low-passed */
   float k = dt / (SMGI_STEER_SMOOTH + dt);
@@ -355,41 +332,39 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   }
   s->have_prev = 1;
   float want_turn = 0.0f, want_sx = 0.0f, want_sz = 0.0f;
-  const smgi_path* p = &ch->path;
+  const smgi_path* p = in->path;
   if (s->enabled && p->count >= 2u && s->mode != SMGI_STEER_REST) {
     /* heading: the clip's direction of travel towards the pursuit point */
     float fx, fz, tx, tz, look;
     float dir = gh;
-    if (frame_ground(ch, (uint32_t)(SMGI_STEER_FUTURE * ch->fps), &fx, &fz,
-                     NULL) &&
+    if (frame_ground(lower, g, (uint32_t)(SMGI_STEER_FUTURE * in->fps), &fx,
+                     &fz, NULL) &&
         (fx - gx) * (fx - gx) + (fz - gz) * (fz - gz) > 1e-4f)
       dir = smgi_atan2f(fx - gx, fz - gz);
     look = smgi_clampf(s->own_speed * SMGI_STEER_LOOK_TIME, SMGI_STEER_LOOK_MIN,
                   SMGI_STEER_LOOK_MAX);
-    point_ahead(p, ch->progress + look, ch->seg, &tx, &tz);
+    point_ahead(p, in->progress + look, in->seg, &tx, &tz);
     if ((tx - gx) * (tx - gx) + (tz - gz) * (tz - gz) > 1e-4f)
       want_turn = smgi_wrap_angle(smgi_atan2f(tx - gx, tz - gz) - dir) /
                   SMGI_STEER_HEADING_TIME;
     /* position: towards the path, or towards the end while braking */
     float qx, qz;
     if (s->mode == SMGI_STEER_BRAKE) {
-      float left = frames_to(ch, s->stop_seq, s->stop_offset);
+      float left = frames_to(lower, g, s->stop_seq, s->stop_offset);
       uint32_t entry, offset;
       if (left > 0.0f &&
-          smgi_q_locate(&ch->lower, ch->graph->data.lower_edges,
-                        (uint32_t)(ch->lower.t - floorf(ch->lower.t) + left +
-                                   0.5f),
+          smgi_q_locate(lower, g->data.lower_edges,
+                        (uint32_t)(lower->t - floorf(lower->t) + left + 0.5f),
                         &entry, &offset)) {
-        const smgi_qentry* q = smgi_q_at(&ch->lower, entry);
+        const smgi_qentry* q = smgi_q_at_c(lower, entry);
         const smgi_frame* f =
-            &ch->graph->data.frames[ch->graph->data.lower_edges[q->edge]
-                                        .first_frame + offset];
+            &g->data.frames[g->data.lower_edges[q->edge].first_frame + offset];
         float sx, sz;
-        smgi_xf_point(entry_M(ch, entry), f->root2d[0], f->root2d[1], &sx,
-                      &sz);
+        smgi_xf_point(smgi_q_placement(lower, entry), f->root2d[0],
+                      f->root2d[1], &sx, &sz);
         /* the rest of the braking lasts 2 * left / (fps * rate) */
         float remain =
-            2.0f * left / (ch->fps * (s->rate > 0.05f ? s->rate : 0.05f));
+            2.0f * left / (in->fps * (s->rate > 0.05f ? s->rate : 0.05f));
         if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
         want_sx = (p->xz[2u * (p->count - 1u)] - sx) / remain;
         want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
@@ -399,8 +374,8 @@ void smgi_steer_apply(smg_character* ch, float dt) {
         qx = s->at_x;
         qz = s->at_z;
       } else {
-        uint32_t sg = ch->seg;
-        smgi_path_eval(p, ch->progress, &sg, &qx, &qz, NULL);
+        uint32_t sg = in->seg;
+        smgi_path_eval(p, in->progress, &sg, &qx, &qz, NULL);
       }
       /* the hips sway from side to side with every step: only the offset
        * beyond that is an error to remove */
@@ -446,46 +421,38 @@ void smgi_steer_apply(smg_character* ch, float dt) {
   d.tz = s->slide[1] * dt;
   if (d.da != 0.0f || d.tx != 0.0f || d.tz != 0.0f) {
     /* the pose just composed ... */
-    float rx = ch->pose.root[0] - gx, rz = ch->pose.root[2] - gz, q[4];
+    float rx = pose->root[0] - gx, rz = pose->root[2] - gz, q[4];
     const float yaw[4] = {0.0f, sh, 0.0f, chh};
-    ch->pose.root[0] = gx + d.c * rx + d.s * rz + d.tx;
-    ch->pose.root[2] = gz - d.s * rx + d.c * rz + d.tz;
-    smgi_q_mul(yaw, ch->pose.rot, q);
+    pose->root[0] = gx + d.c * rx + d.s * rz + d.tx;
+    pose->root[2] = gz - d.s * rx + d.c * rz + d.tz;
+    smgi_q_mul(yaw, pose->rot, q);
     smgi_q_normalize(q);
-    ch->pose.rot[0] = q[0];
-    ch->pose.rot[1] = q[1];
-    ch->pose.rot[2] = q[2];
-    ch->pose.rot[3] = q[3];
-    ch->pose.ground[0] = gx + d.tx;
-    ch->pose.ground[1] = gz + d.tz;
-    ch->pose.heading = smgi_wrap_angle(gh + d.da);
+    pose->rot[0] = q[0];
+    pose->rot[1] = q[1];
+    pose->rot[2] = q[2];
+    pose->rot[3] = q[3];
+    pose->ground[0] = gx + d.tx;
+    pose->ground[1] = gz + d.tz;
+    pose->heading = smgi_wrap_angle(gh + d.da);
     /* ... and every queued placement, so the plan moves with it: the two
      * entries the pose samples now, further ones when read (writing every
      * planned entry every step was most of this stage's cache misses in
      * a crowd) */
-    for (uint32_t i = 0; i < ch->lower.count && i < 2u; ++i) {
-      smgi_qentry* e = smgi_q_at(&ch->lower, i);
+    for (uint32_t i = 0; i < lower->count && i < 2u; ++i) {
+      smgi_qentry* e = smgi_q_at(lower, i);
       delta_xf(&d, &e->W);
       delta_xf(&d, &e->M);
     }
-    if (ch->lower.count > 2u) {
-      lag_follow(s, &d);
-      if (s->lag_steps >= SMGI_STEER_LAG_STEPS) lag_write(ch);
+    if (lower->count > 2u) {
+      lag_follow(&lower->lag, &d);
+      if (lower->lag.steps >= SMGI_STEER_LAG_STEPS) lag_write(lower);
     } else {
-      smgi_lag_reset(s);
+      smgi_lag_reset(&lower->lag);
     }
   }
   s->drift_turn += fabsf(d.da);
   s->drift_move += sqrtf(d.tx * d.tx + d.tz * d.tz);
-  s->prev_x = ch->pose.ground[0];
-  s->prev_z = ch->pose.ground[1];
-  s->prev_h = ch->pose.heading;
-}
-
-int smgi_steer_settling(const smg_character* ch, float s) {
-  const smgi_steer* st = &ch->steer;
-  if (!st->enabled || ch->path.count < 2u) return 0;
-  return ch->path.length - s <
-         st->own_speed * (st->stop_seconds + SMGI_STEER_SETTLE_SECONDS) +
-             SMGI_STEER_STOP_NEAR;
+  s->prev_x = pose->ground[0];
+  s->prev_z = pose->ground[1];
+  s->prev_h = pose->heading;
 }

@@ -23,7 +23,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "character_internal.h"
+#include "sync.h"
+
+#include "rmath.h"
+#include "tuning.h"
 
 static void features(const smg_graph* g, uint32_t frame, float* f) {
   const smgi_frame* fr = &g->data.frames[frame];
@@ -44,19 +47,19 @@ static float dist(const float* a, const float* b) {
 
 /* Gait phase of the k-th lower frame ahead of the playhead (upper = 0)
  * or of the k-th upper frame ahead (upper = 1); -1 when unknown. */
-static float phase_at(const smg_graph* g, const smg_character* ch,
-                      uint32_t k, int upper) {
+static float phase_at(const smg_graph* g, const smgi_lower* l,
+                      const smgi_upper* u, uint32_t k, int upper) {
   if (!upper) {
     uint32_t entry, offset;
-    if (!smgi_q_locate(&ch->lower, g->data.lower_edges, k, &entry, &offset)) return -1.0f;
-    const smgi_edge* e = &g->data.lower_edges[smgi_q_at_c(&ch->lower, entry)->edge];
+    if (!smgi_q_locate(l, g->data.lower_edges, k, &entry, &offset)) return -1.0f;
+    const smgi_edge* e = &g->data.lower_edges[smgi_q_at_c(l, entry)->edge];
     return g->data.frames[e->first_frame + offset].phase;
   }
   const smgi_edge* ue = g->data.upper_edges;
-  uint32_t edge = ch->upper.edge, off = (uint32_t)ch->upper.t + k;
+  uint32_t edge = u->edge, off = (uint32_t)u->t + k;
   if (off >= ue[edge].frame_count) {
     off -= ue[edge].frame_count;
-    edge = ch->upper.next;
+    edge = u->next;
     if (off >= ue[edge].frame_count) return -1.0f;
   }
   return g->data.frames[ue[edge].first_frame + off].phase;
@@ -64,13 +67,14 @@ static float phase_at(const smg_graph* g, const smg_character* ch,
 
 /* Mean phase advance per frame over the next `count` frames (cycles per
  * frame), skipping unknown phases and jumps (graph transitions). */
-static int phase_speed(const smg_graph* g, const smg_character* ch,
-                       uint32_t count, int upper, float* out) {
+static int phase_speed(const smg_graph* g, const smgi_lower* l,
+                       const smgi_upper* u, uint32_t count, int upper,
+                       float* out) {
   float sum = 0.0f;
   uint32_t used = 0;
-  float prev = phase_at(g, ch, 0, upper);
+  float prev = phase_at(g, l, u, 0, upper);
   for (uint32_t k = 1; k < count; ++k) {
-    float p = phase_at(g, ch, k, upper);
+    float p = phase_at(g, l, u, k, upper);
     if (p >= 0.0f && prev >= 0.0f) {
       float d = p - prev;
       d -= floorf(d); /* [0, 1): phase only moves forward */
@@ -86,24 +90,24 @@ static int phase_speed(const smg_graph* g, const smg_character* ch,
   return 1;
 }
 
-void smgi_sync_update(smg_character* ch) {
-  if (ch->upper.action == 0) {
-    ch->sync.rate = 1.0f;
-    ch->sync.error = NAN;
+void smgi_sync_update(smgi_sync* sy, const smgi_upper* u,
+                      const smgi_lower* l, const smgi_step_in* in) {
+  if (u->action == 0) {
+    smgi_sync_reset(sy);
     return;
   }
-  const smg_graph* g = ch->graph;
+  const smg_graph* g = in->graph;
   const smgi_edge* le = g->data.lower_edges;
   const smgi_edge* ue = g->data.upper_edges;
   float lf[SMGI_SYNC_LOWER][4], uf[SMGI_SYNC_UPPER][4];
 
   /* lower window, clipped at the end of the synchronizing range */
-  float range_end = smgi_next_constraint_arc(&ch->cons, ch->progress);
+  float range_end = smgi_next_constraint_arc(in->cons, in->progress);
   uint32_t n = 0;
   for (; n < SMGI_SYNC_LOWER; ++n) {
     uint32_t entry, offset;
-    if (!smgi_q_locate(&ch->lower, g->data.lower_edges, n, &entry, &offset)) break;
-    const smgi_qentry* q = smgi_q_at(&ch->lower, entry);
+    if (!smgi_q_locate(l, g->data.lower_edges, n, &entry, &offset)) break;
+    const smgi_qentry* q = smgi_q_at_c(l, entry);
     const smgi_edge* e = &le[q->edge];
     float s = q->s_start +
               (q->s_end - q->s_start) * (float)offset / (float)e->frame_count;
@@ -114,11 +118,11 @@ void smgi_sync_update(smg_character* ch) {
 
   /* upper window: the current edge, then the chosen successor */
   uint32_t m = 0;
-  uint32_t edge = ch->upper.edge, off = (uint32_t)ch->upper.t;
+  uint32_t edge = u->edge, off = (uint32_t)u->t;
   for (; m < SMGI_SYNC_UPPER; ++m) {
     if (off >= ue[edge].frame_count) {
-      if (edge != ch->upper.edge) break;
-      edge = ch->upper.next;
+      if (edge != u->edge) break;
+      edge = u->next;
       off = 0;
     }
     features(g, ue[edge].first_frame + off, uf[m]);
@@ -135,9 +139,9 @@ void smgi_sync_update(smg_character* ch) {
    * of 0.8 instead of 1.14. */
   {
     float sl, su;
-    if (phase_speed(g, ch, n, 0, &sl) && phase_speed(g, ch, m, 1, &su) &&
+    if (phase_speed(g, l, u, n, 0, &sl) && phase_speed(g, l, u, m, 1, &su) &&
         su > 1e-4f) {
-      float pl = phase_at(g, ch, 0, 0), pu = phase_at(g, ch, 0, 1);
+      float pl = phase_at(g, l, u, 0, 0), pu = phase_at(g, l, u, 0, 1);
       float rate = sl / su;
       if (pl >= 0.0f && pu >= 0.0f) {
         float dphi = pl - pu;
@@ -150,18 +154,18 @@ void smgi_sync_update(smg_character* ch) {
          * there and make the rest up the other way: a whole stride
          * slipped against the legs. Up to a cycle; a difference beyond is
          * let go as a slip. */
-        float prev = ch->sync.error;
+        float prev = sy->error;
         if (prev == prev) dphi += floorf(prev - dphi + 0.5f);
         if (dphi > 1.0f) dphi -= 1.0f;
         if (dphi < -1.0f) dphi += 1.0f;
-        ch->sync.error = dphi;
+        sy->error = dphi;
         rate *= 1.0f + SMGI_SYNC_PHASE_LOCK * dphi;
       } else {
-        ch->sync.error = NAN;
+        sy->error = NAN;
       }
       rate = smgi_clampf(rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
-      ch->sync.rate += SMGI_SYNC_SMOOTH * (rate - ch->sync.rate);
-      ch->sync.rate = smgi_clampf(ch->sync.rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
+      sy->rate += SMGI_SYNC_SMOOTH * (rate - sy->rate);
+      sy->rate = smgi_clampf(sy->rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
       return;
     }
   }
@@ -199,6 +203,6 @@ void smgi_sync_update(smg_character* ch) {
   }
   float rate = (float)jend / (float)(n - 1u);
   rate = smgi_clampf(rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
-  ch->sync.rate += SMGI_SYNC_SMOOTH * (rate - ch->sync.rate);
-  ch->sync.rate = smgi_clampf(ch->sync.rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
+  sy->rate += SMGI_SYNC_SMOOTH * (rate - sy->rate);
+  sy->rate = smgi_clampf(sy->rate, SMGI_SYNC_RATE_MIN, SMGI_SYNC_RATE_MAX);
 }

@@ -3,13 +3,14 @@
  * the stage that uses it. Distances are metres, times seconds, angles
  * radians, unless a name says otherwise. None of these are user settings:
  * what a user may change per character is in smg_character_desc (smg.h),
- * whose defaults are settled in one function, resolve_desc (character.c),
- * from the SMGI_DEFAULT_* values below.
+ * whose defaults are settled in one function, smgi_settle (settings.c),
+ * from the SMGI_DEFAULT_* values and the stages' defaults below
+ * (SMGI_STEER_TURN_LIMIT, _SLIDE_RATIO, _STOP_SECONDS, SMGI_IK_SWING_CLEAR).
  */
 #ifndef SMG_TUNING_H
 #define SMG_TUNING_H
 
-/* ---- character defaults and limits (character.c, resolve_desc) ---- */
+/* ---- character defaults (settings.c) and limits (character.c) ---- */
 /* 512 points (6 KB) keep a default character within 16 KiB in all; a
  * mouse-drawn path resampled every few centimetres fits, and longer paths
  * set path_capacity (12 bytes per point). */
@@ -72,7 +73,7 @@
 #define SMGI_TRAIL_STEP_SECONDS 0.5f
 #define SMGI_TURN_SECONDS 3.0f   /* horizon of node_turn */
 
-/* ---- progress along the path (playback.c) ---- */
+/* ---- progress along the path (step.c) ---- */
 #define SMGI_END_NEAR 1.0f /* metres from the last point that count as
                               arrived */
 

@@ -15,23 +15,37 @@
  */
 #include <string.h>
 
-#include "character_internal.h"
+#include "upper.h"
+
+#include "graph_derived.h"
+#include "rmath.h"
+#include "tuning.h"
 
 static const float IDENTITY[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 
+/* One call's state, its inputs and whether it entered an action's edge
+ * anew (which starts synchronization afresh, sync.h). */
+typedef struct job {
+  smgi_upper* u;
+  const smg_graph* g;
+  uint32_t* rng;
+  const float* shown; /* 4J: the pose shown, faded from on a switch */
+  int switched;
+} job;
+
 /* Next upper edge from `node` for the current action. */
-static uint32_t choose_next(smg_character* ch, uint32_t node) {
-  const smg_graph* g = ch->graph;
+static uint32_t choose_next(job* j, uint32_t node) {
+  const smg_graph* g = j->g;
   const smgi_node* n = &g->data.upper_nodes[node];
   const smgi_edge* edges = g->data.upper_edges;
   uint32_t A = g->data.action_count;
   uint32_t matches = 0;
   for (uint32_t k = 0; k < n->edge_count; ++k)
-    if (edges[n->first_edge + k].label == ch->upper.action) ++matches;
+    if (edges[n->first_edge + k].label == j->u->action) ++matches;
   if (matches > 0) {
-    uint32_t pick = smgi_xorshift(&ch->rng) % matches;
+    uint32_t pick = smgi_xorshift(j->rng) % matches;
     for (uint32_t k = 0; k < n->edge_count; ++k) {
-      if (edges[n->first_edge + k].label != ch->upper.action) continue;
+      if (edges[n->first_edge + k].label != j->u->action) continue;
       if (pick-- == 0) return n->first_edge + k;
     }
   }
@@ -41,7 +55,7 @@ static uint32_t choose_next(smg_character* ch, uint32_t node) {
   uint32_t best_h = SMGI_HOPS_UNREACHABLE + 1u;
   for (uint32_t k = 0; k < n->edge_count; ++k) {
     uint32_t to = edges[n->first_edge + k].to;
-    uint32_t hh = hops[(size_t)to * A + ch->upper.action];
+    uint32_t hh = hops[(size_t)to * A + j->u->action];
     if (hh < best_h) {
       best_h = hh;
       best = n->first_edge + k;
@@ -54,103 +68,115 @@ static uint32_t choose_next(smg_character* ch, uint32_t node) {
 
 /* Begin playing `uedge` at `offset` frames with `correction`, crossfading
  * from the pose currently shown. */
-static void switch_to(smg_character* ch, uint32_t action, uint32_t uedge,
+static void switch_to(job* j, uint32_t action, uint32_t uedge,
                       uint32_t offset, const float* correction) {
-  const uint32_t J = ch->joint_count;
-  memcpy(ch->upper.snap, ch->pose.rot, sizeof(float) * 4u * J);
-  ch->upper.fade = 0.0f;
-  ch->upper.action = action;
-  ch->upper.pending.valid = 0;
+  smgi_upper* u = j->u;
+  const uint32_t J = j->g->data.joint_count;
+  memcpy(u->snap, j->shown, sizeof(float) * 4u * J);
+  u->fade = 0.0f;
+  u->action = action;
+  u->pending.valid = 0;
   if (action == 0) return;
-  const smg_graph* g = ch->graph;
-  ch->upper.edge = uedge;
+  const smg_graph* g = j->g;
+  u->edge = uedge;
   const smgi_edge* e = &g->data.upper_edges[uedge];
-  ch->upper.t = (float)(offset < e->frame_count ? offset : e->frame_count - 1u);
-  memcpy(ch->upper.correction, correction, sizeof(float) * 4u);
-  ch->upper.node = e->from;
-  ch->upper.next = choose_next(ch, e->to);
-  if (ch->upper.next == SMGI_NONE) ch->upper.next = uedge;
-  ch->sync.rate = 1.0f;
-  ch->sync.error = NAN;
+  u->t = (float)(offset < e->frame_count ? offset : e->frame_count - 1u);
+  memcpy(u->correction, correction, sizeof(float) * 4u);
+  u->node = e->from;
+  u->next = choose_next(j, e->to);
+  if (u->next == SMGI_NONE) u->next = uedge;
+  j->switched = 1;
 }
 
-void smgi_upper_start(smg_character* ch) {
-  ch->upper.fade = 1.0f;
-  ch->sync.rate = 1.0f;
-  ch->sync.error = NAN;
-  memcpy(ch->upper.correction, IDENTITY, sizeof IDENTITY);
-  uint32_t a = ch->cons.base_action;
-  ch->upper.action = 0;
-  if (a == 0) return;
-  uint32_t first = smgi_derived_of(ch->graph)->action_first_edge[a];
+void smgi_upper_start(smgi_upper* u, const smg_graph* g, uint32_t* rng,
+                      const float* shown, uint32_t action) {
+  job j = {u, g, rng, shown, 0};
+  u->fade = 1.0f;
+  memcpy(u->correction, IDENTITY, sizeof IDENTITY);
+  u->action = 0;
+  if (action == 0) return;
+  uint32_t first = smgi_derived_of(g)->action_first_edge[action];
   if (first == SMGI_NONE) return;
-  switch_to(ch, a, first, 0, IDENTITY);
-  ch->upper.fade = 1.0f;
+  switch_to(&j, action, first, 0, IDENTITY);
+  u->fade = 1.0f;
 }
 
-void smgi_upper_advance(smg_character* ch, float lower_frames) {
-  if (ch->upper.action == 0) return;
-  const smgi_edge* edges = ch->graph->data.upper_edges;
-  ch->upper.t += lower_frames * ch->sync.rate;
+/* The playhead part of smgi_upper_advance. */
+static void advance_playhead(job* j, float frames) {
+  smgi_upper* u = j->u;
+  if (u->action == 0) return;
+  const smgi_edge* edges = j->g->data.upper_edges;
+  u->t += frames;
   for (uint32_t guard = 0; guard < 64u; ++guard) {
-    const smgi_edge* e = &edges[ch->upper.edge];
-    if (ch->upper.t < (float)e->frame_count) return;
-    ch->upper.t -= (float)e->frame_count;
-    ch->upper.node = e->to;
-    uint32_t next = ch->upper.next;
+    const smgi_edge* e = &edges[u->edge];
+    if (u->t < (float)e->frame_count) return;
+    u->t -= (float)e->frame_count;
+    u->node = e->to;
+    uint32_t next = u->next;
     if (edges[next].from != e->to) {
       /* the planned successor does not connect (dead end): re-enter the
        * action's first edge with a crossfade */
-      float t = ch->upper.t;
-      switch_to(ch, ch->upper.action, next, 0, ch->upper.correction);
-      ch->upper.t = t < (float)edges[next].frame_count ? t : 0.0f;
+      float t = u->t;
+      switch_to(j, u->action, next, 0, u->correction);
+      u->t = t < (float)edges[next].frame_count ? t : 0.0f;
       return;
     }
-    ch->upper.edge = next;
-    ch->upper.next = choose_next(ch, edges[next].to);
-    if (ch->upper.next == SMGI_NONE) {
-      uint32_t first = smgi_derived_of(ch->graph)->action_first_edge[ch->upper.action];
-      ch->upper.next = first != SMGI_NONE ? first : next;
+    u->edge = next;
+    u->next = choose_next(j, edges[next].to);
+    if (u->next == SMGI_NONE) {
+      uint32_t first = smgi_derived_of(j->g)->action_first_edge[u->action];
+      u->next = first != SMGI_NONE ? first : next;
     }
   }
-  ch->upper.t = 0.0f; /* absurd dt with 1-frame edges: stop catching up */
+  u->t = 0.0f; /* absurd dt with 1-frame edges: stop catching up */
 }
 
-void smgi_upper_sample(const smg_character* ch, float* out) {
-  const smg_graph* g = ch->graph;
+int smgi_upper_advance(smgi_upper* u, const smg_graph* g, uint32_t* rng,
+                       const float* shown, float lower_frames,
+                       float sync_rate, float dt) {
+  job j = {u, g, rng, shown, 0};
+  advance_playhead(&j, lower_frames * sync_rate);
+  if (u->fade < 1.0f) {
+    u->fade += dt * u->fade_rate;
+    if (u->fade > 1.0f) u->fade = 1.0f;
+  }
+  return j.switched;
+}
+
+void smgi_upper_sample(const smgi_upper* u, const smg_graph* g, float* out) {
   const smgi_edge* edges = g->data.upper_edges;
-  const smgi_edge* e = &edges[ch->upper.edge];
-  uint32_t i0 = (uint32_t)ch->upper.t;
+  const smgi_edge* e = &edges[u->edge];
+  uint32_t i0 = (uint32_t)u->t;
   if (i0 >= e->frame_count) i0 = e->frame_count - 1u;
-  float a = smgi_clampf(ch->upper.t - (float)i0, 0.0f, 1.0f);
+  float a = smgi_clampf(u->t - (float)i0, 0.0f, 1.0f);
   uint32_t fa = e->first_frame + i0;
   uint32_t fb = i0 + 1u < e->frame_count ? fa + 1u
-                                         : edges[ch->upper.next].first_frame;
-  const uint32_t J = ch->joint_count;
+                                         : edges[u->next].first_frame;
+  const uint32_t J = g->data.joint_count;
   const uint32_t sb = g->data.info->spine_base_joint;
   smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), a,
                      SMGI_JOINTS_UPPER, out);
   if (sb < J && sb > 0) {
     /* local'(spine_base) = correction * local_upper(spine_base) */
     float q[4];
-    smgi_q_mul(ch->upper.correction, out + 4u * sb, q);
+    smgi_q_mul(u->correction, out + 4u * sb, q);
     smgi_q_normalize(q);
     memcpy(out + 4u * sb, q, sizeof q);
   }
 }
 
 /* Best candidate for `action` among the next SMGI_SPLICE_WINDOW lower
- * frames; fills ch->upper.pending. */
-static int find_candidate(smg_character* ch, uint32_t action) {
-  const smg_graph* g = ch->graph;
+ * frames; fills u->pending. */
+static int find_candidate(smgi_upper* u, const smgi_lower* lower,
+                          const smg_graph* g, uint32_t action) {
   const smgi_derived* dv = smgi_derived_of(g);
   const smgi_edge* edges = g->data.lower_edges;
   float best = 0.0f;
   int found = 0;
   for (uint32_t k = 1; k <= SMGI_SPLICE_WINDOW; ++k) {
     uint32_t entry, offset;
-    if (!smgi_q_locate(&ch->lower, g->data.lower_edges, k, &entry, &offset)) break;
-    const smgi_qentry* q = smgi_q_at(&ch->lower, entry);
+    if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset)) break;
+    const smgi_qentry* q = smgi_q_at_c(lower, entry);
     uint32_t f = edges[q->edge].first_frame + offset;
     for (uint32_t i = dv->splice_first[f]; i < dv->splice_first[f + 1u];
          ++i) {
@@ -159,53 +185,63 @@ static int find_candidate(smg_character* ch, uint32_t action) {
       if (!found || sp->distance < best) {
         best = sp->distance;
         found = 1;
-        ch->upper.pending.valid = 1;
-        ch->upper.pending.seq = q->seq;
-        ch->upper.pending.offset = offset;
-        ch->upper.pending.splice = i;
+        u->pending.valid = 1;
+        u->pending.seq = q->seq;
+        u->pending.offset = offset;
+        u->pending.splice = i;
       }
     }
   }
   return found;
 }
 
-void smgi_upper_update_splice(smg_character* ch, float dt, int new_frame) {
-  const smg_graph* g = ch->graph;
+int smgi_upper_update_splice(smgi_upper* u, const smgi_lower* lower,
+                             const smgi_step_in* in, uint32_t* rng,
+                             const float* shown, float dt, int new_frame) {
+  const smg_graph* g = in->graph;
+  job j = {u, g, rng, shown, 0};
   /* a scheduled switch whose frame has come */
-  if (ch->upper.pending.valid) {
-    const smgi_qentry* h = smgi_q_at(&ch->lower, 0);
-    const smgi_splice* sp = &g->data.splices[ch->upper.pending.splice];
-    int due = (int32_t)(h->seq - ch->upper.pending.seq) > 0 ||
-              (h->seq == ch->upper.pending.seq &&
-               (uint32_t)ch->lower.t >= ch->upper.pending.offset);
+  if (u->pending.valid) {
+    const smgi_qentry* h = smgi_q_at_c(lower, 0);
+    const smgi_splice* sp = &g->data.splices[u->pending.splice];
+    int due = (int32_t)(h->seq - u->pending.seq) > 0 ||
+              (h->seq == u->pending.seq &&
+               (uint32_t)lower->t >= u->pending.offset);
     if (due) {
-      switch_to(ch, sp->action, sp->upper_edge, sp->upper_offset,
+      switch_to(&j, sp->action, sp->upper_edge, sp->upper_offset,
                 sp->correction);
-      ch->upper.want_time = 0.0f;
-      return;
+      u->want_time = 0.0f;
+      return j.switched;
     }
   }
   float arc;
-  uint32_t wanted = smgi_action_at(&ch->cons, ch->progress + SMGI_SPLICE_LEAD, &arc);
-  if (wanted == ch->upper.action) {
-    ch->upper.pending.valid = 0;
-    ch->upper.want_time = 0.0f;
-    return;
+  uint32_t wanted =
+      smgi_action_at(in->cons, in->progress + SMGI_SPLICE_LEAD, &arc);
+  if (wanted == u->action) {
+    u->pending.valid = 0;
+    u->want_time = 0.0f;
+    return j.switched;
   }
   if (wanted == 0) { /* back to the locomotion's own upper body */
-    switch_to(ch, 0, 0, 0, IDENTITY);
-    ch->upper.want_time = 0.0f;
-    return;
+    switch_to(&j, 0, 0, 0, IDENTITY);
+    u->want_time = 0.0f;
+    return j.switched;
   }
-  ch->upper.want_time += dt;
-  if (ch->upper.pending.valid &&
-      g->data.splices[ch->upper.pending.splice].action == wanted)
-    return;
-  ch->upper.pending.valid = 0;
-  if (new_frame && find_candidate(ch, wanted)) return;
-  if (ch->progress > arc + SMGI_FORCE_DISTANCE || ch->upper.want_time > SMGI_FORCE_SECONDS) {
+  u->want_time += dt;
+  if (u->pending.valid && g->data.splices[u->pending.splice].action == wanted)
+    return j.switched;
+  u->pending.valid = 0;
+  if (new_frame && find_candidate(u, lower, g, wanted)) return j.switched;
+  if (in->progress > arc + SMGI_FORCE_DISTANCE ||
+      u->want_time > SMGI_FORCE_SECONDS) {
     uint32_t first = smgi_derived_of(g)->action_first_edge[wanted];
-    if (first != SMGI_NONE) switch_to(ch, wanted, first, 0, IDENTITY);
-    ch->upper.want_time = 0.0f;
+    if (first != SMGI_NONE) switch_to(&j, wanted, first, 0, IDENTITY);
+    u->want_time = 0.0f;
   }
+  return j.switched;
+}
+
+void smgi_upper_plan_dropped(smgi_upper* u, const smgi_lower* lower) {
+  if (lower->count > 0 && u->pending.valid && u->pending.seq != smgi_q_at_c(lower, 0)->seq)
+    u->pending.valid = 0;
 }

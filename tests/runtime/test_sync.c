@@ -26,7 +26,7 @@
 
 #include "bake/bake_graph_helpers.h"
 #include "bake_synthetic.h"
-#include "character_internal.h"
+#include "character_state.h"
 #include "runtime/runtime_testutil.h"
 #include "smg_bake.h"
 

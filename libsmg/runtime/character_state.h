@@ -1,12 +1,13 @@
 /*
- * character_internal.h - what an smg_character is: the stages' own state
+ * character_state.h - what an smg_character is: the stages' own state
  * structs, each defined in its stage's header, composed here. character.c
- * creates and edits it; playback.c steps it (smgi_step) by running the
- * stages in order. Every buffer is carved out of one block allocated at
- * create, so stepping never allocates.
+ * creates and edits it; step.c steps it (smgi_step) by running the stages
+ * in order, handing each its own state and its inputs. Only those two
+ * files include this header. Every buffer is carved out of one block
+ * allocated at create, so stepping never allocates.
  */
-#ifndef SMG_CHARACTER_INTERNAL_H
-#define SMG_CHARACTER_INTERNAL_H
+#ifndef SMG_CHARACTER_STATE_H
+#define SMG_CHARACTER_STATE_H
 
 #include <stdint.h>
 
@@ -21,6 +22,7 @@
 #include "rmath.h"
 #include "smg.h"
 #include "steer.h"
+#include "step_in.h"
 #include "sync.h"
 #include "tuning.h"
 #include "upper.h"
@@ -39,7 +41,7 @@ struct smg_character {
   smgi_constraints cons;
   float anchor[2];         /* where to stay when there is no path to follow */
 
-  /* where the character is along its path (playback.c, update_progress) */
+  /* where the character is along its path (step.c, update_progress) */
   float progress;          /* arc length of the ground position's projection */
   uint32_t seg;            /* segment of that projection */
   float path_error;        /* distance from the path there */
@@ -55,16 +57,26 @@ struct smg_character {
   smgi_ik ik;
 };
 
-/* Queue entry i's ground transform as it is now: the steering keeps the
- * next two entries corrected, further ones get the correction made since
- * they were written when read (steer.h, smgi_lag_apply). */
-static inline smgi_xform2 smgi_q_ground(const smg_character* ch, uint32_t i) {
-  const smgi_qentry* q = smgi_q_at_c(&ch->lower, i);
-  return i < 2u ? q->W : smgi_lag_apply(&ch->steer, q->W);
+/* What every stage may read besides its own state (step_in.h). */
+static inline smgi_step_in smgi_step_in_of(const smg_character* ch) {
+  smgi_step_in in;
+  in.graph = ch->graph;
+  in.path = &ch->path;
+  in.cons = &ch->cons;
+  in.fps = ch->fps;
+  in.progress = ch->progress;
+  in.seg = ch->seg;
+  in.anchor[0] = ch->anchor[0];
+  in.anchor[1] = ch->anchor[1];
+  in.time = ch->time;
+  return in;
 }
 
-/* One frame: plan, advance, upper body, pose, steering, IK, progress
- * (playback.c). */
+/* One frame: steering's re-plan and rate, plan, advance, upper body,
+ * pose, steering, IK, progress (step.c). */
 smg_result smgi_step(smg_character* ch, float dt);
+/* Path, constraints or threshold changed (or the steering asked): drop
+ * the planned entries and what referred to them (step.c). */
+void smgi_character_replan(smg_character* ch);
 
-#endif /* SMG_CHARACTER_INTERNAL_H */
+#endif /* SMG_CHARACTER_STATE_H */

@@ -1,0 +1,84 @@
+/*
+ * steer_envelope.h - what the planner should make of the root steering
+ * (steer.c): the steering's limits and the motion's own speed, copied from
+ * the steering state by the step before planning (smgi_steer_envelope_of,
+ * steer.h), and the inline math that turns them into the part of a path
+ * error the steering will remove. The planner asks this for every root
+ * sample of every sequence it ranks, so it is inline (a call per sample
+ * was a tenth of the planning).
+ */
+#ifndef SMG_STEER_ENVELOPE_H
+#define SMG_STEER_ENVELOPE_H
+
+#include <stdint.h>
+
+#include "tuning.h"
+
+typedef struct smgi_steer_envelope {
+  uint32_t enabled;    /* steering on */
+  float turn_limit;    /* rad/s of heading correction beyond the clip's */
+  float slide_ratio;   /* translation per metre the motion travels */
+  float stop_seconds;  /* braking time at the end */
+  float own_speed;     /* the motion's own ground speed, m/s */
+} smgi_steer_envelope;
+
+/* Turning per metre the steering can add at `speed` m/s: its additive
+ * term is at most speed / SMGI_STEER_TURN_RADIUS and turn_limit. */
+static inline float smgi_steer_plan_curve(const smgi_steer_envelope* s,
+                                          float speed) {
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
+  return k;
+}
+
+/* How far off the path (metres) the steering brings motion back within
+ * its first `u` metres at `speed` m/s (0 with steering off): the part of
+ * an edge's distance error the planner's threshold need not see. The
+ * additive turning k per metre turns the heading by k u and, with the
+ * slide, moves the motion sideways by about ratio u + k u^2 / 2 after u
+ * metres; half of that counts as reachable, since the heading must first
+ * be turned. */
+static inline float smgi_steer_plan_reach(const smgi_steer_envelope* s,
+                                          float u, float speed) {
+  if (!s->enabled || u <= 0.0f) return 0.0f;
+  float k = smgi_steer_plan_curve(s, speed);
+  return 0.5f * (s->slide_ratio * u + 0.5f * k * u * u);
+}
+
+/* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
+static inline float smgi_steer_discount(float e, float reach) {
+  if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
+  return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
+}
+
+/* `d` metres off the path and `a` radians off its direction after the
+ * motion travelled `u` metres at `speed` m/s, as the planner should count
+ * them. Corrections within reach count SMGI_STEER_PLAN_WEIGHT of
+ * themselves, so the planner still prefers motion that needs little
+ * correction; beyond reach in full. Unchanged with steering off. */
+static inline void smgi_steer_plan_view(const smgi_steer_envelope* s,
+                                        float u, float speed, float* d,
+                                        float* a) {
+  if (!s->enabled || u <= 0.0f) return;
+  float k = smgi_steer_plan_curve(s, speed);
+  *d = smgi_steer_discount(*d, 0.5f * (s->slide_ratio * u + 0.5f * k * u * u));
+  *a = smgi_steer_discount(*a, 0.5f * k * u);
+}
+
+/* Whether planning from arc s belongs to coming to rest at the end of a
+ * path `path_length` long (`path_count` points): the end lies within what
+ * the current speed covers in the braking time plus
+ * SMGI_STEER_SETTLE_SECONDS. Where the wanted style has no pose to rest on
+ * (derived style_can_stop: a run), the planner then wants the graph's most
+ * agile style (walking, in any graph that has it), whose frames with both
+ * feet down make a stop. */
+static inline int smgi_steer_settling(const smgi_steer_envelope* s,
+                                      uint32_t path_count, float path_length,
+                                      float arc) {
+  if (!s->enabled || path_count < 2u) return 0;
+  return path_length - arc <
+         s->own_speed * (s->stop_seconds + SMGI_STEER_SETTLE_SECONDS) +
+             SMGI_STEER_STOP_NEAR;
+}
+
+#endif /* SMG_STEER_ENVELOPE_H */

@@ -1,0 +1,144 @@
+/*
+ * step.c - one frame of a character: the stages run in order, each given
+ * its own state and the inputs it reads (docs/architecture.md, "The
+ * step"). This and character.c are the only files that see the whole
+ * character; the stages see what this file hands them. Bounded work, no
+ * allocation.
+ */
+#include <math.h>
+
+#include "character_state.h"
+
+/* Start fetching what this step will touch: in a big crowd these lines
+ * were evicted since the character's last step, and the planner's work
+ * hides the fetches. A hint only (no effect on results). */
+static void prefetch(const smg_character* ch) {
+#if defined(__GNUC__) || defined(__clang__)
+#define PREFETCH_RANGE(ptr, bytes, rw)                                   \
+  do {                                                                   \
+    const char* p_ = (const char*)(ptr);                                 \
+    const size_t n_ = (size_t)(bytes);                                   \
+    for (size_t o_ = 0; o_ < n_; o_ += 64u) __builtin_prefetch(p_ + o_, rw, 3); \
+    __builtin_prefetch(p_ + n_ - 1u, rw, 3);                             \
+  } while (0)
+  const uint32_t J = ch->joint_count;
+  /* The character itself (its fields are read one after the other, so
+   * each line would otherwise miss only when first used), then the pose
+   * and its world transforms, which are rewritten. character.c lays them
+   * out in that order in one block: one range then, else three. */
+  const char* c0 = (const char*)ch;
+  const char* c1 = (const char*)(ch->pose.wrot + 4u * J);
+  if ((const char*)ch->pose.rot > c0 && (const char*)ch->pose.wpos > c0 &&
+      (const char*)ch->pose.wrot > c0 && c1 > c0 &&
+      (size_t)(c1 - c0) <= sizeof *ch + sizeof(float) * 12u * J + 64u) {
+    PREFETCH_RANGE(c0, c1 - c0, 1);
+  } else {
+    PREFETCH_RANGE(ch, sizeof *ch, 1);
+    PREFETCH_RANGE(ch->pose.rot, sizeof(float) * 4u * J, 1);
+    PREFETCH_RANGE(ch->pose.wpos, sizeof(float) * 3u * J, 1);
+    PREFETCH_RANGE(ch->pose.wrot, sizeof(float) * 4u * J, 1);
+  }
+  /* the queue entries the pose is placed with */
+  PREFETCH_RANGE(smgi_q_at_c(&ch->lower, 0), sizeof(smgi_qentry), 0);
+  if (ch->lower.count > 1u) PREFETCH_RANGE(smgi_q_at_c(&ch->lower, 1), sizeof(smgi_qentry), 0);
+  /* the path around the character's projection (progress tracking) */
+  if (ch->seg + 2u < ch->path.count) {
+    PREFETCH_RANGE(ch->path.xz + 2u * ch->seg, sizeof(float) * 6u, 0);
+    PREFETCH_RANGE(ch->path.cum + ch->seg, sizeof(float) * 3u, 0);
+  }
+  /* the lower-body records the playhead is at and goes to next */
+  const smg_graph* g = ch->graph;
+  const smgi_qentry* h = smgi_q_at_c(&ch->lower, 0);
+  const smgi_edge* e = &g->data.lower_edges[h->edge];
+  const uint32_t i0 = (uint32_t)ch->lower.t;
+  if (i0 + 1u < e->frame_count)
+    PREFETCH_RANGE(smgi_graph_pose(g, e->first_frame + i0),
+                   2u * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
+#undef PREFETCH_RANGE
+#else
+  (void)ch;
+#endif
+}
+
+static void update_progress(smg_character* ch) {
+  const smgi_path* p = &ch->path;
+  float dist = 0.0f;
+  if (p->count == 0) {
+    ch->path_error = 0.0f;
+    ch->end_reached = 0;
+    return;
+  }
+  ch->progress =
+      smgi_path_project_local(p, ch->pose.ground[0], ch->pose.ground[1], &ch->seg, &dist);
+  ch->path_error = dist;
+  if (p->count == 1) {
+    ch->end_reached = dist < 0.5f;
+  } else {
+    float ex = p->xz[2u * (p->count - 1u)] - ch->pose.ground[0];
+    float ez = p->xz[2u * (p->count - 1u) + 1u] - ch->pose.ground[1];
+    /* both: at the end of the path by progress (a closed path starts
+     * where it ends) and actually near its last point (a character that
+     * cut across to the last segment has not arrived). Latched until the
+     * path changes: there are no idle clips, so an arrived character
+     * keeps moving around the end point and would flicker. */
+    if (ch->steer.enabled) {
+      /* steered: arrived means standing at the end */
+      ch->end_reached = ch->steer.mode == SMGI_STEER_REST;
+      return;
+    }
+    ch->end_reached = ch->end_reached ||
+                      (ch->progress >= p->length - SMGI_END_EPS &&
+                       ex * ex + ez * ez < SMGI_END_NEAR * SMGI_END_NEAR);
+  }
+}
+
+void smgi_character_replan(smg_character* ch) {
+  const smgi_step_in in = smgi_step_in_of(ch);
+  const smgi_steer_envelope env = smgi_steer_envelope_of(&ch->steer);
+  smgi_replan(&ch->plan, &ch->lower, &in, &env);
+  smgi_upper_plan_dropped(&ch->upper, &ch->lower);
+}
+
+smg_result smgi_step(smg_character* ch, float dt) {
+  const smg_graph* g = ch->graph;
+  prefetch(ch);
+  /* progress and segment stay as the last step left them until
+   * update_progress at the end */
+  const smgi_step_in in = smgi_step_in_of(ch);
+  /* steering: re-plan once its correction since the plan was chosen has
+   * added up; then the playback rate (slower for a tight turn, braking at
+   * the end) */
+  if (smgi_steer_wants_replan(&ch->steer, &in)) {
+    smgi_character_replan(ch);
+    smgi_steer_replanned(&ch->steer);
+  }
+  const float frames = smgi_steer_frames(&ch->steer, &ch->lower, &in, dt);
+  /* planner: keep the horizon planned; this step's frames are guaranteed
+   * whatever the budget */
+  const smgi_steer_envelope env = smgi_steer_envelope_of(&ch->steer);
+  smgi_plan(&ch->plan, &ch->lower, &in, &env, SMGI_PLAN_BUDGET, frames);
+  /* playback */
+  smgi_lower_advance(&ch->lower, g->data.lower_edges, frames);
+  ch->time += (double)dt;
+
+  /* upper body: time advance and crossfade, splice scheduling; entering
+   * an action's edge anew starts synchronization afresh */
+  int entered = smgi_upper_advance(&ch->upper, g, &ch->rng, ch->pose.rot,
+                                   frames, ch->sync.rate, dt);
+  uint32_t key = smgi_q_at(&ch->lower, 0)->seq * 4096u + (uint32_t)ch->lower.t;
+  int new_frame = key != ch->lower.last_frame;
+  ch->lower.last_frame = key;
+  entered |= smgi_upper_update_splice(&ch->upper, &ch->lower, &in, &ch->rng,
+                                      ch->pose.rot, dt, new_frame);
+  if (entered) smgi_sync_reset(&ch->sync);
+  if (new_frame) smgi_sync_update(&ch->sync, &ch->upper, &ch->lower, &in);
+
+  smgi_pose_compose(&ch->pose, &ch->lower, &ch->upper, g);
+  smgi_steer_apply(&ch->steer, &ch->pose, &ch->lower, &in, dt);
+  /* world transforms are cached: IK needs them, and the getters then
+   * only convert (model matrices) or copy (local pose) */
+  smgi_fk(g, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);
+  smgi_ik_apply(&ch->ik, &ch->pose, g, dt);
+  update_progress(ch);
+  return SMG_OK;
+}
