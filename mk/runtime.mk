@@ -10,6 +10,12 @@
 #                         CMU bake is there (make demo-cmu makes one), and
 #                         the test fixture
 #   make synth-example    smg-synth on the synthetic default blob
+#   make synth-compare SYNTH_BASE=REV
+#                         smg-synth's BVH and CSV, byte for byte, against
+#                         the ones git revision REV (default: HEAD) gives
+#                         on the same blobs: default and, when baked, CMU;
+#                         paths, IK, transitions, splices
+#                         (tests/runtime/synth_compare.sh)
 
 SMG_SYNTH := $(BUILD)/smg-synth
 BENCH_RUNTIME := $(BUILD)/bench/bench_runtime
@@ -32,7 +38,7 @@ $(BENCH_RUNTIME): bench/bench_runtime.c $(LIBSMG_A) $(LIB_HDR) tests/fixture_gra
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_TOOL) -O2 -Itests -DSMG_BUILD_DIR='"$(BUILD)"' $< -o $@ $(LIBSMG_A) -lpthread $(LDLIBS_M)
 
-.PHONY: bench-runtime synth-example
+.PHONY: bench-runtime synth-example synth-compare
 bench-runtime: $(BENCH_RUNTIME)
 	$(BENCH_RUNTIME) $(wildcard $(BUILD)/cmu.smg)
 
@@ -41,3 +47,7 @@ synth-example: $(SMG_SYNTH)
 	printf '0 0\n0 4\n3 7\n8 7\n' > $(BUILD)/synth/example-path.txt
 	$(SMG_SYNTH) -g $(BUILD)/default.smg -p $(BUILD)/synth/example-path.txt \
 	  --seconds 10 --fps 30 --csv $(BUILD)/synth/example.csv -o $(BUILD)/synth/example.bvh
+
+SYNTH_BASE ?= HEAD
+synth-compare: $(SMG_SYNTH) $(BUILD)/default.smg
+	sh tests/runtime/synth_compare.sh $(SYNTH_BASE) "$(MAKE)" $(BUILD)

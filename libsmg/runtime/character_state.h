@@ -2,8 +2,9 @@
  * character_state.h - what an smg_character is: the stages' own state
  * structs, each defined in its stage's header, composed here. character.c
  * creates and edits it; step.c steps it (smgi_step) by running the stages
- * in order, handing each its own state and its inputs. Only those two
- * files include this header. Every buffer is carved out of one block
+ * in order, handing each its own state and its inputs. Of the library,
+ * only those two files include this header (a test that inspects a
+ * character's state may too). Every buffer is carved out of one block
  * allocated at create, so stepping never allocates.
  */
 #ifndef SMG_CHARACTER_STATE_H
