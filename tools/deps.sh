@@ -15,7 +15,7 @@ ca-certificates   # fetching over https (CI bootstrap)
 libcglm-dev       # C math used by runtime and baker (header-only)
 libassimp-dev     # baker: glTF/FBX import (offline only, never the runtime)
 libcmocka-dev     # unit tests
-valgrind          # make test-valgrind, fuzz smoke under valgrind
+valgrind          # make test-valgrind, fuzz smoke under valgrind; make soak counts with callgrind (and tests/soak includes its header)
 abigail-tools     # make test-abi: abidw/abidiff against tests/abi/libsmg.abi
 libsdl2-dev       # demo: window, input, GL context
 libglm-dev        # demo (C++ side)

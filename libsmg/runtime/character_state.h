@@ -2,8 +2,9 @@
  * character_state.h - what an smg_character is: the stages' own state
  * structs, each defined in its stage's header, composed here. character.c
  * creates and edits it; step.c steps it (smgi_step) by running the stages
- * in order, handing each its own state and its inputs. Only those two
- * files include this header. Every buffer is carved out of one block
+ * in order, handing each its own state and its inputs. Of the library,
+ * only those two files include this header (a test that inspects a
+ * character's state may too). Every buffer is carved out of one block
  * allocated at create, so stepping never allocates.
  */
 #ifndef SMG_CHARACTER_STATE_H
@@ -12,6 +13,7 @@
 #include <stdint.h>
 
 #include "constraints.h"
+#include "events.h"
 #include "graph_derived.h"
 #include "graph_internal.h"
 #include "ik.h"
@@ -21,6 +23,7 @@
 #include "pose.h"
 #include "rest.h"
 #include "rmath.h"
+#include "root_motion.h"
 #include "smg.h"
 #include "steer.h"
 #include "step_in.h"
@@ -57,6 +60,10 @@ struct smg_character {
   smgi_steer steer;
   smgi_rest rest;
   smgi_ik ik;
+
+  /* for the engine: what the last step did */
+  smgi_events events;
+  smgi_root_motion root_motion;
 };
 
 /* What every stage may read besides its own state (step_in.h). */

@@ -19,9 +19,10 @@ typedef struct smgi_foot {
                           INFINITY: none yet) */
   float floor_y;       /* height the toe was last held at (-INFINITY:
                           none yet) */
-  float stand_y;       /* lowest height the animated toe has stood at:
-                          the floor swing clearance keeps the toe above
-                          (INFINITY: none yet) */
+  float stand_y;       /* lowest height the animated toe has stood at
+                          (on uneven ground: above its ground, as the
+                          data has it): the floor swing clearance keeps
+                          the toe above (INFINITY: none yet) */
   float lift;          /* how far swing clearance raises the foot now */
   float shown[2];      /* x, z of the toe as shown at the previous step
                           (INFINITY: none yet) */
@@ -38,6 +39,22 @@ typedef struct smgi_foot {
                           added (identity when the foot was not solved): the
                           next solve starts from them */
 } smgi_foot;
+
+/* Uneven ground (smg_character_set_ground): heights the engine measured at
+ * the probes before the step; off, the feet stay on the data's flat floor
+ * and nothing below is used. */
+typedef struct smgi_ground {
+  uint32_t on;
+  float foot[2];        /* measured at the foot probes */
+  float root;           /* measured at the root probe */
+  float root_y;         /* the root's ground height as carried (smoothed);
+                           NAN: none yet */
+  float drop;           /* how far the pelvis is lowered, metres */
+  float foot_y[2];      /* ground height each toe is placed on (moves at a
+                           bounded rate); NAN: none yet */
+  float prev_toe[2][2]; /* x, z of each toe at the previous step (probes);
+                           INFINITY: none yet */
+} smgi_ground;
 
 typedef struct smgi_ik {
   uint32_t enabled;
@@ -56,6 +73,7 @@ typedef struct smgi_ik {
   uint32_t* leg_joints;
   uint32_t leg_ok[2];      /* hip > 0, knee's parent hip, ankle's parent knee */
   uint32_t leg_side[2], leg_below[2];
+  smgi_ground ground;
 } smgi_ik;
 
 /* Fill ik->leg_joints and the per-leg counts for the graph's skeleton,
@@ -66,7 +84,8 @@ void smgi_ik_init_legs(smgi_ik* ik, const smg_graph* g, uint8_t* mark);
 void smgi_ik_reset(smgi_ik* ik);
 /* Anchor feet in contact and solve their legs on the pose: its local
  * rotations and the cached world transforms (kept true for every joint
- * moved). */
+ * moved). On uneven ground the body is carried onto it first
+ * (smgi_ground). */
 /* For the next smgi_ik_apply only: hold foot f's toe at (x, z), its ankle
  * `raise` metres above where the animation has it, whatever the contact
  * labels say (rest.c places the feet of a character coming to rest or
@@ -74,5 +93,11 @@ void smgi_ik_reset(smgi_ik* ik);
 void smgi_ik_guide(smgi_ik* ik, uint32_t f, float x, float z, float raise);
 void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
                    float dt);
+/* Ground off (the data's flat floor): nothing carried. */
+void smgi_ground_reset(smgi_ground* ground);
+/* Where the engine should measure the ground for the next step: x, z of
+ * the left and right toes (xz holds 4 floats). */
+void smgi_ground_probes(const smgi_ik* ik, const smgi_pose* pose,
+                        const smg_graph* g, float* xz);
 
 #endif /* SMG_IK_H */

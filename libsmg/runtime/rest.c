@@ -182,12 +182,19 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
     const smgi_xform2 F = {g0[0], g0[1], g0[2]};
     r->M = smgi_xf_mul(sp.G, smgi_xf_inv(F));
     /* its floor on the one the stop stands on (the lower toe as shown):
-     * clips are grounded each on its own lowest point */
+     * clips are grounded each on its own lowest point. The toes as shown
+     * last step stand on the engine's ground where it gave one (ik.c
+     * carries the body onto it after this stage): their heights above
+     * it, in the data's frame this stage lays the motion over */
     const uint32_t tl = info->left_leg[3], tr = info->right_leg[3];
     const uint32_t J = io->in->graph->data.joint_count;
+    const smgi_ground* ground = &io->ik->ground;
+    float under[2] = {0.0f, 0.0f};
+    for (uint32_t f = 0; f < 2u; ++f)
+      if (ground->on && !isnan(ground->foot_y[f])) under[f] = ground->foot_y[f];
     if (tl < J && tr < J)
-      r->rise = fminf(io->pose->wpos[3u * tl + 1u],
-                      io->pose->wpos[3u * tr + 1u]) -
+      r->rise = fminf(io->pose->wpos[3u * tl + 1u] - under[0],
+                      io->pose->wpos[3u * tr + 1u] - under[1]) -
                 idle->floor;
     else
       r->rise = 0.0f;

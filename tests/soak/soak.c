@@ -16,21 +16,20 @@
  *     carry it that far from a path changed under it; more is divergence;
  *   - no allocator call between the last create and the first destroy
  *     (graph and characters use counting allocators);
- *   - with --timing: the step time is flat: the thread CPU time of
- *     stepping all characters, per frame, over the CPU time of reference
- *     characters replaying the same recorded steps, interleaved with them
- *     (soak_timing.h); the lower quartile of that ratio over the last 10 %
- *     of the timed steps is within 10 % of the first 10 %'s. The timed
- *     steps follow SOAK_SETTLE settling ones, and the random use starts
- *     in its steady mix, so both windows are the same kind of work.
- *     --grow G proves the check live: ballast characters stepped with the
- *     soak's add up to G more timed work by the end of the run, and the
- *     run passes only if the check catches that growth.
+ *   - with --instructions OUT (under callgrind, soak_count.h): the work
+ *     of a step does not grow: the instructions of stepping all
+ *     characters over the last window of the timed steps (--window W
+ *     frames, default a tenth of them) are within 10 % of the first
+ *     window's. The timed steps follow SOAK_SETTLE settling ones, and the
+ *     random use starts in its steady mix, so both windows are the same
+ *     kind of work. --grow G proves the check live: ballast characters
+ *     stepped with the soak's add up to G more work by the end of the
+ *     run, and the run passes only if the check catches that growth.
  * Prints one summary line per graph and one in total; exit status 1 on
  * any failed check.
  *
- *   soak [--characters C] [--steps S] [--seed N] [--timing [--grow G]]
- *        GRAPH.smg...
+ *   soak [--characters C] [--steps S] [--seed N]
+ *        [--instructions OUT [--window W] [--grow G]] GRAPH.smg...
  */
 #include <math.h>
 #include <stdio.h>
@@ -40,7 +39,7 @@
 #include "blob.h"
 #include "quat_pack.h"
 #include "smg.h"
-#include "soak_timing.h"
+#include "soak_count.h"
 
 #define SOAK_SPEED_MARGIN 1.5f /* blends, crossfades and IK move the root
                                   a little faster than any one frame pair */
@@ -56,7 +55,7 @@
 #define SOAK_START_TURN 0.1f
 #define SOAK_PATH_POINTS 48
 #define SOAK_MAX_JOINTS 256
-/* --timing: steps before the timed run. All characters start at once,
+/* --instructions: steps before the timed run. All characters start at once,
  * from rest, on new paths: measured (instruction counts of 100 characters
  * per 100 frames, default graph), the first 100 frames are 40 % more work
  * than the steady state and the next 100 frames 10 %; 10 s settles it. */
@@ -105,8 +104,7 @@ typedef struct soak_stats {
   long frames, nonfinite, jumps, path_errors;
   float max_speed, max_path_error, path_bound, data_speed;
   long allocs_after_create;
-  double first_ratio, last_ratio; /* step time / reference (soak_timing.h) */
-  long diverged;                  /* reference cycles that did not repeat */
+  double first, last; /* instructions of the steps in the two windows */
 } soak_stats;
 
 /* The data's fastest root motion: consecutive frames of every lower edge
@@ -278,8 +276,9 @@ static int finite_all(const float* v, size_t n) {
 
 typedef struct soak_options {
   uint32_t chars, steps;
-  int timing;
-  double grow; /* test of the timing check: the timed work per frame grows
+  soak_count* count; /* --instructions: counting the windows, else NULL */
+  uint32_t window;   /* frames per window (0: a tenth of the steps) */
+  double grow; /* test of the growth check: the timed work per frame grows
                   by this share by the end of the run, as a runtime whose
                   steps grow slower would (ballast characters, stepped
                   with the soak's, unchecked: from none at the start to
@@ -303,23 +302,22 @@ static int soak_graph(const char* path, const soak_options* o,
                       soak_stats* s) {
   const uint32_t chars = o->chars, steps = o->steps;
   const uint32_t ballast = (uint32_t)ceil(o->grow * chars);
-  /* With --timing, SOAK_SETTLE steps (checked like all) before the timed
-   * ones: the soak's own start - every character setting off from rest
-   * on a new path at once - is more work than the steady random use. */
-  const uint32_t settle = o->timing ? SOAK_SETTLE : 0;
+  /* With --instructions, SOAK_SETTLE steps (checked like all) before the
+   * timed ones: the soak's own start - every character setting off from
+   * rest on a new path at once - is more work than the steady random use. */
+  const uint32_t settle = o->count ? SOAK_SETTLE : 0;
+  const uint32_t window = o->window ? o->window : (steps + 9) / 10;
   static float rot[4 * SOAK_MAX_JOINTS], mats[16 * SOAK_MAX_JOINTS];
   counter gc = {0, 0}, cc = {0, 0};
   smg_graph_desc gd;
   smg_graph* g = NULL;
   smg_graph_info info;
   soak_char* cs;
-  soak_timing tm;
   size_t size = 0;
   void* blob = read_blob(path, &size);
   long allocs_at_start;
-  uint32_t i, f, group, groups;
+  uint32_t i, f;
   memset(s, 0, sizeof *s);
-  memset(&tm, 0, sizeof tm);
   if (!blob) {
     fprintf(stderr, "soak: cannot read %s\n", path);
     return 1;
@@ -350,7 +348,7 @@ static int soak_graph(const char* path, const soak_options* o,
     d.struct_size = sizeof d;
     d.seed = rnd();
     /* the mix of styles and actions the random edits settle into, from
-     * the start: the timing windows compare like with like */
+     * the start: the counted windows compare like with like */
     d.initial_style = rnd() % info.style_count;
     d.initial_action = rnd() % info.action_count;
     if (rnd() % 4 == 0) d.flags = SMG_CHARACTER_NO_IK; /* as the edits */
@@ -372,11 +370,6 @@ static int soak_graph(const char* path, const soak_options* o,
     fprintf(stderr, "soak: cannot create %u characters\n", chars + ballast);
     return 1;
   }
-  if (o->timing && !soak_timing_init(&tm, g, &info, chars, steps)) return 1;
-  /* with --timing, as many reference steps before each tenth of the
-   * characters */
-  group = o->timing ? (chars + 9) / 10 : chars;
-  groups = (chars + group - 1) / group;
   allocs_at_start = gc.allocs + gc.frees + cc.allocs + cc.frees;
 
   for (f = 0; f < settle + steps; ++f) {
@@ -385,21 +378,24 @@ static int soak_graph(const char* path, const soak_options* o,
     float dt = r == 0 ? 0.0f : r == 1 ? 0.1f : uni(0.5f, 1.5f) / 60.0f;
     const uint32_t timed = f < settle ? 0 : f - settle; /* timed steps */
     uint32_t extra = (uint32_t)(o->grow * chars * ((double)timed / steps));
-    double step_s = 0.0, ref_s = 0.0;
+    /* the two windows: the first and the last `window` timed steps */
+    const int first = o->count && f >= settle && timed < window;
+    const int last = o->count && timed >= steps - window;
     smg_result stepped = SMG_OK;
-    for (i = 0; i < chars; i += group) {
-      uint32_t j, end = i + group < chars ? i + group : chars;
-      double c0;
-      if (o->timing) ref_s += soak_timing_reference_steps(&tm, end - i);
-      c0 = soak_cpu_seconds();
-      for (j = i; j < end; ++j)
-        if (smg_character_step(cs[j].ch, dt) != SMG_OK) stepped = SMG_ERROR_IO;
-      for (j = i / group; j < extra; j += groups) /* --grow */
-        if (smg_character_step(cs[chars + j].ch, dt) != SMG_OK)
-          stepped = SMG_ERROR_IO;
-      step_s += soak_cpu_seconds() - c0;
-    }
-    if (o->timing && f >= settle) soak_timing_record(&tm, timed, step_s, ref_s);
+    if ((first || last) && (timed == 0 || timed == steps - window))
+      soak_count_window_begin();
+    if (first || last) soak_count_on();
+    for (i = 0; i < chars; ++i)
+      if (smg_character_step(cs[i].ch, dt) != SMG_OK) stepped = SMG_ERROR_IO;
+    for (i = 0; i < extra; ++i) /* --grow */
+      if (smg_character_step(cs[chars + i].ch, dt) != SMG_OK)
+        stepped = SMG_ERROR_IO;
+    if (first || last) soak_count_off();
+    if ((first && timed == window - 1 &&
+         !soak_count_window_end(o->count, "soak: first window", &s->first)) ||
+        (last && timed == steps - 1 &&
+         !soak_count_window_end(o->count, "soak: last window", &s->last)))
+      return 1;
     for (i = 0; i < extra; ++i) feed_ballast(&cs[chars + i]);
     for (i = 0; i < chars; ++i) {
       soak_char* c = &cs[i];
@@ -451,11 +447,6 @@ static int soak_graph(const char* path, const soak_options* o,
   }
   s->allocs_after_create =
       gc.allocs + gc.frees + cc.allocs + cc.frees - allocs_at_start;
-  if (o->timing) {
-    soak_timing_windows(&tm, &s->first_ratio, &s->last_ratio);
-    s->diverged = tm.diverged;
-    soak_timing_free(&tm);
-  }
   for (i = 0; i < chars + ballast; ++i) smg_character_destroy(cs[i].ch);
   smg_graph_destroy(g);
   free(cs);
@@ -463,19 +454,20 @@ static int soak_graph(const char* path, const soak_options* o,
   return 0;
 }
 
-/* The step-time check: within SOAK_FLAT of flat; with --grow, the
- * injected growth must be caught instead. */
+/* The growth check: within SOAK_FLAT of flat; with --grow, the injected
+ * growth must be caught instead. */
 #define SOAK_FLAT 0.10
 
 int main(int argc, char** argv) {
-  soak_options o = {100, 10000, 0, 0.0};
+  soak_options o = {100, 10000, NULL, 0, 0.0};
+  soak_count count = {NULL, 0};
   int argi, bad = 0, graphs = 0;
   long total = 0;
   for (argi = 1; argi < argc; ++argi) {
     soak_stats s;
-    double drift;
+    double drift, per = 0.0;
     int ok, flat, caught;
-    char timing[256];
+    char growth[256];
     if (strcmp(argv[argi], "--characters") == 0 && argi + 1 < argc) {
       o.chars = (uint32_t)strtoul(argv[++argi], NULL, 10);
       continue;
@@ -488,54 +480,72 @@ int main(int argc, char** argv) {
       g_rng = (uint32_t)strtoul(argv[++argi], NULL, 10) | 1u;
       continue;
     }
-    if (strcmp(argv[argi], "--timing") == 0) {
-      o.timing = 1;
+    if (strcmp(argv[argi], "--instructions") == 0 && argi + 1 < argc) {
+      count.out = argv[++argi];
+      o.count = &count;
+      continue;
+    }
+    if (strcmp(argv[argi], "--window") == 0 && argi + 1 < argc) {
+      o.window = (uint32_t)strtoul(argv[++argi], NULL, 10);
       continue;
     }
     if (strcmp(argv[argi], "--grow") == 0 && argi + 1 < argc) {
       o.grow = strtod(argv[++argi], NULL);
       continue;
     }
+    if (o.count && !soak_count_available()) {
+      fprintf(stderr,
+              "soak: --instructions counts with callgrind: run under "
+              "valgrind --tool=callgrind --instr-atstart=no "
+              "--collect-atstart=no --callgrind-out-file=%s\n",
+              count.out);
+      return 1;
+    }
     if (o.chars == 0 || o.steps < 10 || !(o.grow >= 0.0 && o.grow <= 1.0) ||
-        (o.grow > 0.0 && !o.timing) || soak_graph(argv[argi], &o, &s)) {
+        (o.grow > 0.0 && !o.count) || 2u * o.window > o.steps ||
+        soak_graph(argv[argi], &o, &s)) {
       fprintf(stderr, "soak: %s: could not run\n", argv[argi]);
       return 1;
     }
-    drift = s.first_ratio > 0.0 ? s.last_ratio / s.first_ratio - 1.0 : 0.0;
+    drift = s.first > 0.0 ? s.last / s.first - 1.0 : 0.0;
     flat = fabs(drift) <= SOAK_FLAT;
     caught = drift > SOAK_FLAT; /* an injected growth, seen as one */
-    if (!o.timing)
-      snprintf(timing, sizeof timing, "step time not measured");
+    if (o.count) {
+      const uint32_t w = o.window ? o.window : (o.steps + 9) / 10;
+      per = s.first / ((double)w * o.chars);
+    }
+    if (!o.count)
+      snprintf(growth, sizeof growth, "step work not counted");
     else
-      snprintf(timing, sizeof timing,
-               "step time / replayed reference (lower quartile per frame) "
-               "first vs last 10 %% %.3f vs %.3f (%+.1f %%, limit %.0f %%%s)%s",
-               s.first_ratio, s.last_ratio, 100.0 * drift, 100.0 * SOAK_FLAT,
-               s.diverged ? ", reference replays DIVERGED" : "",
+      snprintf(growth, sizeof growth,
+               "instructions of the steps, first vs last window %.4g vs "
+               "%.4g (%.0f per character-step; %+.2f %%, limit %.0f %%)%s",
+               s.first, s.last, per, 100.0 * drift, 100.0 * SOAK_FLAT,
                o.grow > 0.0 ? (caught ? ", injected growth caught"
                                       : ", injected growth MISSED")
                             : "");
     ok = s.nonfinite == 0 && s.jumps == 0 && s.path_errors == 0 &&
          s.allocs_after_create == 0 &&
-         (!o.timing || (s.diverged == 0 && (o.grow > 0.0 ? caught : flat)));
+         (!o.count || (o.grow > 0.0 ? caught : flat));
     printf("soak: %s: %ld character-frames (%u characters x %u steps%s): "
            "%ld non-finite, %ld root jumps (fastest %.2f m/s, data %.2f m/s), "
            "path error max %.2f m (bound %.2f m, %ld over), %ld allocator "
            "calls after create, %s: %s\n",
            argv[argi], s.frames, o.chars, o.steps,
-           o.timing ? " timed after " SOAK_STR(SOAK_SETTLE) " settling" : "",
+           o.count ? " timed after " SOAK_STR(SOAK_SETTLE) " settling" : "",
            s.nonfinite, s.jumps,
            (double)s.max_speed, (double)s.data_speed,
            (double)s.max_path_error, (double)s.path_bound, s.path_errors,
-           s.allocs_after_create, timing, ok ? "ok" : "FAILED");
+           s.allocs_after_create, growth, ok ? "ok" : "FAILED");
+    fflush(stdout);
     bad |= !ok;
     total += s.frames;
     ++graphs;
   }
   if (!graphs) {
     fprintf(stderr,
-            "usage: soak [--characters C] [--steps S] [--seed N] [--timing "
-            "[--grow G]] GRAPH.smg...\n");
+            "usage: soak [--characters C] [--steps S] [--seed N] "
+            "[--instructions OUT [--window W] [--grow G]] GRAPH.smg...\n");
     return 2;
   }
   printf("soak: %ld character-frames on %d graph(s): %s\n", total, graphs,

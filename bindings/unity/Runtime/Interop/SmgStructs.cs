@@ -168,4 +168,67 @@ namespace Smg
             return new SmgCharacterState { StructSize = Size };
         }
     }
+
+    /// <summary>Two floats: a C float[2] (per foot: left, right).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgFloat2
+    {
+        public float X, Y;
+    }
+
+    /// <summary>smg_event: one entry of smg_character_get_events.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgEvent
+    {
+        public uint StructSize;
+        public uint Type;
+        public uint Id;
+        public uint Value;
+        public uint Flags;
+        public SmgFloat3 Position;
+        public float Strength;
+        public float ArcLength;
+        public uint Reserved0;
+        public uint Reserved1;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgEvent));
+    }
+
+    /// <summary>smg_root_motion.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgRootMotion
+    {
+        public uint StructSize;
+        public uint Flags;
+        public SmgFloat3 Translation;
+        public float Yaw;
+        public SmgFloat3 LocalTranslation;
+        public float Reserved0;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgRootMotion));
+
+        public static SmgRootMotion Create()
+        {
+            return new SmgRootMotion { StructSize = Size };
+        }
+    }
+
+    /// <summary>smg_ground: heights at the probes of
+    /// smg_character_get_ground_probes.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgGround
+    {
+        public uint StructSize;
+        public uint Flags;
+        public SmgFloat2 FootHeight;
+        public float RootHeight;
+        public float Reserved0;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgGround));
+
+        public static SmgGround Create()
+        {
+            return new SmgGround { StructSize = Size };
+        }
+    }
 }
