@@ -5,6 +5,8 @@
  * character's own motion; one that stops it at a wall (sliding along it)
  * moves no joint further in a step than the free motion's own steps do,
  * and once the wall is gone the character is back on its path within 1 s.
+ * A character standing at its path's end (the rest stage holding its
+ * feet) keeps its feet under it when the mover moves and turns it.
  * Argument checks. Uses build/default.smg.
  */
 #include <setjmp.h>
@@ -169,6 +171,57 @@ static void test_wall(void** state) {
   free(t);
 }
 
+/* Toe positions (x, y, z) of both feet in character space. */
+static void toes_in_character_space(smg_character* ch, const uint32_t* toe, uint32_t J,
+                                    float* out) {
+  float mats[16 * MAXJ];
+  assert_int_equal(smg_character_get_model_matrices(ch, SMG_SPACE_CHARACTER, mats, J), SMG_OK);
+  for (int f = 0; f < 2; ++f)
+    for (int k = 0; k < 3; ++k) out[3 * f + k] = mats[16u * toe[f] + 12u + (uint32_t)k];
+}
+
+static void test_mover_moves_a_standing_character(void** state) {
+  smg_graph* g = (smg_graph*)*state;
+  smg_graph_info info;
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
+  assert_true(info.joint_count <= MAXJ);
+  uint32_t toe[2];
+  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
+  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  smg_character* ch = NULL;
+  assert_int_equal(smg_character_create(g, NULL, &ch), SMG_OK);
+  float xz[2 * 8];
+  rt_line(xz, 8, 4.0f);
+  assert_int_equal(smg_character_set_path(ch, xz, 8), SMG_OK);
+  /* to the end, then standing for a while */
+  for (int i = 0; i < 10 * (int)FPS; ++i)
+    assert_int_equal(smg_character_step(ch, 1.0f / FPS), SMG_OK);
+  smg_character_state s;
+  memset(&s, 0, sizeof s);
+  s.struct_size = sizeof s;
+  assert_int_equal(smg_character_get_state(ch, &s), SMG_OK);
+  assert_true(s.flags & SMG_STATE_PATH_END_REACHED);
+  float before[6], after[6];
+  toes_in_character_space(ch, toe, info.joint_count, before);
+  /* the engine's mover puts it 1.1 m away, turned by 0.6 rad */
+  const float to[3] = {s.position[0] + 1.0f, s.position[1], s.position[2] + 0.5f};
+  assert_int_equal(smg_character_set_ground_position(ch, to, s.heading + 0.6f), SMG_OK);
+  float worst = 0.0f;
+  for (int i = 0; i < (int)FPS; ++i) {
+    assert_int_equal(smg_character_step(ch, 1.0f / FPS), SMG_OK);
+    toes_in_character_space(ch, toe, info.joint_count, after);
+    for (int k = 0; k < 6; ++k)
+      if (fabsf(after[k] - before[k]) > worst) worst = fabsf(after[k] - before[k]);
+  }
+  printf("standing character moved 1.1 m and turned 0.6 rad by the mover: its toes "
+         "stay within %.3f m of where they stood under it\n",
+         worst);
+  assert_true(worst < 0.02f);
+  assert_int_equal(smg_character_destroy(ch), SMG_OK);
+}
+
 static void test_arguments(void** state) {
   smg_graph* g = (smg_graph*)*state;
   smg_character* ch = NULL;
@@ -215,6 +268,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_mover_without_walls_is_the_motion),
       cmocka_unit_test(test_wall),
+      cmocka_unit_test(test_mover_moves_a_standing_character),
       cmocka_unit_test(test_arguments),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
