@@ -56,5 +56,12 @@ namespace Smg
         {
             return -yawDegrees * (float)(Math.PI / 180.0);
         }
+
+        /// <summary>A point or displacement in the other frame (the same
+        /// map both ways): (x, y, z) -> (-x, y, z).</summary>
+        public static SmgFloat3 Point(SmgFloat3 p)
+        {
+            return new SmgFloat3(-p.X, p.Y, p.Z);
+        }
     }
 }

@@ -139,6 +139,15 @@ namespace Smg
         public static extern SmgResult smg_character_set_swing_clearance(SmgCharacter character, uint enabled, float clearance);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_set_ground_position(SmgCharacter character, float* position, float heading);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_get_ground_probes(SmgCharacter character, float* xz, uint count);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_set_ground(SmgCharacter character, SmgGround* ground);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_step(SmgCharacter character, float dt);
 
         [DllImport(Library, CallingConvention = Cdecl)]
@@ -149,5 +158,13 @@ namespace Smg
 
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_get_model_matrices(SmgCharacter character, SmgSpace space, float* matrices, uint jointCount);
+
+        // --- After the step: events and root motion ---
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_get_events(SmgCharacter character, SmgEvent* events, uint capacity, out uint outCount);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_get_root_motion(SmgCharacter character, SmgRootMotion* outMotion);
     }
 }

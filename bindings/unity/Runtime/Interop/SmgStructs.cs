@@ -168,4 +168,80 @@ namespace Smg
             return new SmgCharacterState { StructSize = Size };
         }
     }
+
+    /// <summary>Two floats: a C float[2] (per foot: left, right).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgFloat2
+    {
+        public float X, Y;
+
+        public SmgFloat2(float x, float y)
+        {
+            X = x;
+            Y = y;
+        }
+    }
+
+    /// <summary>smg_event: one entry of smg_character_get_events.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgEvent
+    {
+        public uint StructSize;
+        public SmgEventType Type;
+        /// <summary>Constraint: the id AddTransition/AddSplice returned (0:
+        /// a change no constraint asked for). Footstep: 0 left, 1 right.</summary>
+        public uint Id;
+        /// <summary>Constraint: its style or action.</summary>
+        public uint Value;
+        public SmgEventFlags Flags;
+        /// <summary>Footstep: the toe where it landed (world); others: the
+        /// character's ground position.</summary>
+        public SmgFloat3 Position;
+        /// <summary>Footstep: the toe's downward speed as it landed, m/s.</summary>
+        public float Strength;
+        public float ArcLength;
+        public uint Reserved0;
+        public uint Reserved1;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgEvent));
+    }
+
+    /// <summary>smg_root_motion: the ground position's displacement over
+    /// the last step.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgRootMotion
+    {
+        public uint StructSize;
+        public uint Flags;
+        public SmgFloat3 Translation;
+        public float Yaw;
+        public SmgFloat3 LocalTranslation;
+        public float Reserved0;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgRootMotion));
+
+        public static SmgRootMotion Create()
+        {
+            return new SmgRootMotion { StructSize = Size };
+        }
+    }
+
+    /// <summary>smg_ground: ground heights at the probes of
+    /// smg_character_get_ground_probes (left foot, right foot, root).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SmgGround
+    {
+        public uint StructSize;
+        public uint Flags;
+        public SmgFloat2 FootHeight;
+        public float RootHeight;
+        public float Reserved0;
+
+        public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgGround));
+
+        public static SmgGround Create()
+        {
+            return new SmgGround { StructSize = Size };
+        }
+    }
 }
