@@ -63,5 +63,23 @@ namespace Smg
         {
             return new SmgFloat3(-p.X, p.Y, p.Z);
         }
+
+        /// <summary>The root motion of the last step for a mover in the
+        /// mirrored frame: the world displacement (metres) and the change
+        /// of yaw about +Y in degrees (Unity's eulerAngles.y).</summary>
+        public static void RootMotion(in SmgRootMotion motion, out SmgFloat3 displacement, out float yawDegrees)
+        {
+            displacement = Point(motion.Translation);
+            yawDegrees = HeadingToYawDegrees(motion.Yaw);
+        }
+
+        /// <summary>Tells `character` where the mover put it: a position in
+        /// the mirrored frame (y: the floor there) and a yaw in degrees.</summary>
+        public static void SetGroundPosition(SmgCharacter character, SmgFloat3 position, float yawDegrees)
+        {
+            if (character == null)
+                throw new ArgumentNullException(nameof(character));
+            character.SetGroundPosition(Point(position), YawDegreesToHeading(yawDegrees));
+        }
     }
 }
