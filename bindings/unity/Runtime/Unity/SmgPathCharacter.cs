@@ -253,13 +253,19 @@ namespace Smg.Unity
 
         // A failure (a bad marker name, a path libsmg refuses, ...) is
         // logged once and disables the component, instead of throwing again
-        // every frame.
+        // every frame. The step's events are raised after it, outside that
+        // guard: an exception in a handler is the handler's (Unity logs it),
+        // not a reason to stop the character.
         void Update()
         {
             if (Character == null)
                 return;
             if (!frameGuard.Run(stepFrame))
+            {
                 enabled = false;
+                return;
+            }
+            events.Dispatch(this);
         }
 
         void StepFrame()
@@ -287,7 +293,6 @@ namespace Smg.Unity
                     ApplyMove();
             }
             events.Read(Character);
-            events.Dispatch(this);
         }
 
         // The Animator calls this after evaluating, before LateUpdate, when
