@@ -81,6 +81,11 @@ namespace Smg.Tests
                     ch.AddSplice(9.0f, 0),
                     ch.AddSplice(9.5f, 2), // may overtake the previous one: superseded then
                 };
+                // a splice overtaken by the next one 1 cm on, before any
+                // splice candidate could show it
+                uint overtaken = ch.AddSplice(17.0f, 1);
+                ids.Add(overtaken);
+                ids.Add(ch.AddSplice(17.01f, 2));
                 var queue = new SmgEventQueue(0);
                 var rec = new Recorder
                 {
@@ -106,6 +111,8 @@ namespace Smg.Tests
                     if (ended)
                         ++afterEnd;
                 }
+                Console.WriteLine("events: reached " + string.Join(",", rec.Reached.Keys) + "; superseded "
+                                  + string.Join(",", rec.Superseded.Keys) + "; footsteps " + rec.Steps.Count);
                 Assert.IsTrue(ended, "arrived");
                 Assert.AreEqual(1, rec.PathEnds, "one path end");
                 foreach (uint id in ids)
@@ -113,6 +120,7 @@ namespace Smg.Tests
                     int r = rec.Reached.TryGetValue(id, out int a) ? a : 0, s = rec.Superseded.TryGetValue(id, out int b) ? b : 0;
                     Assert.AreEqual(1, r + s, "constraint " + id + ": one event (reached " + r + ", superseded " + s + ")");
                 }
+                Assert.IsTrue(rec.Superseded.ContainsKey(overtaken), "the overtaken splice is reported superseded");
                 Assert.AreEqual(2, rec.Reached.ContainsKey(ids[0]) && rec.Reached.ContainsKey(ids[1]) ? 2 : 0,
                                 "both transitions took effect");
                 int left = 0, right = 0;
