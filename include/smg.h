@@ -406,7 +406,9 @@ typedef struct smg_character_state {
   uint32_t flags;        /* SMG_STATE_* */
   uint32_t style;        /* current lower-body style */
   uint32_t action;       /* current upper-body action */
-  float position[3];     /* root projected on the ground (y = 0) */
+  float position[3];     /* root projected on the ground (y: the ground
+                            height there, 0 unless smg_character_set_ground
+                            or _set_ground_position gave one) */
   float heading;         /* facing, radians */
   float path_distance;   /* arc length travelled along the current path */
   float path_error;      /* current distance of the root from the path */
@@ -442,6 +444,107 @@ SMG_API smg_result smg_character_get_local_pose(
 SMG_API smg_result smg_character_get_model_matrices(
     const smg_character* character, uint32_t space, float* matrices,
     uint32_t joint_count);
+
+/* --- Events: what happened in the last step (docs/api-guide.md,
+ * "Events"). Read after smg_character_step; each step replaces them. --- */
+
+#define SMG_EVENT_CONSTRAINT 1u /* a transition or splice took effect */
+#define SMG_EVENT_FOOTSTEP 2u   /* a foot landed */
+#define SMG_EVENT_PATH_END 3u   /* arrived at the path's end */
+
+/* smg_event.flags */
+#define SMG_EVENT_SPLICE 1u     /* CONSTRAINT: an action (else a style) */
+#define SMG_EVENT_SUPERSEDED 2u /* CONSTRAINT: will never take effect: a
+                                   later one of its kind (or set_style /
+                                   set_action) took over first */
+#define SMG_EVENT_UNCHANGED 4u  /* CONSTRAINT: reached while its style or
+                                   action was already shown */
+
+typedef struct smg_event {
+  uint32_t struct_size; /* events[0].struct_size = sizeof(smg_event): the
+                           element size of the caller's array */
+  uint32_t type;        /* SMG_EVENT_* */
+  uint32_t id;          /* CONSTRAINT: the id add_transition/_add_splice
+                           returned; 0 for a change no constraint asked
+                           for (set_style/set_action, the steering walking
+                           to a stop). FOOTSTEP: 0 left, 1 right */
+  uint32_t value;       /* CONSTRAINT: its style or action */
+  uint32_t flags;       /* SMG_EVENT_SPLICE, _SUPERSEDED, _UNCHANGED */
+  float position[3];    /* FOOTSTEP: the toe where it landed (world);
+                           others: the character's ground position */
+  float strength;       /* FOOTSTEP: the toe's downward speed over about
+                           the last 0.1 s of its descent, m/s (how hard
+                           it landed); 0 for other events */
+  float arc_length;     /* path distance of the character at that step */
+  uint32_t reserved0, reserved1;
+} smg_event;
+
+/* The events of the last step, in the order they happened within it.
+ * Every constraint gives exactly one CONSTRAINT event: at the step whose
+ * frame first shows its style or action, or flagged UNCHANGED /
+ * SUPERSEDED; a removed one gives none. The queue holds
+ * constraint_capacity + 5 events, enough for any step.
+ * events NULL and capacity 0: *out_count = how many there are. With
+ * capacity below the count: SMG_ERROR_BUFFER_TOO_SMALL, *out_count = the
+ * count, nothing written. */
+SMG_API smg_result smg_character_get_events(const smg_character* character,
+                                            smg_event* events,
+                                            uint32_t capacity,
+                                            uint32_t* out_count);
+
+/* --- Root motion for the engine's mover (docs/api-guide.md, "Root
+ * motion"). --- */
+
+typedef struct smg_root_motion {
+  uint32_t struct_size;       /* caller sets = sizeof(smg_root_motion) */
+  uint32_t flags;             /* 0 (reserved) */
+  float translation[3];       /* world displacement of the ground position
+                                 over the last step, metres (y: the change
+                                 of the ground height under it) */
+  float yaw;                  /* heading change, radians (+ = left) */
+  float local_translation[3]; /* the same displacement in the character's
+                                 frame at the start of the step (x: left,
+                                 y: up, z: forward, as heading 0 faces +Z) */
+  float reserved0;
+} smg_root_motion;
+
+SMG_API smg_result smg_character_get_root_motion(
+    const smg_character* character, smg_root_motion* out_motion);
+
+/* Where the engine's mover put the character after the last step (its
+ * collisions): ground position (y = the floor height there) and heading.
+ * The character's committed motion, plan, steering and planted feet move
+ * with it rigidly - the pose in character space does not change, nothing
+ * pops - and steering and planning go on from there back to the path.
+ * Finite, |x| and |z| below SMG_MAX_COORDINATE, |y| below it too. */
+SMG_API smg_result smg_character_set_ground_position(
+    smg_character* character, const float* position, float heading);
+
+/* --- Uneven ground (docs/api-guide.md, "Uneven ground"): heights the
+ * engine measures before each step; nothing is called back. --- */
+
+typedef struct smg_ground {
+  uint32_t struct_size;  /* caller sets = sizeof(smg_ground) */
+  uint32_t flags;        /* 0 (reserved) */
+  float foot_height[2];  /* ground height (world y) at the left and right
+                            probes of smg_character_get_ground_probes */
+  float root_height;     /* ground height at the root probe */
+  float reserved0;
+} smg_ground;
+
+/* Where to measure the ground for the next step: `count` (= 3) points
+ * (x, z) in xz - left foot, right foot, root - where they are expected:
+ * a planted foot's toe, a swinging toe carried on by its speed, the ground
+ * position carried on by the character's. */
+SMG_API smg_result smg_character_get_ground_probes(
+    const smg_character* character, float* xz, uint32_t count);
+
+/* The ground for the next steps, measured at the probes; NULL: flat at
+ * y = 0 again (the default). Heights finite, below SMG_MAX_COORDINATE in
+ * magnitude. Planted toes are held on their heights, the pelvis lowers
+ * where a leg could not reach, and the root follows root_height. */
+SMG_API smg_result smg_character_set_ground(smg_character* character,
+                                            const smg_ground* ground);
 
 #ifdef __cplusplus
 } /* extern "C" */

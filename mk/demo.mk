@@ -66,10 +66,12 @@ $(DEMO_BODYTEST): demo/tools/body_test.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/
 	@mkdir -p $(dir $@)
 	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
 
-# The generated body as a glTF file for engines (the Godot demo loads it).
-$(DEMO_BODYGLTF): demo/tools/body_gltf.cpp $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) demo/body.h demo/body_graph.h
+# The generated body as a glTF file for engines (the Godot demo loads it),
+# through the export tools' glTF writer (mk/gltf.mk, named by path: that
+# fragment is read after this one).
+$(DEMO_BODYGLTF): demo/tools/body_gltf.cpp $(BUILD)/libsmg_gltf.a $(DEMO_LIBSMG) $(wildcard tools/gltf/*.h)
 	@mkdir -p $(dir $@)
-	$(CXX) $(DEMO_CXXFLAGS) $< $(DEMO_BODY_OBJ) $(DEMO_LIBSMG) -o $@ -lm
+	$(CXX) $(DEMO_CXXFLAGS) -Itools/gltf $< $(BUILD)/libsmg_gltf.a $(DEMO_LIBSMG) -o $@ -lm
 
 .PHONY: demo demo-cmu test-demo demo-pictures demo-build
 demo-build: $(DEMO_BIN) $(DEMO_PNGCHECK) $(DEMO_BODYTEST) $(DEMO_BODYGLTF)

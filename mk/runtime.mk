@@ -1,5 +1,6 @@
-# Runtime part (issue 4): the smg-synth CLI (runtime only: libsmg.a, no
-# baker, no assimp) and the runtime benchmark.
+# Runtime part (issue 4): the smg-synth CLI (libsmg.a and the glTF writer
+# for --glb, build/libsmg_gltf.a from mk/gltf.mk; no baker, no assimp) and
+# the runtime benchmark.
 #
 #   build/smg-synth       offline driver: blob + path file -> BVH (+ CSV)
 #   make bench-runtime    step+pose cost per character vs plain clip
@@ -16,9 +17,14 @@ BENCH_RUNTIME := $(BUILD)/bench/bench_runtime
 ALL_TARGETS += $(SMG_SYNTH)
 BENCH_TARGETS += bench-runtime
 
-$(SMG_SYNTH): tools/smg_synth.c $(LIBSMG_A) include/smg.h
+# C, linked as C++: the glTF writer carries the (C++) generated body.
+$(BUILD)/obj/tools/smg_synth.o: tools/smg_synth.c include/smg.h $(GLTF_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_TOOL) $< -o $@ $(LIBSMG_A) $(LDLIBS_M)
+	$(CC) $(CFLAGS_TOOL) -Itools/gltf -c $< -o $@
+
+$(SMG_SYNTH): $(BUILD)/obj/tools/smg_synth.o $(LIBSMG_GLTF_A) $(LIBSMG_A)
+	@mkdir -p $(dir $@)
+	$(CXX) $(OPT) $< -o $@ $(LIBSMG_GLTF_A) $(LIBSMG_A) $(GLTF_LDLIBS)
 
 # The benchmark builds the fixture graph in-process (tests/fixture_graph.h)
 # and also measures build/default.smg when it exists.

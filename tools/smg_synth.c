@@ -3,13 +3,15 @@
  * character a path (and transition/splice points), step it at a fixed rate
  * for N seconds and write the motion as BVH on the blob's skeleton (metres),
  * optionally with a per-frame CSV of root, contacts and path tracking for
- * evaluation tools.
+ * evaluation tools, and as glTF 2.0 (.glb) for engines and DCC tools: the
+ * skeleton, the take as one animation and the generated skinned body
+ * (tools/gltf; --no-body for the skeleton alone).
  *
  *   smg-synth -g BLOB -p PATH.txt [--transition S:style]... [--splice
  *             S:action]... [--seconds N] [--fps F] [--seed N] [--no-ik]
  *             [--no-steering] [--steer-turn-rate R] [--steer-slide-ratio F]
  *             [--stop-seconds S] [--no-swing-clearance] [--swing-clearance M]
- *             [--csv FILE] -o OUT.bvh
+ *             [--csv FILE] [--glb FILE [--no-body]] -o OUT.bvh
  *
  * PATH.txt holds one "x z" pair (metres) per line; '#' starts a comment.
  * style/action are names from the blob (smg-bake --info lists them) or
@@ -21,6 +23,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gltf_body.h"
+#include "gltf_write.h"
 #include "smg.h"
 
 #define MAX_CONSTRAINTS 256
@@ -37,6 +41,7 @@ static void usage(FILE* f) {
           "[--splice S:action]...\n"
           "                 [--seconds N] [--fps F] [--seed N] [--no-ik] "
           "[--csv FILE] -o OUT.bvh\n"
+          "                 [--glb FILE.glb [--no-body]]\n"
           "                 [--no-steering] [--steer-turn-rate RAD_PER_S] "
           "[--steer-slide-ratio F] [--stop-seconds S]\n"
           "                 [--no-swing-clearance] [--swing-clearance M]\n"
@@ -147,6 +152,55 @@ static void quat_to_zyx(const float* q, double* z, double* y, double* x) {
   }
 }
 
+/* The take as glTF: the generated body skinned to the skeleton when the
+ * skeleton gives one (else, or with no_body, the skeleton alone), the
+ * frames as one animation. */
+static int write_glb(const char* file, smg_graph* g, uint32_t J,
+                     const float* frames, size_t stride, long nframes,
+                     float fps, int no_body) {
+  char error[512];
+  gltf_body body;
+  gltf_skeleton rest;
+  gltf_animation anim;
+  gltf_scene scene;
+  int32_t* parent = (int32_t*)malloc(sizeof(int32_t) * J);
+  const char** name = (const char**)malloc(sizeof(char*) * J);
+  float* translation = (float*)malloc(sizeof(float) * 3 * J);
+  int has_body = 0;
+  smg_result r = SMG_ERROR_OUT_OF_MEMORY;
+  memset(&scene, 0, sizeof scene);
+  if (parent && name && translation)
+    r = gltf_skeleton_from_graph(g, J, parent, name, translation, &rest);
+  if (r == SMG_OK && !no_body) {
+    has_body = gltf_body_from_graph(g, &body, error, sizeof error) == SMG_OK;
+    if (!has_body)
+      fprintf(stderr, "smg-synth: %s: no body (%s): skeleton only\n", file,
+              error);
+  }
+  if (r == SMG_OK) {
+    anim.frame_count = (uint32_t)nframes;
+    anim.fps = fps;
+    anim.frames = frames;
+    anim.stride = stride;
+    scene.generator = "libsmg smg-synth (generated body, not a scanned or "
+                      "modelled character)";
+    scene.root_name = "Character";
+    scene.mesh_name = "BodyMesh";
+    scene.skeleton = has_body ? &body.skeleton : &rest;
+    scene.mesh = has_body ? &body.mesh : NULL;
+    scene.animation = &anim;
+    r = gltf_write_file(file, &scene, GLTF_BINARY, error, sizeof error);
+    if (r != SMG_OK) fprintf(stderr, "smg-synth: %s\n", error);
+  } else {
+    fprintf(stderr, "smg-synth: %s: %s\n", file, smg_result_string(r));
+  }
+  if (has_body) gltf_body_free(&body);
+  free(parent);
+  free((void*)name);
+  free(translation);
+  return r == SMG_OK;
+}
+
 static void write_hierarchy(FILE* f, const smg_graph* g, uint32_t J,
                             uint32_t j, int depth) {
   smg_joint_info ji;
@@ -193,7 +247,8 @@ static void write_hierarchy(FILE* f, const smg_graph* g, uint32_t J,
 
 int main(int argc, char** argv) {
   const char *blob = NULL, *path_file = NULL, *out_file = NULL,
-             *csv_file = NULL;
+             *csv_file = NULL, *glb_file = NULL;
+  int no_body = 0;
   float seconds = 10.0f, fps = 30.0f;
   uint32_t seed = 0, no_ik = 0, no_steering = 0, no_swing = 0;
   float steer_turn = 0.0f, steer_slide = 0.0f, stop_seconds = 0.0f;
@@ -215,6 +270,9 @@ int main(int argc, char** argv) {
     } else if (!strcmp(a, "--no-swing-clearance")) {
       no_swing = 1;
       continue;
+    } else if (!strcmp(a, "--no-body")) {
+      no_body = 1;
+      continue;
     }
     if (!v) {
       fprintf(stderr, "smg-synth: %s needs a value\n", a);
@@ -230,6 +288,8 @@ int main(int argc, char** argv) {
       out_file = v;
     } else if (!strcmp(a, "--csv")) {
       csv_file = v;
+    } else if (!strcmp(a, "--glb")) {
+      glb_file = v;
     } else if (!strcmp(a, "--seconds")) {
       seconds = strtof(v, NULL);
     } else if (!strcmp(a, "--fps")) {
@@ -400,6 +460,9 @@ int main(int argc, char** argv) {
     goto done;
   }
   out = NULL;
+  if (glb_file &&
+      !write_glb(glb_file, g, J, frames, stride, nframes, fps, no_body))
+    goto done;
   rc = 0;
   printf("smg-synth: wrote %ld frames (%.2f s at %.0f fps, %u joints) to %s\n",
          nframes, (double)nframes / fps, fps, J, out_file);

@@ -1,7 +1,9 @@
 /*
  * character.c - character lifetime (one allocation at create, carved into
  * every buffer the character will use), path and constraint edits,
- * immediate controls, per-frame entry point and the state/pose getters.
+ * immediate controls, per-frame entry point, the state/pose getters and
+ * what puts a character into a game scene (events, root motion for the
+ * engine's mover, uneven ground: events.c, root_motion.c, ik.c).
  * Arguments are validated here; their defaults are settled in
  * settings.c; edits that invalidate the plan have it chosen again
  * (smgi_character_replan, step.c).
@@ -17,7 +19,7 @@
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
 typedef struct layout {
-  size_t constraints, queue, rot, tmp, snap, wpos, wrot, legs, xz, cum,
+  size_t constraints, events, queue, rot, tmp, snap, wpos, wrot, legs, xz, cum,
       total;
 } layout;
 
@@ -47,6 +49,8 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   o += align16(sizeof(float) * 4u * J);
   l->constraints = o;
   o += align16(sizeof(smgi_constraint) * cons_cap);
+  l->events = o;
+  o += align16(sizeof(smg_event) * smgi_events_capacity(cons_cap));
   l->xz = o;
   o += align16(sizeof(float) * 2u * (size_t)path_cap);
   l->cum = o;
@@ -180,6 +184,10 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->upper.fade_rate = st.fade_rate;
   ch->cons.items = (smgi_constraint*)(mem + l.constraints);
   ch->cons.capacity = st.constraint_capacity;
+  ch->events.items = (smg_event*)(mem + l.events);
+  ch->events.capacity = smgi_events_capacity(st.constraint_capacity);
+  smgi_events_reset(&ch->events);
+  smgi_ground_reset(&ch->ik.ground);
   ch->cons.next_id = 1;
   ch->lower.queue = (smgi_qentry*)(mem + l.queue);
   ch->pose.rot = (float*)(mem + l.rot);
@@ -464,7 +472,7 @@ SMG_API smg_result smg_character_get_state(const smg_character* ch,
   s.style = ch->lower.style;
   s.action = ch->upper.action;
   s.position[0] = ch->pose.ground[0];
-  s.position[1] = 0.0f;
+  s.position[1] = ch->pose.ground_y;
   s.position[2] = ch->pose.ground[1];
   s.heading = ch->pose.heading;
   s.path_distance = ch->progress;
@@ -505,5 +513,121 @@ SMG_API smg_result smg_character_get_model_matrices(const smg_character* ch,
   if (joint_count != ch->joint_count) return SMG_ERROR_INVALID_ARGUMENT;
   /* world transforms were cached by the last step; only convert */
   smgi_pose_model_matrices(&ch->pose, ch->joint_count, space, matrices);
+  return SMG_OK;
+}
+
+/* ---- in a game scene ---- */
+
+SMG_API smg_result smg_character_get_events(const smg_character* ch,
+                                            smg_event* events,
+                                            uint32_t capacity,
+                                            uint32_t* out_count) {
+  if (!ch || !out_count || (!events && capacity > 0u))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  const smgi_events* ev = &ch->events;
+  if (!events) {
+    *out_count = ev->count;
+    return SMG_OK;
+  }
+  /* the first element's struct_size is the array's element size: at
+   * least this version's event, a whole number of floats */
+  const uint32_t stride = events[0].struct_size;
+  if (stride < sizeof(smg_event) || stride % sizeof(float) != 0u ||
+      stride > 65536u)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (capacity < ev->count) {
+    *out_count = ev->count;
+    return SMG_ERROR_BUFFER_TOO_SMALL;
+  }
+  unsigned char* out = (unsigned char*)events;
+  for (uint32_t i = 0; i < ev->count; ++i) {
+    smg_event e = ev->items[i];
+    e.struct_size = stride;
+    memcpy(out + (size_t)i * stride, &e, sizeof e);
+  }
+  *out_count = ev->count;
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_get_root_motion(const smg_character* ch,
+                                                 smg_root_motion* out) {
+  if (!ch || !out ||
+      !smgi_struct_size_ok(out->struct_size, sizeof(smg_root_motion)))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  const smgi_root_motion* rm = &ch->root_motion;
+  smg_root_motion m;
+  memset(&m, 0, sizeof m);
+  m.struct_size = out->struct_size;
+  m.translation[0] = rm->delta[0];
+  m.translation[1] = rm->delta[1];
+  m.translation[2] = rm->delta[2];
+  m.yaw = rm->delta[3];
+  /* in the frame of the heading the step started with: x left, z forward */
+  float s, c;
+  smgi_sincosf(rm->before[3], &s, &c);
+  m.local_translation[0] = c * rm->delta[0] - s * rm->delta[2];
+  m.local_translation[1] = rm->delta[1];
+  m.local_translation[2] = s * rm->delta[0] + c * rm->delta[2];
+  memcpy(out, &m, out->struct_size);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_ground_position(smg_character* ch,
+                                                     const float* position,
+                                                     float heading) {
+  if (!ch || !position || !isfinite(heading) ||
+      fabsf(heading) > SMG_MAX_COORDINATE)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  if (!smgi_coords_ok(position, 3))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  smgi_root_motion_place(&ch->root_motion, &ch->pose, &ch->lower, &ch->steer,
+                         &ch->ik, ch->joint_count, ch->anchor, position,
+                         heading);
+  /* progress along the path from the new place */
+  if (ch->path.count > 0u) {
+    float dist = 0.0f;
+    ch->progress = smgi_path_project_local(&ch->path, ch->pose.ground[0],
+                                           ch->pose.ground[1], &ch->seg,
+                                           &dist);
+    ch->path_error = dist;
+  }
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_get_ground_probes(const smg_character* ch,
+                                                   float* xz,
+                                                   uint32_t count) {
+  if (!ch || !xz || count != 3u) return SMG_ERROR_INVALID_ARGUMENT;
+  float p[6];
+  smgi_ground_probes(&ch->ik, &ch->pose, ch->graph, p);
+  /* the root: carried on by its last step's root motion */
+  p[4] = ch->pose.ground[0] + ch->root_motion.delta[0];
+  p[5] = ch->pose.ground[1] + ch->root_motion.delta[2];
+  memcpy(xz, p, sizeof p);
+  return SMG_OK;
+}
+
+SMG_API smg_result smg_character_set_ground(smg_character* ch,
+                                            const smg_ground* ground) {
+  if (!ch) return SMG_ERROR_INVALID_ARGUMENT;
+  smgi_ground* g = &ch->ik.ground;
+  if (!ground) {
+    /* the data's flat floor again: the body and feet go back to it at
+     * once, as they were before any ground was given */
+    smgi_ground_reset(g);
+    return SMG_OK;
+  }
+  if (!smgi_struct_size_ok(ground->struct_size, sizeof(smg_ground)))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  smg_ground in;
+  memset(&in, 0, sizeof in);
+  memcpy(&in, ground, ground->struct_size);
+  const float h[3] = {in.foot_height[0], in.foot_height[1], in.root_height};
+  if (in.flags != 0u || !smgi_coords_ok(h, 3))
+    return SMG_ERROR_INVALID_ARGUMENT;
+  g->on = 1u;
+  g->foot[0] = h[0];
+  g->foot[1] = h[1];
+  g->root = h[2];
   return SMG_OK;
 }

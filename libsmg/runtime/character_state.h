@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "constraints.h"
+#include "events.h"
 #include "graph_derived.h"
 #include "graph_internal.h"
 #include "ik.h"
@@ -20,6 +21,7 @@
 #include "planner.h"
 #include "pose.h"
 #include "rmath.h"
+#include "root_motion.h"
 #include "smg.h"
 #include "steer.h"
 #include "step_in.h"
@@ -55,6 +57,10 @@ struct smg_character {
   smgi_pose pose;
   smgi_steer steer;
   smgi_ik ik;
+
+  /* for the engine: what the last step did */
+  smgi_events events;
+  smgi_root_motion root_motion;
 };
 
 /* What every stage may read besides its own state (step_in.h). */

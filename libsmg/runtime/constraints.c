@@ -68,6 +68,7 @@ smg_result smgi_constraints_add(smgi_constraints* c, float path_length,
   k->kind = kind;
   k->value = value;
   k->arc = arc;
+  k->reported = 0;
   if (out_id) *out_id = k->id;
   return SMG_OK;
 }

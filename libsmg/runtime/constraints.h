@@ -22,6 +22,7 @@ typedef struct smgi_constraint {
   uint32_t kind;   /* SMGI_CONSTRAINT_* */
   uint32_t value;  /* style or action */
   float arc;       /* metres along the path */
+  uint32_t reported; /* its event was given (events.c) */
 } smgi_constraint;
 
 typedef struct smgi_constraints {

@@ -28,6 +28,17 @@
  * and fades in and out with the toe's speed over the ground, so it is
  * gone before the foot stands, lands or pushes off: those keep the data's
  * heights and the contact logic above.
+ *
+ * Uneven ground (smg_character_set_ground): the engine measures ground
+ * heights at three probes before the step (each toe where it is expected,
+ * the root). The body is carried at the root's ground height (smoothed);
+ * each toe is placed on the ground under it, which follows the
+ * measurement at a bounded rate while the toe swings (a stair edge passing
+ * under it raises it over a few frames); where a leg would have to
+ * stretch further than the animation does, or than SMGI_GROUND_REACH of
+ * its length, to put its foot on a lower ground, the pelvis is lowered by
+ * the difference. Every leg is then solved to its foot's height, planted
+ * ones also to their anchors. Without ground nothing of this runs.
  */
 #include <math.h>
 #include <string.h>
@@ -363,8 +374,120 @@ static float swing_lift(const smgi_foot* foot, float toe_y, float speed,
   return s * s * (3.0f - 2.0f * s) * lift;
 }
 
+void smgi_ground_reset(smgi_ground* g) {
+  memset(g, 0, sizeof *g);
+  g->root_y = NAN;
+  for (uint32_t f = 0; f < 2u; ++f) {
+    g->foot_y[f] = NAN;
+    g->prev_toe[f][0] = g->prev_toe[f][1] = INFINITY;
+  }
+}
+
+static float approach(float v, float want, float most) {
+  if (want > v + most) return v + most;
+  if (want < v - most) return v - most;
+  return want;
+}
+
+/* The toe joint of leg f (the ankle when the skeleton has none). */
+static uint32_t toe_of(const smg_graph* g, uint32_t f) {
+  const smgi_info* info = g->data.info;
+  const uint32_t* leg = f ? info->right_leg : info->left_leg;
+  return leg[3] < g->data.joint_count ? leg[3] : leg[2];
+}
+
+/* Carry the body onto the ground (see the top of this file): the whole
+ * pose is raised by the root's ground height less the pelvis drop, and
+ * off[f] is how far foot f must go beyond that to stand on its ground. */
+static void ground_lift(smgi_ik* ik, smgi_pose* pose, const smg_graph* graph,
+                        float dt, float* off) {
+  smgi_ground* g = &ik->ground;
+  const smgi_info* info = graph->data.info;
+  const float L = info->leg_length;
+  const uint32_t* legs[2] = {info->left_leg, info->right_leg};
+  float* wpos = pose->wpos;
+  const float k = dt < SMGI_GROUND_ROOT_SECONDS ? dt / SMGI_GROUND_ROOT_SECONDS : 1.0f;
+  g->root_y = isnan(g->root_y) ? g->root : g->root_y + (g->root - g->root_y) * k;
+  float need = 0.0f, rel[2] = {0.0f, 0.0f};
+  for (uint32_t f = 0; f < 2u; ++f) {
+    if (!ik->leg_ok[f]) continue;
+    const float* tp = wpos + 3u * toe_of(graph, f);
+    if (isnan(g->foot_y[f]) || !(dt > 0.0f)) {
+      if (isnan(g->foot_y[f])) g->foot_y[f] = g->foot[f];
+    } else {
+      float speed = 0.0f;
+      if (g->prev_toe[f][0] < INFINITY) {
+        const float sx = tp[0] - g->prev_toe[f][0], sz = tp[2] - g->prev_toe[f][1];
+        speed = sqrtf(sx * sx + sz * sz) / dt;
+      }
+      const float rate = speed > SMGI_GROUND_FOOT_RATE * L ? speed : SMGI_GROUND_FOOT_RATE * L;
+      g->foot_y[f] = approach(g->foot_y[f], g->foot[f], rate * dt);
+    }
+    rel[f] = g->foot_y[f] - g->root_y;
+    /* how far the pelvis must come down for this leg to reach its ankle
+     * moved by rel[f]: no further than the animation stretches it, or
+     * SMGI_GROUND_REACH of its length */
+    const float* hp = wpos + 3u * legs[f][0];
+    const float* kn = wpos + 3u * legs[f][1];
+    const float* an = wpos + 3u * legs[f][2];
+    const float l1[3] = {kn[0] - hp[0], kn[1] - hp[1], kn[2] - hp[2]};
+    const float l2[3] = {an[0] - kn[0], an[1] - kn[1], an[2] - kn[2]};
+    const float v[3] = {hp[0] - an[0], hp[1] - an[1], hp[2] - an[2]};
+    float reach = SMGI_GROUND_REACH * (sqrtf(dot3(l1, l1)) + sqrtf(dot3(l2, l2)));
+    const float anim = sqrtf(dot3(v, v));
+    if (anim > reach) reach = anim;
+    const float hd2 = v[0] * v[0] + v[2] * v[2];
+    const float vd = v[1] - rel[f];
+    const float p = hd2 < reach * reach ? vd - sqrtf(reach * reach - hd2) : vd;
+    if (p > need) need = p;
+  }
+  if (need > L) need = L;
+  g->drop = dt > 0.0f ? smgi_clampf(need, g->drop - SMGI_GROUND_DROP_RISE * L * dt,
+                                    g->drop + SMGI_GROUND_DROP_FALL * L * dt)
+                      : g->drop;
+  if (g->drop < 0.0f) g->drop = 0.0f;
+  const float lift = g->root_y - g->drop;
+  pose->root[1] += lift;
+  for (uint32_t j = 0; j < graph->data.joint_count; ++j) wpos[3u * j + 1u] += lift;
+  pose->ground_y = g->root_y;
+  off[0] = rel[0] + g->drop;
+  off[1] = rel[1] + g->drop;
+}
+
+void smgi_ground_probes(const smgi_ik* ik, const smgi_pose* pose,
+                        const smg_graph* graph, float* xz) {
+  const smgi_ground* g = &ik->ground;
+  for (uint32_t f = 0; f < 2u; ++f) {
+    const smgi_foot* foot = &ik->feet[f];
+    const float* tp = pose->wpos + 3u * toe_of(graph, f);
+    if (ik->enabled && foot->planted && !foot->landing) {
+      xz[2u * f] = foot->anchor[0];
+      xz[2u * f + 1u] = foot->anchor[2];
+    } else if (g->prev_toe[f][0] < INFINITY) {
+      /* carried on by its last step */
+      xz[2u * f] = tp[0] + (tp[0] - g->prev_toe[f][0]);
+      xz[2u * f + 1u] = tp[2] + (tp[2] - g->prev_toe[f][1]);
+    } else {
+      xz[2u * f] = tp[0];
+      xz[2u * f + 1u] = tp[2];
+    }
+  }
+}
+
 void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
                    float dt) {
+  float off[2] = {0.0f, 0.0f};
+  smgi_ground* ground = &ik->ground;
+  if (ground->on)
+    ground_lift(ik, pose, g, dt, off);
+  else
+    pose->ground_y = 0.0f;
+  /* the animated toes, for the ground probes' next positions */
+  for (uint32_t f = 0; f < 2u; ++f) {
+    const float* tp = pose->wpos + 3u * toe_of(g, f);
+    ground->prev_toe[f][0] = tp[0];
+    ground->prev_toe[f][1] = tp[2];
+  }
   if (!ik->enabled) {
     smgi_ik_reset(ik);
     return;
@@ -424,7 +547,9 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
      * ground is flat; a single stance is not enough: a heel-first contact
      * or a turn on the heel holds the toe in the air, 3-5 cm up on the
      * CMU walks, and where the toe was held is not the floor either) */
-    if (foot->planted && ap[1] < foot->stand_y) foot->stand_y = ap[1];
+    /* on uneven ground, heights above the ground the toe is placed on */
+    const float rel = ground->on ? ground->foot_y[f] : 0.0f;
+    if (foot->planted && ap[1] - rel < foot->stand_y) foot->stand_y = ap[1] - rel;
     float travel = 0.0f; /* the animated toe's ground step since the last */
     if (foot->toe[1] < INFINITY) {
       const float sx = ap[0] - foot->toe[0], sz = ap[2] - foot->toe[2];
@@ -461,7 +586,15 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
       foot->weight = by_travel < by_lift ? by_travel : by_lift;
     }
     foot->weight = smgi_clampf(foot->weight, 0.0f, 1.0f);
-    if (foot->weight > 0.0f) {
+    if (ground->on) {
+      /* every leg to its foot's ground; planted ones, eased by their
+       * weight, also to their anchors */
+      const float w = foot->weight * foot->weight * (3.0f - 2.0f * foot->weight);
+      const float* an = pose->wpos + 3u * ankle;
+      float target[3] = {an[0] + w * (foot->anchor[0] - ap[0]), an[1] + off[f],
+                         an[2] + w * (foot->anchor[2] - ap[2])};
+      solve_leg(ik, pose, g, f, target, 1.0f, foot->fix);
+    } else if (foot->weight > 0.0f) {
       /* eased (smoothstep): the correction starts and stops moving
        * gently */
       const float w = foot->weight * foot->weight * (3.0f - 2.0f * foot->weight);
@@ -492,7 +625,7 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
       speed = sqrtf(sx * sx + sz * sz) / dt;
     }
     const float c = ik->swing_clearance;
-    const float want = swing_lift(foot, ap[1], speed, c, info->leg_length);
+    const float want = swing_lift(foot, ap[1] - rel, speed, c, info->leg_length);
     /* rates on the scale of the clearance, at least the default's: a
      * lift left when the clearance is turned off (c = 0) still returns */
     float scale = ik->swing_default;

@@ -36,6 +36,22 @@ typedef struct smgi_foot {
                           next solve starts from them */
 } smgi_foot;
 
+/* Uneven ground (smg_character_set_ground): heights the engine measured at
+ * the probes before the step; off, the feet stay on the data's flat floor
+ * and nothing below is used. */
+typedef struct smgi_ground {
+  uint32_t on;
+  float foot[2];        /* measured at the foot probes */
+  float root;           /* measured at the root probe */
+  float root_y;         /* the root's ground height as carried (smoothed);
+                           NAN: none yet */
+  float drop;           /* how far the pelvis is lowered, metres */
+  float foot_y[2];      /* ground height each toe is placed on (moves at a
+                           bounded rate); NAN: none yet */
+  float prev_toe[2][2]; /* x, z of each toe at the previous step (probes);
+                           INFINITY: none yet */
+} smgi_ground;
+
 typedef struct smgi_ik {
   uint32_t enabled;
   float swing_clearance; /* metres a fast swinging toe keeps above its
@@ -53,6 +69,7 @@ typedef struct smgi_ik {
   uint32_t* leg_joints;
   uint32_t leg_ok[2];      /* hip > 0, knee's parent hip, ankle's parent knee */
   uint32_t leg_side[2], leg_below[2];
+  smgi_ground ground;
 } smgi_ik;
 
 /* Fill ik->leg_joints and the per-leg counts for the graph's skeleton,
@@ -63,8 +80,15 @@ void smgi_ik_init_legs(smgi_ik* ik, const smg_graph* g, uint8_t* mark);
 void smgi_ik_reset(smgi_ik* ik);
 /* Anchor feet in contact and solve their legs on the pose: its local
  * rotations and the cached world transforms (kept true for every joint
- * moved). */
+ * moved). On uneven ground the body is carried onto it first
+ * (smgi_ground). */
 void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
                    float dt);
+/* Ground off (the data's flat floor): nothing carried. */
+void smgi_ground_reset(smgi_ground* ground);
+/* Where the engine should measure the ground for the next step: x, z of
+ * the left and right toes (xz holds 4 floats). */
+void smgi_ground_probes(const smgi_ik* ik, const smgi_pose* pose,
+                        const smg_graph* g, float* xz);
 
 #endif /* SMG_IK_H */

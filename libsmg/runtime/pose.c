@@ -206,7 +206,7 @@ void smgi_pose_model_matrices(const smgi_pose* p, uint32_t joint_count,
     float y[4];
     smgi_q_yaw(-p->heading, y);
     yaw = _mm_loadu_ps(y);
-    ground = _mm_setr_ps(p->ground[0], 0.0f, p->ground[1], 0.0f);
+    ground = _mm_setr_ps(p->ground[0], p->ground_y, p->ground[1], 0.0f);
   }
   uint32_t j = 0;
   if (world) {
@@ -243,7 +243,7 @@ void smgi_pose_model_matrices(const smgi_pose* p, uint32_t joint_count,
     float q[4], v[3], r[3];
     smgi_q_mul(yaw, wrot + 4u * j, q);
     v[0] = wpos[3u * j] - p->ground[0];
-    v[1] = wpos[3u * j + 1u];
+    v[1] = wpos[3u * j + 1u] - p->ground_y;
     v[2] = wpos[3u * j + 2u] - p->ground[1];
     smgi_q_rotate(yaw, v, r);
     smgi_mat_from_c(q, r, matrices + 16u * j);

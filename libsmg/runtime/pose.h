@@ -17,6 +17,8 @@ typedef struct smgi_pose {
   float root[3];     /* world position of joint 0 */
   float heading;     /* ground heading of the character */
   float ground[2];   /* ground position (x, z) */
+  float ground_y;    /* ground height there: 0 on the data's flat floor,
+                        the engine's ground otherwise (ik.c) */
   uint32_t contacts; /* SMG_STATE_*_CONTACT bits of the frame */
   float* rot;        /* 4J: local rotations */
   float* tmp;        /* 4J: crossfade sampling scratch, only for skeletons

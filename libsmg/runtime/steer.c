@@ -456,3 +456,9 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;
 }
+
+void smgi_lag_follow(smgi_lag* l, float c, float sn, float da, float px,
+                     float pz, float tx, float tz) {
+  const delta d = {c, sn, da, px, pz, tx, tz};
+  lag_follow(l, &d);
+}

@@ -77,6 +77,11 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
                         const smgi_step_in* in, float dt);
 /* Correct the pose just composed and the queued placements (before FK and
  * foot IK, so planted feet keep their world anchors). */
+/* Add a rigid move - a turn by da (cos c, sin sn) about (px, pz), then the
+ * shift (tx, tz) - to the correction pending for the entries beyond the
+ * next two (root_motion.c: where an engine's mover put the character). */
+void smgi_lag_follow(smgi_lag* l, float c, float sn, float da, float px,
+                     float pz, float tx, float tz);
 void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                       const smgi_step_in* in, float dt);
 

@@ -99,9 +99,33 @@ void smgi_character_replan(smg_character* ch) {
   smgi_upper_plan_dropped(&ch->upper, &ch->lower);
 }
 
+/* What the step shows, for the events stage (events.c). */
+static void collect_events(smg_character* ch, float dt) {
+  const smgi_info* info = ch->graph->data.info;
+  smgi_events_in in;
+  in.style = ch->lower.style;
+  in.action = ch->upper.action;
+  in.progress = ch->progress;
+  in.ground[0] = ch->pose.ground[0];
+  in.ground[1] = ch->pose.ground_y;
+  in.ground[2] = ch->pose.ground[1];
+  for (uint32_t f = 0; f < 2u; ++f) {
+    const uint32_t* leg = f ? info->right_leg : info->left_leg;
+    const uint32_t toe = leg[3] < ch->joint_count ? leg[3] : leg[2];
+    in.toe[f] = toe < ch->joint_count ? ch->pose.wpos + 3u * toe : NULL;
+    in.floor[f] = ch->ik.ground.on ? ch->ik.ground.foot_y[f] : 0.0f;
+  }
+  in.end_reached = ch->end_reached;
+  in.leg_length = info->leg_length;
+  in.dt = dt;
+  smgi_events_collect(&ch->events, &ch->cons, &in);
+}
+
 smg_result smgi_step(smg_character* ch, float dt) {
   const smg_graph* g = ch->graph;
   prefetch(ch);
+  smgi_events_clear(&ch->events);
+  smgi_root_motion_begin(&ch->root_motion, &ch->pose);
   /* progress and segment stay as the last step left them until
    * update_progress at the end */
   const smgi_step_in in = smgi_step_in_of(ch);
@@ -140,5 +164,8 @@ smg_result smgi_step(smg_character* ch, float dt) {
   smgi_fk(g, ch->pose.root, ch->pose.rot, ch->pose.wpos, ch->pose.wrot);
   smgi_ik_apply(&ch->ik, &ch->pose, g, dt);
   update_progress(ch);
+  /* for the engine: the root motion and the events of this step */
+  smgi_root_motion_end(&ch->root_motion, &ch->pose, dt);
+  collect_events(ch, dt);
   return SMG_OK;
 }

@@ -139,6 +139,24 @@
                                    reach (2 mm let a held toe jitter by
                                    up to 6 cm/s at 30 Hz) */
 
+/* ---- uneven ground (ik.c, smg_character_set_ground) ---- */
+#define SMGI_GROUND_ROOT_SECONDS 0.2f /* time constant the root follows the
+                                         ground under it with: a stair edge
+                                         passing under the root raises the
+                                         body over a step's time, not in
+                                         one frame */
+#define SMGI_GROUND_FOOT_RATE 2.0f /* leg lengths per second a toe's ground
+                                      height moves at least (more while
+                                      the toe moves faster over the
+                                      ground: 45 degrees) */
+#define SMGI_GROUND_REACH 0.98f /* fraction of hip-knee-ankle length a leg
+                                   may be stretched to before the pelvis
+                                   is lowered (never straight: a straight
+                                   knee has no plane left to bend in) */
+#define SMGI_GROUND_DROP_FALL 4.0f /* leg lengths per second the pelvis
+                                      may lower at most ... */
+#define SMGI_GROUND_DROP_RISE 1.0f /* ... and rise back */
+
 /* ---- root steering (steer.c) ---- */
 /* Defaults of the public limits (smg_character_desc). */
 #define SMGI_STEER_TURN_LIMIT 2.0f    /* rad/s of additive heading correction */

@@ -5,7 +5,9 @@
  * paths with extreme, duplicate and far-away points (and NaN/inf, which
  * must be refused), appends, constraints added/moved/removed anywhere,
  * style and action switches, IK, steering and swing-clearance settings
- * (bad values included), thresholds, and steps with dt
+ * (bad values included), thresholds, the game-scene calls (ground heights
+ * at the probes or anywhere, an engine's mover putting the character
+ * elsewhere, events read into odd buffers), and steps with dt
  * from 0 to past the limit. After every step every output must be finite
  * and bounded: the root never moves faster than the data allows, the
  * skeleton stays around the root, rotations stay unit, state fields stay
@@ -168,6 +170,89 @@ static void check_outputs(const smg_character* ch, float dt, float* prev) {
     if (!isfinite(mats[j])) abort();
 }
 
+/* The events of the last step: read with odd capacities and element
+ * sizes; what is read must make sense. */
+static void check_events(const smg_character* ch, reader* r) {
+  /* room for 16 elements of up to 255 bytes */
+  static smg_event buf[16 * 256 / sizeof(smg_event) + 1];
+  uint32_t count = 0, n = 0, k, size;
+  smg_result res;
+  if (smg_character_get_events(ch, NULL, 0, &count) != SMG_OK) abort();
+  size = take(r) & 1u ? (uint32_t)sizeof(smg_event) : take(r);
+  buf[0].struct_size = size;
+  k = take(r) % 17u;
+  res = smg_character_get_events(ch, buf, k, &n);
+  if (size < sizeof(smg_event) || size % 4u) {
+    if (res != SMG_ERROR_INVALID_ARGUMENT) abort();
+    return;
+  }
+  if (res == SMG_ERROR_BUFFER_TOO_SMALL) {
+    if (n != count || k >= count) abort();
+    return;
+  }
+  if (res != SMG_OK || n != count) abort();
+  for (k = 0; k < n; ++k) {
+    smg_event copy;
+    const smg_event* e = &copy;
+    memcpy(&copy, (const unsigned char*)buf + (size_t)k * size, sizeof copy);
+    if (copy.struct_size != size) abort();
+    if (e->type < SMG_EVENT_CONSTRAINT || e->type > SMG_EVENT_PATH_END ||
+        !finite3(e->position) || !isfinite(e->strength) ||
+        !(e->strength >= 0.0f) || !isfinite(e->arc_length))
+      abort();
+    if (e->type == SMG_EVENT_FOOTSTEP && e->id > 1u) abort();
+    if (e->type == SMG_EVENT_CONSTRAINT &&
+        e->value >= ((e->flags & SMG_EVENT_SPLICE) ? g_actions : g_styles))
+      abort();
+  }
+}
+
+/* An engine's mover: the root motion, moved on (or anywhere: bad values
+ * included) and handed back. The root may then be anywhere: prev follows. */
+static void mover(smg_character* ch, reader* r, float* prev) {
+  static float rot[4 * 64];
+  smg_root_motion m;
+  smg_character_state st;
+  float p[3];
+  memset(&m, 0, sizeof m);
+  m.struct_size = sizeof m;
+  memset(&st, 0, sizeof st);
+  st.struct_size = sizeof st;
+  if (smg_character_get_root_motion(ch, &m) != SMG_OK ||
+      smg_character_get_state(ch, &st) != SMG_OK)
+    abort();
+  if (!finite3(m.translation) || !finite3(m.local_translation) ||
+      !isfinite(m.yaw))
+    abort();
+  p[0] = take_coord(r, st.position[0] + m.translation[0]);
+  p[1] = take_coord(r, st.position[1]);
+  p[2] = take_coord(r, st.position[2] + m.translation[2]);
+  smg_character_set_ground_position(ch, p, take_coord(r, st.heading));
+  if (smg_character_get_local_pose(ch, prev, rot, g_joints) != SMG_OK)
+    abort();
+}
+
+/* Ground heights at the probes, or odd ones; sometimes taken back. */
+static void ground(smg_character* ch, reader* r) {
+  smg_ground gr;
+  float p[6];
+  uint32_t k;
+  if (smg_character_get_ground_probes(ch, p, 3) != SMG_OK) abort();
+  for (k = 0; k < 6; ++k)
+    if (!isfinite(p[k])) abort();
+  if (take(r) % 8u == 0u) {
+    smg_character_set_ground(ch, NULL);
+    return;
+  }
+  memset(&gr, 0, sizeof gr);
+  gr.struct_size = take(r) % 4u ? (uint32_t)sizeof gr : take(r);
+  gr.flags = take(r) % 8u == 0u;
+  gr.foot_height[0] = take_coord(r, 0.0f);
+  gr.foot_height[1] = take_coord(r, gr.foot_height[0]);
+  gr.root_height = take_coord(r, gr.foot_height[1]);
+  smg_character_set_ground(ch, &gr);
+}
+
 static smg_character* create(reader* r, float* prev) {
   static const float horizons[] = {0.0f, 0.1f, 2.0f, 10.0f, 1e9f, -1.0f,
                                    NAN, 0.5f};
@@ -206,7 +291,10 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   ch = create(&r, prev);
   if (!ch) return 0;
   while (r.left && steps < 2000) {
-    uint8_t op = take(&r) % 16u;
+    /* the three highest bytes are the game-scene calls (ops 16-18; they
+     * were steps before those existed), the others as they always were */
+    const uint8_t byte = take(&r);
+    uint8_t op = byte >= 253u ? (uint8_t)(16u + byte - 253u) : byte % 16u;
     uint32_t n, k, id = 0;
     if (smg_character_get_path_length(ch, &len) != SMG_OK || !isfinite(len))
       abort();
@@ -277,6 +365,15 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                             take_coord(&r, 0.0f),
                                             take_coord(&r, 0.0f));
         break;
+      case 16:
+        ground(ch, &r);
+        break;
+      case 17:
+        mover(ch, &r, prev);
+        break;
+      case 18:
+        check_events(ch, &r);
+        break;
       case 12: /* start over with another character */
         smg_character_destroy(ch);
         nid = 0;
@@ -298,7 +395,9 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return 0;
 }
 
-/* A walk along a bent path with a splice, a transition and steps. */
+/* Seed 0: a walk along a bent path with a splice, a transition and steps.
+ * Seed 1: the same walk in a game scene: ground heights, a mover that
+ * takes the root motion, events read after the steps. */
 int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
   static const uint8_t seed[] = {
       /* create: flags, style, action, path cap, constraint cap, seed,
@@ -314,10 +413,23 @@ int fuzz_seed(uint32_t index, uint8_t** data, size_t* size) {
       /* IK off, style 0, 32 steps at 1/120, append 2 points, 32 steps */
       10, 0, 8, 0, 13, 3, 31, 1, 2, 20, 10, 20, 10, 20, 10, 20, 10, 13,
       5, 31};
-  if (index) return FUZZ_SEED_NONE;
-  *size = sizeof seed;
-  *data = (uint8_t*)malloc(sizeof seed);
+  static const uint8_t scene[] = {
+      /* ground: struct_size as is, no flags, heights 0, +0.05, +0.05 m */
+      253, 1, 1, 1, 20, 0, 20, 1, 20, 0,
+      /* 8 steps at 1/60, events (size as is, capacity 16), mover (moved
+       * on by the root motion, nudged), 8 steps, events, mover */
+      13, 4, 7, 255, 1, 16, 254, 20, 0, 20, 0, 20, 1, 20, 0,
+      13, 4, 7, 255, 1, 16, 254, 20, 0, 20, 0, 20, 0, 20, 0,
+      /* ground again higher, 16 steps at 1/30, events, taken back */
+      253, 1, 1, 1, 20, 4, 20, 0, 20, 0, 13, 5, 15, 255, 1, 16, 253, 0, 13,
+      4, 3};
+  size_t n;
+  if (index > 1) return FUZZ_SEED_NONE;
+  n = index ? sizeof seed + sizeof scene : sizeof seed;
+  *data = (uint8_t*)malloc(n);
   if (!*data) return -1;
   memcpy(*data, seed, sizeof seed);
+  if (index) memcpy(*data + sizeof seed, scene, sizeof scene);
+  *size = n;
   return 0;
 }
