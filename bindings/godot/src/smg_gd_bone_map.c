@@ -167,10 +167,11 @@ void smg_gd_bone_map_write_pose(smg_gd_bone_map *m, const smg_graph *graph, cons
 	if (smg_character_get_local_pose(ch, root, m->rot, n) != SMG_OK) return;
 
 	/* Joint 0 comes in parent space; the character node already carries
-	 * (position, heading), so express the root relative to it. */
+	 * (position with the ground height, heading), so express the root
+	 * relative to it. */
 	float h = st.heading, c = cosf(h), s = sinf(h);
 	float dx = root[0] - st.position[0], dz = root[2] - st.position[2];
-	gd_vec3 root_local = { c * dx - s * dz, root[1], s * dx + c * dz };
+	gd_vec3 root_local = { c * dx - s * dz, root[1] - st.position[1], s * dx + c * dz };
 	float inv_yaw[4];
 	smgi_q_yaw(-h, inv_yaw);
 	smgi_q_mul(inv_yaw, &m->rot[0], &m->rot[0]);

@@ -243,9 +243,7 @@ static int64_t set_path_points(smg_gd_character *self, const gd_packed *pts, con
 		return GD_ERR_INVALID_PARAMETER;
 	}
 	if (!smg_gd_character_need(self, what)) return GD_ERR_UNCONFIGURED;
-	int64_t err = smg_gd_mirror_set_path(&self->mirror, self->ch, pts, what);
-	if (err == GD_OK) self->end_reached = false;
-	return err;
+	return smg_gd_mirror_set_path(&self->mirror, self->ch, pts, what);
 }
 
 static void m_set_path(void *vself, const gd_value *a, gd_value *r) {
@@ -278,7 +276,6 @@ static void m_append_path_points(void *vself, const gd_value *a, gd_value *r) {
 		return;
 	}
 	r->i = smg_gd_mirror_append_path(&self->mirror, self->ch, &a[0].pa);
-	if (r->i == GD_OK) self->end_reached = false;
 }
 
 static void m_clear_path(void *vself, const gd_value *a, gd_value *r) {
@@ -444,6 +441,7 @@ static const gd_method methods[] = {
 
 void smg_gd_character_register_methods(void) {
 	gd_register_methods(CLASS, methods, (int)(sizeof methods / sizeof methods[0]));
+	smg_gd_character_register_scene_methods();
 
 	gd_arg p_graph = { "graph", GT_REF, "SmgGraph" };
 	gd_register_property(CLASS, &p_graph, GD_PROPERTY_HINT_RESOURCE_TYPE, "SmgGraph", "set_graph", "get_graph");
