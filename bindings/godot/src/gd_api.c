@@ -265,7 +265,18 @@ GDExtensionObjectPtr gd_cast(GDExtensionConstObjectPtr obj, const char *class_na
 	gd_sn_init(&n, class_name);
 	void *tag = gd.classdb_get_class_tag(&n);
 	gd_sn_destroy(&n);
-	return tag ? gd.object_cast_to(obj, tag) : NULL;
+	if (!tag || !gd.object_cast_to(obj, tag)) return NULL;
+	/* An extension class's tag is its engine parent's (Godot gives
+	 * extension classes no tag of their own), so the cast alone takes any
+	 * Node3D for an SmgCharacter: ask the object itself, which knows its
+	 * extension class and script subclasses. */
+	gd_string s;
+	gd_str_init(&s, class_name);
+	GDExtensionBool is = 0;
+	const void *a[1] = { &s };
+	gd_call(GDB_Object_is_class, (GDExtensionObjectPtr)obj, a, &is);
+	gd_str_destroy(&s);
+	return is ? (GDExtensionObjectPtr)obj : NULL;
 }
 
 void gd_call(int bind, GDExtensionObjectPtr obj, const void *const *args, void *ret) {

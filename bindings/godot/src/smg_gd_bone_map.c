@@ -20,6 +20,7 @@ void smg_gd_bone_map_free(smg_gd_bone_map *m) {
 	free(m->rot);
 	free(m->bone_of_joint);
 	free(m->rest_of_joint);
+	free(m->part_of_joint);
 	memset(m, 0, sizeof *m);
 }
 
@@ -114,6 +115,13 @@ static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionO
 		return;
 	}
 	m->rest_of_joint = rest;
+	uint8_t *part = realloc(m->part_of_joint, n ? n : 1);
+	if (!part) {
+		free(map);
+		m->bone_of_joint = NULL;
+		return;
+	}
+	m->part_of_joint = part;
 	m->rests_identity = true;
 	m->skel_id = id;
 	m->skel_version = version;
@@ -123,7 +131,9 @@ static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionO
 		memset(&ji, 0, sizeof ji);
 		ji.struct_size = sizeof ji;
 		map[j] = -1;
+		part[j] = SMG_BODY_UPPER;
 		if (smg_graph_get_joint(graph, j, &ji) != SMG_OK || !ji.name) continue;
+		if (ji.body_part <= SMG_BODY_UPPER) part[j] = (uint8_t)ji.body_part;
 		char bone_name[256];
 		smg_gd_bone_name(ji.name, bone_name, sizeof bone_name);
 		gd_string name;
@@ -154,8 +164,24 @@ static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionO
 	}
 }
 
+/* The mask's weight of joint j (mapped to `bone`). */
+static float joint_weight(const smg_gd_bone_map *m, const smg_gd_mask *mask, GDExtensionObjectPtr skel, uint32_t j,
+	int64_t bone) {
+	if (!mask) return 1.0f;
+	for (uint32_t k = 0; k < mask->count; k++) {
+		gd_string name;
+		gd_str_init(&name, mask->bones[k]);
+		int64_t b = -1;
+		const void *a[1] = { &name };
+		gd_call(GDB_Skeleton3D_find_bone, skel, a, &b);
+		gd_str_destroy(&name);
+		if (b == bone) return mask->weights[k];
+	}
+	return mask->part[m->part_of_joint[j]];
+}
+
 void smg_gd_bone_map_write_pose(smg_gd_bone_map *m, const smg_graph *graph, const smg_character *ch,
-	GDExtensionObjectPtr skel) {
+	GDExtensionObjectPtr skel, const smg_gd_mask *mask) {
 	smg_character_state st;
 	memset(&st, 0, sizeof st);
 	st.struct_size = sizeof st;
@@ -188,10 +214,27 @@ void smg_gd_bone_map_write_pose(smg_gd_bone_map *m, const smg_graph *graph, cons
 			smgi_q_mul(&m->rot[4 * j], r, t);
 			smgi_q_mul(parent_inv, t, &m->rot[4 * j]);
 		}
+		float w = joint_weight(m, mask, skel, j, bone);
+		if (!(w > 0.0f)) continue; /* the skeleton's own pose stays */
+		const void *ba[1] = { &bone };
+		if (w < 1.0f) {
+			/* blend from the pose already there (rest, or what an
+			 * AnimationTree wrote before the modifier stage) */
+			gd_quat cur = { 0, 0, 0, 1 };
+			gd_call(GDB_Skeleton3D_get_bone_pose_rotation, skel, ba, &cur);
+			float c4[4] = { cur.x, cur.y, cur.z, cur.w };
+			smgi_q_nlerp(c4, &m->rot[4 * j], w, &m->rot[4 * j]);
+		}
 		const void *a[2] = { &bone, &m->rot[4 * j] };
 		gd_call(GDB_Skeleton3D_set_bone_pose_rotation, skel, a, NULL);
 		if (j == 0) {
-			const void *p[2] = { &bone, &root_local };
+			gd_vec3 pos = root_local;
+			if (w < 1.0f) {
+				gd_vec3 cur = { 0, 0, 0 };
+				gd_call(GDB_Skeleton3D_get_bone_pose_position, skel, ba, &cur);
+				pos = (gd_vec3){ cur.x + w * (pos.x - cur.x), cur.y + w * (pos.y - cur.y), cur.z + w * (pos.z - cur.z) };
+			}
+			const void *p[2] = { &bone, &pos };
 			gd_call(GDB_Skeleton3D_set_bone_pose_position, skel, p, NULL);
 		}
 	}

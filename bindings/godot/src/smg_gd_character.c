@@ -164,9 +164,29 @@ static uint64_t process_frame(void) {
  * the skeleton's modifier stage (it did so in the last two frames). The
  * skeleton is looked up every frame, never kept as a pointer, so freeing
  * or replacing it is safe. */
+/* An active SmgSkeletonModifier under skel: it applies the pose, from the
+ * first frame on (a pose written here would stay under its mask). */
+static bool has_modifier(GDExtensionObjectPtr skel) {
+	int64_t count = 0;
+	GDExtensionBool internal = 0;
+	const void *ca[1] = { &internal };
+	gd_call(GDB_Node_get_child_count, skel, ca, &count);
+	for (int64_t i = 0; i < count; i++) {
+		GDExtensionObjectPtr c = NULL;
+		const void *a[2] = { &i, &internal };
+		gd_call(GDB_Node_get_child, skel, a, &c);
+		GDExtensionObjectPtr m = gd_cast(c, "SmgSkeletonModifier");
+		GDExtensionBool active = 0;
+		if (m) gd_call(GDB_SkeletonModifier3D_is_active, m, NULL, &active);
+		if (active) return true;
+	}
+	return false;
+}
+
 static void write_pose(smg_gd_character *self) {
 	if (self->modifier_frame && self->modifier_frame + 2 >= process_frame()) return;
 	GDExtensionObjectPtr skel = smg_gd_find_skeleton(self->owner, &self->skeleton_path);
+	if (skel && has_modifier(skel)) return;
 	if (!skel) {
 		if (!self->warned_skeleton) {
 			self->warned_skeleton = true;
@@ -176,15 +196,16 @@ static void write_pose(smg_gd_character *self) {
 		return;
 	}
 	self->warned_skeleton = false;
-	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel);
+	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel, NULL);
 }
 
-bool smg_gd_character_apply_pose(GDExtensionObjectPtr character, GDExtensionObjectPtr skel) {
+bool smg_gd_character_apply_pose(GDExtensionObjectPtr character, GDExtensionObjectPtr skel,
+	const smg_gd_mask *mask) {
 	smg_gd_character *self = gd_object_self(character, CLASS);
 	if (!self || !skel) return false;
 	self->modifier_frame = process_frame();
 	if (!smg_gd_character_ensure(self)) return false;
-	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel);
+	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel, mask);
 	return true;
 }
 

@@ -6,7 +6,7 @@
 # The last line is "scene: N passed, M failed".
 extends SceneTree
 
-const PLANNED := 14
+const PLANNED := 17
 const DT := 1.0 / 30.0
 
 var passed := 0
@@ -41,6 +41,7 @@ func run() -> void:
 	await test_events()
 	await test_engine_mover()
 	await test_ground()
+	await test_mask()
 
 
 func joint(side: String, part: String) -> int:
@@ -321,4 +322,63 @@ func test_ground() -> void:
 		c.step(DT)
 	check(abs(c.get_root_position().y) < 1e-4, "with no ground in the mask the height stays (%.5f)" % c.get_root_position().y)
 	c.queue_free()
+	await process_frame
+
+
+# ---------------- blending with an AnimationTree ----------------
+
+# An AnimationTree holds an "aim" pose on one upper-body and one lower-body
+# bone; the modifier after it takes libsmg's lower body only. A second
+# character on the same path, without modifier, gives libsmg's own pose.
+func test_mask() -> void:
+	var c := new_character(root)
+	var ref := new_character(root)
+	var skel := skeleton_of(c)
+	var ref_skel := skeleton_of(ref)
+	var arm := joint("Left", "Arm")
+	var leg := joint("Left", "UpLeg")
+	var hip := joint("Right", "UpLeg")
+	var aim := Quaternion(Vector3(1, 0, 0), 0.9)
+	var anim := Animation.new()
+	anim.length = 1.0
+	anim.loop_mode = Animation.LOOP_LINEAR
+	for j in [arm, leg]:
+		var tr := anim.add_track(Animation.TYPE_ROTATION_3D)
+		anim.track_set_path(tr, NodePath("%s:%s" % [skel.name, graph.get_joint_name(j)]))
+		anim.rotation_track_insert_key(tr, 0.0, aim)
+	var lib := AnimationLibrary.new()
+	lib.add_animation("aim", anim)
+	var tree := AnimationTree.new()
+	tree.add_animation_library("", lib)
+	var node := AnimationNodeAnimation.new()
+	node.animation = "aim"
+	tree.tree_root = node
+	c.add_child(tree)
+	tree.root_node = NodePath("..")
+	tree.active = true
+	var mod := SmgSkeletonModifier.new()
+	mod.upper_body_weight = 0.0  # upper body from the AnimationTree
+	mod.set_bone_weight(graph.get_joint_name(hip), 0.5)
+	skel.add_child(mod)
+	var seen := {"n": 0, "arm": 0.0, "leg": 0.0, "hip": 0.0}
+	mod.modification_processed.connect(func():
+		seen.n += 1
+		if seen.n > 1:  # the AnimationTree first blends in the frame after it starts
+			seen.arm = max(seen.arm, skel.get_bone_pose_rotation(arm).angle_to(aim))
+		seen.leg = max(seen.leg, skel.get_bone_pose_rotation(leg).angle_to(ref_skel.get_bone_pose_rotation(leg)))
+		var half := skel.get_bone_pose_rotation(hip)
+		var want := skel.get_bone_rest(hip).basis.get_rotation_quaternion().slerp(ref_skel.get_bone_pose_rotation(hip), 0.5)
+		seen.hip = max(seen.hip, half.angle_to(want)))
+	for p in [c, ref]:
+		p.set_path(PackedVector3Array([Vector3(0, 0, 0), Vector3(0, 0, 8)]))
+	for i in 40:
+		c.step(DT)
+		ref.step(DT)
+		await process_frame
+	check(seen.n >= 30 and seen.arm < 5e-3,
+		"upper body keeps the AnimationTree's pose under the modifier (%d frames, worst %.5f rad)" % [seen.n, seen.arm])
+	check(seen.leg < 5e-3, "lower body is libsmg's pose (worst %.5f rad from the unmasked character)" % seen.leg)
+	check(seen.hip < 0.02, "a bone weight of 0.5 blends halfway (worst %.4f rad)" % seen.hip)
+	c.queue_free()
+	ref.queue_free()
 	await process_frame
