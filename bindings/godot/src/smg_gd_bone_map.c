@@ -8,6 +8,7 @@
 #include "rmath.h"
 #include "smg_gd_bone_map.h"
 #include "smg_gd_graph.h"
+#include "smg_gd_humanoid.h"
 
 bool smg_gd_bone_map_init(smg_gd_bone_map *m, uint32_t joint_count) {
 	smg_gd_bone_map_free(m);
@@ -98,7 +99,35 @@ static void bone_global_rest(GDExtensionObjectPtr skel, int64_t bone, float *q) 
 	basis_rotation(&t, q);
 }
 
-/* Bones by name, refreshed when the skeleton or its bone list changes. */
+static int64_t find_bone(GDExtensionObjectPtr skel, const char *name) {
+	gd_string s;
+	gd_str_init(&s, name);
+	int64_t bone = -1;
+	const void *a[1] = { &s };
+	gd_call(GDB_Skeleton3D_find_bone, skel, a, &bone);
+	gd_str_destroy(&s);
+	return bone;
+}
+
+/* The skeleton bone a BoneMap gives for a profile bone name, or -1. */
+static int64_t find_mapped_bone(GDExtensionObjectPtr skel, GDExtensionObjectPtr bone_map, const char *profile) {
+	gd_string_name in, out;
+	gd_sn_init(&in, profile);
+	gd_sn_init(&out, "");
+	const void *a[1] = { &in };
+	gd_call(GDB_BoneMap_get_skeleton_bone_name, bone_map, a, &out);
+	gd_string s;
+	const void *ca[1] = { &out };
+	gd.variant_get_ptr_constructor(GDEXTENSION_VARIANT_TYPE_STRING, 2)(&s, ca); /* String(StringName) */
+	char name[256];
+	gd_str_to_c(&s, name, sizeof name);
+	gd_str_destroy(&s);
+	gd_sn_destroy(&out);
+	gd_sn_destroy(&in);
+	return name[0] ? find_bone(skel, name) : -1;
+}
+
+/* Bones matched, refreshed when the skeleton or its bone list changes. */
 static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionObjectPtr skel) {
 	GDObjectInstanceID id = gd.object_get_instance_id(skel);
 	int64_t version = 0;
@@ -126,6 +155,9 @@ static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionO
 	m->skel_id = id;
 	m->skel_version = version;
 	uint32_t matched = 0;
+	const char **profile = calloc(n ? n : 1, sizeof *profile);
+	if (profile) smg_gd_humanoid_names(graph, n, profile);
+	GDExtensionObjectPtr bone_map = m->bone_map ? gd_cast(gd_variant_object(m->bone_map), "BoneMap") : NULL;
 	for (uint32_t j = 0; j < n; j++) {
 		smg_joint_info ji;
 		memset(&ji, 0, sizeof ji);
@@ -134,14 +166,14 @@ static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionO
 		part[j] = SMG_BODY_UPPER;
 		if (smg_graph_get_joint(graph, j, &ji) != SMG_OK || !ji.name) continue;
 		if (ji.body_part <= SMG_BODY_UPPER) part[j] = (uint8_t)ji.body_part;
-		char bone_name[256];
-		smg_gd_bone_name(ji.name, bone_name, sizeof bone_name);
-		gd_string name;
-		gd_str_init(&name, bone_name);
-		int64_t bone = -1;
-		const void *a[1] = { &name };
-		gd_call(GDB_Skeleton3D_find_bone, skel, a, &bone);
-		gd_str_destroy(&name);
+		const char *prof = profile ? profile[j] : NULL;
+		int64_t bone = bone_map && prof ? find_mapped_bone(skel, bone_map, prof) : -1;
+		if (bone < 0) {
+			char bone_name[256];
+			smg_gd_bone_name(ji.name, bone_name, sizeof bone_name);
+			bone = find_bone(skel, bone_name);
+		}
+		if (bone < 0 && prof) bone = find_bone(skel, prof);
 		if (bone >= 0 && bone <= INT32_MAX) {
 			map[j] = (int32_t)bone;
 			matched++;
@@ -157,10 +189,11 @@ static void match_bones(smg_gd_bone_map *m, const smg_graph *graph, GDExtensionO
 				if (fabsf(rest[8 * j + k] - (k % 4 == 3 ? 1.0f : 0.0f)) > 1e-6f) m->rests_identity = false;
 		}
 	}
+	free(profile);
 	if (matched < n && !m->warned) {
 		m->warned = true;
-		GD_WARN("SmgCharacter: %u of %u graph joints have no bone of the same name in the skeleton; "
-		        "they are not animated", n - matched, n);
+		GD_WARN("SmgCharacter: %u of %u graph joints have no bone in the skeleton (by BoneMap, name or "
+		        "humanoid profile name); they are not animated", n - matched, n);
 	}
 }
 

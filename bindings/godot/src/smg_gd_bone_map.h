@@ -1,5 +1,8 @@
 /* smg_gd_bone_map.h - an SmgCharacter's graph joints matched to the bones
- * of a Skeleton3D by name, and the pose written through that match.
+ * of a Skeleton3D, and the pose written through that match. A joint goes to
+ * the bone a BoneMap gives for its SkeletonProfileHumanoid name (when the
+ * character has a BoneMap), else to the bone of its own name, else to the
+ * bone named as the profile names it (a rig Godot's importer renamed).
  *
  * The match is refreshed whenever the skeleton or its bone list changes
  * (instance id, Skeleton3D version). Bones the graph does not know are left
@@ -33,6 +36,8 @@ typedef struct smg_gd_bone_map {
 	                         * bone and of that bone's parent (x,y,z,w) */
 	uint8_t *part_of_joint; /* SMG_BODY_* of each joint */
 	bool rests_identity;    /* every mapped bone rests world-aligned */
+	const gd_variant *bone_map; /* the owner's BoneMap (or nil), read at
+	                             * each match; may be NULL */
 	bool warned;            /* the missing-joints warning was printed */
 } smg_gd_bone_map;
 

@@ -128,6 +128,7 @@ bool smg_gd_character_ensure(smg_gd_character *self) {
 		teardown(self);
 		return false;
 	}
+	self->bones.bone_map = &self->bone_map_var;
 	/* Replay what the user gave the previous character. */
 	smg_gd_mirror_replay(&self->mirror, self->ch);
 	smg_character_state st;
@@ -300,6 +301,7 @@ static GDExtensionObjectPtr create(void *ud, GDExtensionBool notify) {
 	smg_gd_character *self = calloc(1, sizeof *self);
 	if (!self) return NULL;
 	gd_variant_nil(&self->graph_var);
+	gd_variant_nil(&self->bone_map_var);
 	gd_node_path_init(&self->skeleton_path, "");
 	self->threshold = 0.25;
 	self->ik = true;
@@ -320,6 +322,7 @@ static void destroy(void *ud, GDExtensionClassInstancePtr inst) {
 	smg_gd_character *self = inst;
 	teardown(self);                       /* character, then its graph ref */
 	gd_variant_destroy(&self->graph_var); /* then the resource itself */
+	gd_variant_destroy(&self->bone_map_var);
 	gd_node_path_destroy(&self->skeleton_path);
 	smg_gd_mirror_free(&self->mirror);
 	free(self->events);

@@ -29,6 +29,7 @@ typedef struct smg_gd_character {
 	smg_character *ch;
 
 	gd_node_path skeleton_path;
+	gd_variant bone_map_var; /* Ref<BoneMap> or nil: humanoid rigs */
 	smg_gd_bone_map bones;
 	bool warned_skeleton, warned_step;
 

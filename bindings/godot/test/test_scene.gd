@@ -6,7 +6,7 @@
 # The last line is "scene: N passed, M failed".
 extends SceneTree
 
-const PLANNED := 17
+const PLANNED := 20
 const DT := 1.0 / 30.0
 
 var passed := 0
@@ -42,6 +42,7 @@ func run() -> void:
 	await test_engine_mover()
 	await test_ground()
 	await test_mask()
+	await test_bone_map()
 
 
 func joint(side: String, part: String) -> int:
@@ -379,6 +380,80 @@ func test_mask() -> void:
 		"upper body keeps the AnimationTree's pose under the modifier (%d frames, worst %.5f rad)" % [seen.n, seen.arm])
 	check(seen.leg < 5e-3, "lower body is libsmg's pose (worst %.5f rad from the unmasked character)" % seen.leg)
 	check(seen.hip < 0.02, "a bone weight of 0.5 blends halfway (worst %.4f rad)" % seen.hip)
+	c.queue_free()
+	ref.queue_free()
+	await process_frame
+
+
+# ---------------- humanoid rigs through a BoneMap ----------------
+
+# The graph's joints as Godot's SkeletonProfileHumanoid names them; what a
+# user's BoneMap would say for this skeleton (written here by hand, from
+# the default graph's CMU-style names).
+const PROFILE_OF := {
+	"Hips": "Hips", "LowerBack": "Spine", "Spine": "Chest", "Spine1": "UpperChest", "Neck": "Neck",
+	"Head": "Head", "LeftShoulder": "LeftShoulder", "LeftArm": "LeftUpperArm",
+	"LeftForeArm": "LeftLowerArm", "LeftHand": "LeftHand", "RightShoulder": "RightShoulder",
+	"RightArm": "RightUpperArm", "RightForeArm": "RightLowerArm", "RightHand": "RightHand",
+	"LeftUpLeg": "LeftUpperLeg", "LeftLeg": "LeftLowerLeg", "LeftFoot": "LeftFoot", "LeftToeBase": "LeftToes",
+	"RightUpLeg": "RightUpperLeg", "RightLeg": "RightLowerLeg", "RightFoot": "RightFoot",
+	"RightToeBase": "RightToes",
+}
+
+
+# A rig whose bone names follow no convention ("bone_07"), driven through a
+# BoneMap only, against a character on the graph's own bone names.
+func test_bone_map() -> void:
+	var c := SmgCharacter.new()
+	c.graph = graph
+	c.active = false
+	root.add_child(c)
+	var skel: Skeleton3D = graph.build_skeleton()
+	var bm := BoneMap.new()
+	bm.profile = SkeletonProfileHumanoid.new()
+	var mapped := []
+	var unmapped := []
+	for j in graph.get_joint_count():
+		var own := "bone_%02d" % j
+		skel.set_bone_name(j, own)
+		var jn := graph.get_joint_name(j)
+		if PROFILE_OF.has(jn):
+			bm.set_skeleton_bone_name(PROFILE_OF[jn], own)
+			mapped.append(j)
+		else:
+			unmapped.append(j)
+	c.add_child(skel)
+	c.bone_map = bm
+	var ref := new_character(root)
+	var ref_skel := skeleton_of(ref)
+	for p in [c, ref]:
+		p.set_path(PackedVector3Array([Vector3(0, 0, 0), Vector3(0, 0, 3), Vector3(2, 0, 6)]))
+	var worst := 0.0
+	var root_err := 0.0
+	var moved := 0
+	var untouched := true
+	for i in 60:
+		c.step(DT)
+		ref.step(DT)
+		for j in mapped:
+			var q := skel.get_bone_pose_rotation(j)
+			worst = max(worst, q.angle_to(ref_skel.get_bone_pose_rotation(j)))
+			if i == 59 and not q.is_equal_approx(Quaternion.IDENTITY):
+				moved += 1
+		root_err = max(root_err, skel.get_bone_pose_position(0).distance_to(ref_skel.get_bone_pose_position(0)))
+		for j in unmapped:
+			untouched = untouched and skel.get_bone_pose_rotation(j).is_equal_approx(Quaternion.IDENTITY)
+	check(moved >= mapped.size() / 2 and worst < 5e-3 and root_err < 1e-4,
+		"BoneMap only: %d of the mapped bones turned, all posed as by name (worst %.5f rad, root %.5f m)" % [moved, worst, root_err])
+	check(untouched, "bones the BoneMap does not name are left alone (%d)" % unmapped.size())
+	# the same rig without the BoneMap: nothing matches
+	c.bone_map = null
+	skel.reset_bone_poses()
+	c.step(DT)
+	var still := true
+	for j in graph.get_joint_count():
+		still = still and skel.get_bone_pose_rotation(j).is_equal_approx(Quaternion.IDENTITY)
+	check(still, "without the BoneMap the unconventional names match nothing")
 	c.queue_free()
 	ref.queue_free()
 	await process_frame
