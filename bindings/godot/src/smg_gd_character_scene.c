@@ -205,9 +205,10 @@ static void m_set_root_motion_mode(void *vself, const gd_value *a, gd_value *r) 
 	/* the library's space changes (parent <-> global): start again at the
 	 * node, replaying the path and points */
 	if (self->ch) {
-		smg_character_destroy(self->ch);
+		smg_result res = smg_character_destroy(self->ch);
+		if (res != SMG_OK) GD_ERR("SmgCharacter.root_motion_mode: destroy failed: %s", smg_result_string(res));
 		self->ch = NULL;
-		smg_gd_character_ensure(self);
+		smg_gd_character_ensure(self); /* rebuilt on the same graph */
 	}
 }
 
