@@ -31,6 +31,7 @@
 #include "bake_scc.h"
 #include "bake_upper.h"
 #include "bake_math.h"
+#include "bake_pair_search.h"
 
 /* ---- building ------------------------------------------------------------- */
 
@@ -112,6 +113,13 @@ typedef struct cand {
                          into the same target label (select_candidates) */
 } cand;
 
+/* Start cells per source window for the minimum search
+ * (bake_pair_search.h): its nearest windows in pose-feature space. */
+#define SMGB_TRANSITION_NEIGHBOURS 32u
+/* ... and into each other style: style changes are few and only need to
+ * be available (select_candidates keeps the best per source region). */
+#define SMGB_STYLE_CHANGE_NEIGHBOURS 4u
+
 /* Relative tolerance of the per-label-pair median ceiling (see
  * select_candidates): costs within 5 % of the median count as equal. */
 #define MEDIAN_TOLERANCE 0.05f
@@ -146,6 +154,11 @@ static int clip_cmp(const void* pa, const void* pb) {
   return cand_cmp(pa, pb);
 }
 
+static int float_cmp(const void* pa, const void* pb) {
+  float a = *(const float*)pa, b = *(const float*)pb;
+  return a < b ? -1 : a > b ? 1 : 0;
+}
+
 static int u32_cmp(const void* pa, const void* pb) {
   uint32_t a = *(const uint32_t*)pa, b = *(const uint32_t*)pb;
   return a < b ? -1 : a > b ? 1 : 0;
@@ -165,14 +178,14 @@ static uint32_t find_node(const smgb_graph* g, uint32_t frame) {
 
 /* Choose transitions among local minima.
  *
- * Same-label candidates (by_clip = 1): per (source clip, target clip) pair
- * the best transition_percentile % are kept, provided they are no worse
- * than the median local minimum of their (label, label) pair (and the
- * absolute transition_threshold when set). Ranking per clip pair rather
- * than per label pair matters: near-identical clips (a clip and its own
- * periodic repeats, mirrored twins) have minima near zero that would
- * otherwise take the whole percentile and leave, say, straight and turning
- * walks unconnected although their best transitions are excellent.
+ * Same-label candidates (by_clip = 1) are the local minima reached from
+ * each window's nearest matches (bake_pair_search.h), which already ranks
+ * them per source window the way a percentile per clip pair did over the
+ * whole grid: near-identical clips (a clip and its own periodic repeats,
+ * mirrored twins) cannot take every place, because each target clip keeps
+ * at most one per source region below. They are kept when no worse than
+ * `ceiling` for their (label, label) pair (sampled_ceilings) and the
+ * absolute transition_threshold when set.
  * Label changes (by_clip = 0): the percentile is taken per label pair.
  *
  * Then thinning: periodic motion has a local minimum against every cycle
@@ -180,40 +193,12 @@ static uint32_t find_node(const smgb_graph* g, uint32_t frame) {
  * clip (label, for label changes) only the best candidate is kept.
  * Returns the new count. */
 static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
-                                  int by_clip) {
+                                  int by_clip, const float* ceiling) {
   uint32_t i, kept = 0, t, nk = 0;
-  float* ceiling = NULL;
   uint32_t L = b->style_count > b->action_count ? b->style_count
                                                 : b->action_count;
   if (n == 0) return 0;
-  if (by_clip) {
-    ceiling = malloc((size_t)L * L * sizeof *ceiling);
-    if (ceiling) {
-      for (i = 0; i < L * L; ++i) ceiling[i] = INFINITY;
-      qsort(cands, n, sizeof *cands, cand_cmp);
-      for (i = 0; i < n;) {
-        uint32_t e = i;
-        while (e < n && cands[e].li == cands[i].li &&
-               cands[e].lj == cands[i].lj)
-          ++e;
-        /* The median, widened by a small relative tolerance: periodic
-         * clips give dozens of minima of one and the same cost (a straight
-         * run against a turning run: every cycle matches every cycle
-         * equally well), and when the median falls on such a plateau a
-         * strict test lets float noise pick which few of them survive.
-         * Seen on the synthetic runs: 1 turning -> straight transition
-         * per 6 s clip instead of ~20, so a run that entered a turn could
-         * not straighten out for seconds. */
-        if (cands[i].li < L && cands[i].lj < L)
-          ceiling[cands[i].li * L + cands[i].lj] =
-              cands[i + (e - i - 1) / 2].m.dist * (1.0f + MEDIAN_TOLERANCE);
-        i = e;
-      }
-    }
-    qsort(cands, n, sizeof *cands, clip_cmp);
-  } else {
-    qsort(cands, n, sizeof *cands, cand_cmp);
-  }
+  qsort(cands, n, sizeof *cands, by_clip ? clip_cmp : cand_cmp);
   for (i = 0; i < n;) {
     uint32_t e = i, keep, taken;
     float cap = INFINITY;
@@ -222,19 +207,16 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
            (!by_clip || (cands[e].ci == cands[i].ci &&
                          cands[e].cj == cands[i].cj)))
       ++e;
-    keep = (uint32_t)ceil((e - i) * (double)b->opt.transition_percentile /
-                          100.0);
+    /* Same-label pairs: the search already ranked (each window's nearest
+     * matches), the ceiling decides. Label changes: the percentile per
+     * label pair. */
+    keep = by_clip ? e - i
+                   : (uint32_t)ceil((e - i) *
+                                    (double)b->opt.transition_percentile /
+                                    100.0);
     if (keep < 1) keep = 1;
     if (keep > e - i) keep = e - i;
-    /* Ties at the percentile cut are all kept (same tolerance as the
-     * median): a turning run against the straight run has ~90 minima of
-     * one cost, and a cut through them kept a noise-picked third, which
-     * the region thinning below then left in only a few source regions. */
-    if (by_clip) {
-      float cut = cands[i + keep - 1].m.dist * (1.0f + MEDIAN_TOLERANCE);
-      while (i + keep < e && cands[i + keep].m.dist <= cut) ++keep;
-    }
-    if (ceiling && cands[i].li < L && cands[i].lj < L)
+    if (by_clip && ceiling && cands[i].li < L && cands[i].lj < L)
       cap = ceiling[cands[i].li * L + cands[i].lj];
     if (b->opt.transition_threshold > 0.0f && b->opt.transition_threshold < cap)
       cap = b->opt.transition_threshold;
@@ -251,7 +233,6 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
     }
     i = e;
   }
-  free(ceiling);
   qsort(cands, kept, sizeof *cands, region_cmp);
   for (t = 0; t < kept; ++t) {
     if (nk > 0 && cands[nk - 1].region == cands[t].region &&
@@ -286,6 +267,100 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
     nk = out;
   }
   return nk;
+}
+
+/* Clip pairs per label whose full grids give the median (below). */
+#define SMGB_CEILING_SAMPLE_PAIRS 64u
+
+typedef struct sub_filter {
+  const build_ctx* ctx;
+  uint32_t row0, col0;         /* cloud index of the sub-clouds' frame 0 */
+} sub_filter;
+
+static int sub_pair_filter(uint32_t i, uint32_t j, void* user) {
+  const sub_filter* f = user;
+  return pair_filter(f->row0 + i, f->col0 + j, (void*)f->ctx);
+}
+
+/* The ceiling of each label's same-label transitions: the median of the
+ * label's local minima (Kovar's threshold, relative to the data), widened
+ * by MEDIAN_TOLERANCE: periodic clips give dozens of minima of one and the
+ * same cost, and a strict test on such a plateau lets float noise pick the
+ * few that survive. The search only finds good minima, so their median
+ * would be biased low: the median is taken over the exact full grids
+ * (bake_pointcloud.c) of up to SMGB_CEILING_SAMPLE_PAIRS clip pairs of the
+ * label, evenly spread over all its pairs (all of them in small sets,
+ * where it is the exact median). ceiling[l * L + l]; INFINITY elsewhere. */
+static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
+                                   const smgb_cloud* cloud,
+                                   const uint32_t* clip_start, float* ceiling,
+                                   uint32_t L) {
+  uint32_t l, c, i;
+  uint32_t* members = malloc((b->clip_count ? b->clip_count : 1) *
+                             sizeof *members);
+  float* d = NULL;
+  uint32_t nd = 0, dcap = 0;
+  smg_result r = SMG_OK;
+  if (!members) return SMG_ERROR_OUT_OF_MEMORY;
+  for (i = 0; i < L * L; ++i) ceiling[i] = INFINITY;
+  for (l = 0; l < L && r == SMG_OK; ++l) {
+    uint32_t n = 0;
+    uint64_t pairs, step, p;
+    for (c = 0; c < b->clip_count; ++c)
+      if (clip_start[c] != SMGI_NONE && b->clips[c].label == l)
+        members[n++] = c;
+    if (n == 0) continue;
+    pairs = (uint64_t)n * n;
+    step = pairs / SMGB_CEILING_SAMPLE_PAIRS + 1u;
+    nd = 0;
+    for (p = 0; p < pairs && r == SMG_OK; p += step) {
+      uint32_t ca = members[p / n], cb = members[p % n];
+      smgb_cloud A = *cloud, B = *cloud;
+      smgb_grid_job job;
+      sub_filter sf;
+      smgb_minimum* mins = NULL;
+      uint32_t nm = 0, u;
+      size_t stride = (size_t)cloud->points * 3u;
+      A.frames = b->clips[ca].count;
+      A.xyz = cloud->xyz + clip_start[ca] * stride;
+      A.valid = cloud->valid + clip_start[ca];
+      B.frames = b->clips[cb].count;
+      B.xyz = cloud->xyz + clip_start[cb] * stride;
+      B.valid = cloud->valid + clip_start[cb];
+      sf.ctx = ctx;
+      sf.row0 = clip_start[ca];
+      sf.col0 = clip_start[cb];
+      memset(&job, 0, sizeof job);
+      job.rows = &A;
+      job.cols = &B;
+      job.window = b->opt.window;
+      job.align = 1;
+      job.filter = sub_pair_filter;
+      job.filter_user = &sf;
+      job.threads = 1;
+      r = smgb_grid_minima(&job, &mins, &nm);
+      if (r == SMG_OK && nd + nm > dcap) {
+        uint32_t cap = (nd + nm) * 2u;
+        float* nd2 = realloc(d, cap * sizeof *d);
+        if (!nd2)
+          r = SMG_ERROR_OUT_OF_MEMORY;
+        else {
+          d = nd2;
+          dcap = cap;
+        }
+      }
+      if (r == SMG_OK)
+        for (u = 0; u < nm; ++u) d[nd++] = mins[u].dist;
+      free(mins);
+    }
+    if (r == SMG_OK && nd > 0) {
+      qsort(d, nd, sizeof *d, float_cmp);
+      ceiling[l * L + l] = d[(nd - 1) / 2] * (1.0f + MEDIAN_TOLERANCE);
+    }
+  }
+  free(members);
+  free(d);
+  return r;
 }
 
 /* mark[f] = label + 1 for every pool frame lying on an original edge
@@ -407,7 +482,13 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   cand* cands = NULL;
   smg_result r = SMG_ERROR_OUT_OF_MEMORY;
   smgb_cloud cloud;
-  smgb_grid_job job;
+  smgb_pair_search job;
+  double* heading = NULL;
+  uint32_t* group = NULL;
+  uint32_t* clip_start = NULL;
+  float* ceiling = NULL;
+  uint32_t L = b->style_count > b->action_count ? b->style_count
+                                                : b->action_count;
 
   memset(&ctx, 0, sizeof ctx);
   ctx.b = b;
@@ -424,18 +505,28 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   xyz = malloc((size_t)F * P * 3u * sizeof *xyz);
   w = malloc(P * sizeof *w);
   valid = malloc(F);
-  if (!ctx.map || !ctx.clip_of || !xyz || !w || !valid) goto oom;
+  heading = malloc(F * sizeof *heading);
+  group = malloc(F * sizeof *group);
+  clip_start = malloc((b->clip_count ? b->clip_count : 1) * sizeof *clip_start);
+  ceiling = malloc((size_t)(L ? L : 1) * (L ? L : 1) * sizeof *ceiling);
+  if (!ctx.map || !ctx.clip_of || !xyz || !w || !valid || !heading ||
+      !group || !clip_start || !ceiling)
+    goto oom;
+  for (c = 0; c < b->clip_count; ++c) clip_start[c] = SMGI_NONE;
 
   /* point clouds */
   F = 0;
   for (c = 0; c < b->clip_count; ++c) {
     const smgb_pool_clip* pc = &b->clips[c];
     if (!(pc->flags & role) || (pc->flags & SMGI_CLIP_BLEND)) continue;
+    clip_start[c] = F;
     for (f = 0; f < pc->count; ++f) {
       uint32_t pf = pc->first + f;
       double* dst = xyz + (size_t)F * P * 3u;
       ctx.map[F] = pf;
       ctx.clip_of[F] = c;
+      heading[F] = b->frames[pf].root2d[2];
+      group[F] = pc->label;
       /* window + arrival frame inside the clip */
       valid[F] = f + k < pc->count;
       if (role == SMGI_CLIP_LOWER) {
@@ -468,12 +559,23 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   job.rows = &cloud;
   job.cols = &cloud;
   job.window = k;
+  job.neighbours = SMGB_TRANSITION_NEIGHBOURS;
   job.align = 1;
   job.filter = pair_filter;
   job.filter_user = &ctx;
   job.threads = b->opt.threads;
   job.report = &b->report;
-  r = smgb_grid_minima(&job, &mins, &min_count);
+  job.col_group = job.row_group = group;
+  if (role == SMGI_CLIP_LOWER) {
+    job.row_heading = job.col_heading = heading;
+    job.group_count = b->style_count;
+    job.other_neighbours = SMGB_STYLE_CHANGE_NEIGHBOURS;
+  } else {
+    job.group_count = b->action_count; /* within an action only */
+  }
+  r = sampled_ceilings(b, &ctx, &cloud, clip_start, ceiling, L);
+  if (r == SMG_OK) r = smgb_pair_search_minima(&job, &mins, &min_count);
+
   if (r != SMG_OK) {
     smgb_fail(&b->report, "%s graph: distance grid failed (%s)",
               role == SMGI_CLIP_LOWER ? "lower" : "upper",
@@ -519,7 +621,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
         cands[t] = tmp;
       }
     ncross = min_count - nsame;
-    nsame = select_candidates(b, cands, nsame, 1);
+    nsame = select_candidates(b, cands, nsame, 1, ceiling);
     if (ncross > 0) {
       uint8_t* mark = NULL;
       memmove(cands + nsame, cands + (min_count - ncross),
@@ -540,7 +642,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
         }
       }
       free(mark);
-      ncross = select_candidates(b, cands + nsame, ncross, 0);
+      ncross = select_candidates(b, cands + nsame, ncross, 0, NULL);
       smgb_graph_free(g);
     }
     kept = nsame + ncross;
@@ -562,6 +664,10 @@ done:
   free(xyz);
   free(w);
   free(valid);
+  free(heading);
+  free(group);
+  free(clip_start);
+  free(ceiling);
   free(mins);
   free(cands);
   return r;
