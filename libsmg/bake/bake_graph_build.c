@@ -271,6 +271,10 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
 
 /* Clip pairs per label whose full grids give the median (below). */
 #define SMGB_CEILING_SAMPLE_PAIRS 64u
+/* The ceiling is never below 1 mm RMS, far below capture noise: a
+ * perfectly periodic clip (synthetic motion) has a median of 0, and its
+ * exact repeats differ from 0 only by rounding. */
+#define SMGB_CEILING_FLOOR 0.001f
 
 typedef struct sub_filter {
   const build_ctx* ctx;
@@ -354,8 +358,10 @@ static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
       free(mins);
     }
     if (r == SMG_OK && nd > 0) {
+      float med;
       qsort(d, nd, sizeof *d, float_cmp);
-      ceiling[l * L + l] = d[(nd - 1) / 2] * (1.0f + MEDIAN_TOLERANCE);
+      med = d[(nd - 1) / 2] * (1.0f + MEDIAN_TOLERANCE);
+      ceiling[l * L + l] = med > SMGB_CEILING_FLOOR ? med : SMGB_CEILING_FLOOR;
     }
   }
   free(members);

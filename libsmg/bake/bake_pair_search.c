@@ -14,19 +14,21 @@
  *
  * Search. One kd-tree per column group (median splits on the dimension of
  * largest spread). For each usable row window the `neighbours` nearest
- * column windows that pass the filter are the start cells; a start cell
- * whose predecessor on the diagonal, (i-1, j-1) or a cell beside it, was a
- * start cell of row i-1 is dropped: following a match one frame on is the
- * same basin of the distance grid. From each start cell the search steps
- * to the smallest of the 3 x 3 neighbourhood (exact distance, cells
- * ordered by distance, then row, then column, which is the full grid's
- * local-minimum rule with its ties) until the cell itself is the smallest:
- * a local minimum of the exact grid.
+ * column windows that pass the filter are the start cells. From each
+ * start cell the search steps to the smallest of the 3 x 3 neighbourhood
+ * (exact distance; cells ordered by distance, then row, then column, which
+ * is the full grid's local-minimum rule with its ties) until the cell
+ * itself is the smallest: a local minimum of the exact grid over the pairs
+ * the filter accepts. Rejected pairs count as outside the grid: along the
+ * flat valley of a periodic clip against itself the walk would otherwise
+ * slide into the rejected band (too near a clip's start) and find
+ * nothing, where the full grid keeps whichever minimum float noise makes
+ * inside the valley.
  *
  * Cost: O(F log F) for the trees and O(F * neighbours * steps * k * P) for
  * the walks; memory O(F * dims). Threads take contiguous row ranges; row
- * i's start cells depend only on rows i-1 and i, and a walk's end only on
- * its start, so the sorted, de-duplicated output is the same for any
+ * i's start cells depend only on row i, and a walk's end only on its
+ * start, so the sorted, de-duplicated output is the same for any
  * thread count. Two caches per worker (exact distances; cells already
  * walked through) only save work: a cell once walked through leads to a
  * minimum that is already recorded.
@@ -569,7 +571,9 @@ static int walk(worker* w, uint32_t i, uint32_t j) {
         int64_t ii = (int64_t)i + di, jj = (int64_t)j + dj;
         float d;
         if ((di == 0 && dj == 0) || ii < 0 || jj < 0 || ii >= FA ||
-            jj >= FB || !vr[ii] || !vc[jj])
+            jj >= FB || !vr[ii] || !vc[jj] ||
+            (job->filter &&
+             !job->filter((uint32_t)ii, (uint32_t)jj, job->filter_user)))
           continue;
         d = cached(w, (uint32_t)ii, (uint32_t)jj);
         if (cell_before(d, (uint32_t)ii, (uint32_t)jj, bd, bi, bj)) {
@@ -578,10 +582,7 @@ static int walk(worker* w, uint32_t i, uint32_t j) {
           bj = (uint32_t)jj;
         }
       }
-    if (bi == i && bj == j) {
-      if (job->filter && !job->filter(i, j, job->filter_user)) return 1;
-      return push_min(w, i, j);
-    }
+    if (bi == i && bj == j) return push_min(w, i, j);
     i = bi;
     j = bj;
   }
@@ -592,59 +593,33 @@ static int u32_cmp(const void* pa, const void* pb) {
   return a < b ? -1 : a > b ? 1 : 0;
 }
 
-static int has_near(const uint32_t* sorted, uint32_t n, uint32_t j) {
-  /* j - 1 or a neighbour of it (j - 2, j) among the sorted columns */
-  uint32_t lo = 0, hi = n, want = j >= 2 ? j - 2 : 0;
-  while (lo < hi) {
-    uint32_t mid = (lo + hi) / 2;
-    if (sorted[mid] < want)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo < n && sorted[lo] <= j && j >= 1;
-}
-
 static void* worker_run(void* arg) {
   worker* w = arg;
   const search* s = w->s;
   const smgb_pair_search* job = s->job;
   uint32_t per = job->neighbours * s->groups;
   hit* buf = malloc(job->neighbours * sizeof *buf);
-  uint32_t* prev = malloc((per ? per : 1) * sizeof *prev);
   uint32_t* cur = malloc((per ? per : 1) * sizeof *cur);
-  uint32_t np = 0, nc, i, t;
-  if (!buf || !prev || !cur) {
+  uint32_t nc, i, t;
+  if (!buf || !cur) {
     w->failed = 1;
     goto done;
-  }
-  if (w->r0 > 0) {
-    np = starts(s, w->r0 - 1, buf, prev);
-    qsort(prev, np, sizeof *prev, u32_cmp);
   }
   for (i = w->r0; i < w->r1; ++i) {
     nc = starts(s, i, buf, cur);
     qsort(cur, nc, sizeof *cur, u32_cmp);
     for (t = 0; t < nc; ++t) {
       if (t > 0 && cur[t] == cur[t - 1]) continue;
-      if (getenv("SKIP") && i > 0 && has_near(prev, np, cur[t])) continue;
       if (!walk(w, i, cur[t])) {
         w->failed = 1;
         goto done;
       }
-    }
-    {
-      uint32_t* tmp = prev;
-      prev = cur;
-      cur = tmp;
-      np = nc;
     }
     if (w->r0 == 0 && job->report && (i & 255u) == 0)
       smgb_progress(job->report, (float)(i + 1) / (float)(w->r1 + 1));
   }
 done:
   free(buf);
-  free(prev);
   free(cur);
   return NULL;
 }

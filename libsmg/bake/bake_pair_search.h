@@ -9,9 +9,9 @@
  * the window's own floor frame), then walks from each such pair downhill on
  * the exact distance grid to its local minimum. The exact distance is
  * computed only for the cells on those walks; nothing of size F x F is
- * stored. Minima are the grid's minima under the same rule (a cell no
- * larger than its earlier neighbours and smaller than its later ones), so
- * every minimum it reports is one the full grid reports too.
+ * stored. Minima follow the grid's rule (a cell no larger than its earlier
+ * neighbours and smaller than its later ones), over the pairs the filter
+ * accepts.
  */
 #ifndef BAKE_PAIR_SEARCH_H
 #define BAKE_PAIR_SEARCH_H
@@ -43,8 +43,7 @@ typedef struct smgb_pair_search {
   uint32_t neighbours;
   uint32_t other_neighbours;
   int align;                   /* 1: optimal 2-D alignment (Kovar) */
-  smgb_pair_filter filter;     /* applied to the nearest-neighbour pairs
-                                  and to the minima found */
+  smgb_pair_filter filter;     /* pairs it rejects are not searched */
   void* filter_user;
   uint32_t threads;
   smgb_report* report;         /* progress (may be NULL) */
