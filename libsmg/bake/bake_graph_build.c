@@ -40,6 +40,7 @@ typedef struct build_ctx {
   uint32_t role;
   uint32_t* map;      /* cloud frame -> pool frame */
   uint32_t* clip_of;  /* cloud frame -> pool clip */
+  const uint8_t* mark; /* set while searching label changes (mark_cores) */
 } build_ctx;
 
 static int pair_filter(uint32_t i, uint32_t j, void* user) {
@@ -61,6 +62,12 @@ static int pair_filter(uint32_t i, uint32_t j, void* user) {
   }
   if (c->role == SMGI_CLIP_UPPER && b->clips[ci].label != b->clips[cj].label)
     return 0;
+  if (c->mark) {
+    /* a label change from one style's core into another's */
+    uint32_t li = b->clips[ci].label, lj = b->clips[cj].label;
+    return li != lj && c->mark[c->map[i]] == li + 1 &&
+           c->mark[c->map[j] + k] == lj + 1;
+  }
   return 1;
 }
 
@@ -315,7 +322,7 @@ static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
         members[n++] = c;
     if (n == 0) continue;
     pairs = (uint64_t)n * n;
-    step = pairs / SMGB_CEILING_SAMPLE_PAIRS + 1u;
+    step = (pairs + SMGB_CEILING_SAMPLE_PAIRS - 1u) / SMGB_CEILING_SAMPLE_PAIRS;
     nd = 0;
     for (p = 0; p < pairs && r == SMG_OK; p += step) {
       uint32_t ca = members[p / n], cb = members[p % n];
@@ -477,9 +484,37 @@ static smg_result assemble(smgb_bake* b, smgb_graph* g, uint32_t role,
   return SMG_OK;
 }
 
+/* Candidates with their labels, clips, phase rule and thinning groups. */
+static void to_cands(const smgb_bake* b, const build_ctx* ctx,
+                     const smgb_minimum* mins, uint32_t n, cand* cands) {
+  uint32_t k = b->opt.window, i;
+  for (i = 0; i < n; ++i) {
+    uint32_t c0 = ctx->clip_of[mins[i].i], span;
+    cands[i].m = mins[i];
+    cands[i].li = b->clips[c0].label;
+    cands[i].lj = b->clips[ctx->clip_of[mins[i].j]].label;
+    cands[i].ci = c0;
+    cands[i].cj = ctx->clip_of[mins[i].j];
+    cands[i].admissible =
+        ctx->role != SMGI_CLIP_UPPER ||
+        (b->upper_phase_free >> cands[i].li & 1u) ||
+        phase_agrees(b, ctx->map[mins[i].i], ctx->map[mins[i].j]);
+    /* same-label candidates: one per k source frames; label changes are
+     * far costlier (walk vs run poses) and only need to be available, so
+     * one per max_edge_frames */
+    span = cands[i].li == cands[i].lj ? k : b->opt.max_edge_frames;
+    if (span < 1) span = 1;
+    /* pool frames are contiguous per clip: (clip, local frame / span) */
+    cands[i].region =
+        c0 * 65536u + (ctx->map[mins[i].i] - b->clips[c0].first) / span;
+    cands[i].target = cands[i].cj;
+    cands[i].best = 0.0f;
+  }
+}
+
 smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   smgb_graph* g = role == SMGI_CLIP_LOWER ? &b->lower : &b->upper;
-  uint32_t k = b->opt.window, F = 0, c, f, P, i;
+  uint32_t k = b->opt.window, F = 0, c, f, P;
   build_ctx ctx;
   double *xyz = NULL, *w = NULL;
   uint8_t* valid = NULL;
@@ -575,7 +610,6 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   if (role == SMGI_CLIP_LOWER) {
     job.row_heading = job.col_heading = heading;
     job.group_count = b->style_count;
-    job.other_neighbours = SMGB_STYLE_CHANGE_NEIGHBOURS;
   } else {
     job.group_count = b->action_count; /* within an action only */
   }
@@ -589,67 +623,47 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
     goto done;
   }
 
-  /* percentile per (label, label) pair */
   cands = malloc((min_count ? min_count : 1) * sizeof *cands);
   if (!cands) goto oom;
-  for (i = 0; i < min_count; ++i) {
-    cands[i].m = mins[i];
-    cands[i].li = b->clips[ctx.clip_of[mins[i].i]].label;
-    cands[i].lj = b->clips[ctx.clip_of[mins[i].j]].label;
-    cands[i].ci = ctx.clip_of[mins[i].i];
-    cands[i].cj = ctx.clip_of[mins[i].j];
-    cands[i].admissible =
-        role != SMGI_CLIP_UPPER ||
-        (b->upper_phase_free >> cands[i].li & 1u) ||
-        phase_agrees(b, ctx.map[mins[i].i], ctx.map[mins[i].j]);
-    {
-      /* same-label candidates: one per k source frames; label changes are
-       * far costlier (walk vs run poses) and only need to be available,
-       * so one per max_edge_frames */
-      uint32_t c0 = ctx.clip_of[mins[i].i];
-      uint32_t span = cands[i].li == cands[i].lj ? k : b->opt.max_edge_frames;
-      if (span < 1) span = 1;
-      /* pool frames are contiguous per clip: (clip, local frame / span) */
-      cands[i].region = c0 * 65536u +
-                        (ctx.map[mins[i].i] - b->clips[c0].first) / span;
-      cands[i].target = ctx.clip_of[mins[i].j];
-    }
-  }
-  /* Same-label transitions first; label changes (walk <-> run) are chosen
-   * afterwards, only between the styles' own strongly connected cores, so
-   * that the few costly ones that are kept actually connect the styles. */
+  to_cands(b, &ctx, mins, min_count, cands);
+  /* Same-label transitions first; label changes (walk <-> run) are
+   * searched afterwards, only from one style's strongly connected core
+   * into another's, so that the few costly ones that are kept actually
+   * connect the styles (the best matches between styles are often where
+   * a clip starts or ends, outside every cycle). */
   {
-    uint32_t nsame = 0, ncross, t;
-    for (t = 0; t < min_count; ++t)
-      if (cands[t].li == cands[t].lj) {
-        cand tmp = cands[nsame];
-        cands[nsame++] = cands[t];
-        cands[t] = tmp;
-      }
-    ncross = min_count - nsame;
-    nsame = select_candidates(b, cands, nsame, 1, ceiling);
-    if (ncross > 0) {
+    uint32_t nsame = select_candidates(b, cands, min_count, 1, ceiling);
+    uint32_t ncross = 0;
+    if (role == SMGI_CLIP_LOWER && b->style_count > 1) {
       uint8_t* mark = NULL;
-      memmove(cands + nsame, cands + (min_count - ncross),
-              ncross * sizeof *cands);
+      smgb_minimum* cm = NULL;
+      cand* grown;
       if ((r = assemble(b, g, role, &ctx, cands, nsame)) != SMG_OK) goto done;
       mark = calloc(b->frame_count, 1);
       if (!mark || mark_cores(b, g, mark) != SMG_OK) {
         free(mark);
         goto oom;
       }
-      for (t = nsame; t < nsame + ncross;) {
-        uint32_t fi = ctx.map[cands[t].m.i], fj = ctx.map[cands[t].m.j] + k;
-        if (mark[fi] == cands[t].li + 1 && mark[fj] == cands[t].lj + 1) {
-          ++t;
-        } else {
-          cands[t] = cands[nsame + ncross - 1];
-          --ncross;
-        }
-      }
-      free(mark);
-      ncross = select_candidates(b, cands + nsame, ncross, 0, NULL);
       smgb_graph_free(g);
+      ctx.mark = mark;
+      job.neighbours = 0;
+      job.other_neighbours = SMGB_STYLE_CHANGE_NEIGHBOURS;
+      r = smgb_pair_search_minima(&job, &cm, &ncross);
+      ctx.mark = NULL;
+      free(mark);
+      if (r != SMG_OK) {
+        free(cm);
+        goto oom;
+      }
+      grown = realloc(cands, ((size_t)nsame + ncross + 1u) * sizeof *cands);
+      if (!grown) {
+        free(cm);
+        goto oom;
+      }
+      cands = grown;
+      to_cands(b, &ctx, cm, ncross, cands + nsame);
+      free(cm);
+      ncross = select_candidates(b, cands + nsame, ncross, 0, NULL);
     }
     kept = nsame + ncross;
   }

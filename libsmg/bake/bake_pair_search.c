@@ -597,8 +597,11 @@ static void* worker_run(void* arg) {
   worker* w = arg;
   const search* s = w->s;
   const smgb_pair_search* job = s->job;
-  uint32_t per = job->neighbours * s->groups;
-  hit* buf = malloc(job->neighbours * sizeof *buf);
+  uint32_t most = job->neighbours > job->other_neighbours
+                      ? job->neighbours
+                      : job->other_neighbours;
+  uint32_t per = most * s->groups;
+  hit* buf = malloc(most * sizeof *buf);
   uint32_t* cur = malloc((per ? per : 1) * sizeof *cur);
   uint32_t nc, i, t;
   if (!buf || !cur) {
@@ -690,10 +693,11 @@ smg_result smgb_pair_search_minima(const smgb_pair_search* job,
   *out = NULL;
   *out_count = 0;
   if (A->frames == 0 || B->frames == 0 || job->window == 0 ||
-      job->neighbours == 0 || A->points != B->points || A->points == 0)
+      (job->neighbours == 0 && job->other_neighbours == 0) ||
+      A->points != B->points || A->points == 0)
     return SMG_OK;
   if (job->neighbours > SMGB_PAIR_MAX_K ||
-      job->other_neighbours > job->neighbours)
+      job->other_neighbours > SMGB_PAIR_MAX_K)
     return SMG_ERROR_INVALID_ARGUMENT;
   memset(&s, 0, sizeof s);
   s.job = job;
