@@ -127,6 +127,9 @@ typedef struct cand {
  * be available (select_candidates keeps the best per source region). */
 #define SMGB_STYLE_CHANGE_NEIGHBOURS 4u
 
+/* Same-label transitions kept per source region (select_candidates). */
+#define SMGB_REGION_TRANSITIONS 4u
+
 /* Relative tolerance of the per-label-pair median ceiling (see
  * select_candidates): costs within 5 % of the median count as equal. */
 #define MEDIAN_TOLERANCE 0.05f
@@ -136,6 +139,16 @@ static int region_cmp(const void* pa, const void* pb) {
   const cand* b = pb;
   if (a->region != b->region) return a->region < b->region ? -1 : 1;
   if (a->target != b->target) return a->target < b->target ? -1 : 1;
+  if (a->m.dist != b->m.dist) return a->m.dist < b->m.dist ? -1 : 1;
+  if (a->m.i != b->m.i) return a->m.i < b->m.i ? -1 : 1;
+  if (a->m.j != b->m.j) return a->m.j < b->m.j ? -1 : 1;
+  return 0;
+}
+
+static int region_cost_cmp(const void* pa, const void* pb) {
+  const cand* a = pa;
+  const cand* b = pb;
+  if (a->region != b->region) return a->region < b->region ? -1 : 1;
   if (a->m.dist != b->m.dist) return a->m.dist < b->m.dist ? -1 : 1;
   if (a->m.i != b->m.i) return a->m.i < b->m.i ? -1 : 1;
   if (a->m.j != b->m.j) return a->m.j < b->m.j ? -1 : 1;
@@ -246,6 +259,19 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
         cands[nk - 1].target == cands[t].target)
       continue;
     cands[nk++] = cands[t];
+  }
+  if (by_clip && nk > 0) {
+    /* and per source region only the best SMGB_REGION_TRANSITIONS target
+     * clips: with hundreds of similar clips every region has a good
+     * match in each of them, and one per clip made the graph (and the
+     * blend frames of its transitions) grow with clips x frames */
+    uint32_t out = 0, run = 0;
+    qsort(cands, nk, sizeof *cands, region_cost_cmp);
+    for (t = 0; t < nk; ++t) {
+      run = t > 0 && cands[t].region == cands[t - 1].region ? run + 1 : 0;
+      if (run < SMGB_REGION_TRANSITIONS) cands[out++] = cands[t];
+    }
+    nk = out;
   }
   if (!by_clip) {
     /* Label changes are few and costly: per source region keep only the
@@ -522,7 +548,8 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   uint32_t min_count = 0, kept = 0;
   cand* cands = NULL;
   smg_result r = SMG_ERROR_OUT_OF_MEMORY;
-  smgb_cloud cloud;
+  smgb_cloud cloud, from, into;
+  uint8_t *vfrom = NULL, *vinto = NULL;
   smgb_pair_search job;
   double* heading = NULL;
   uint32_t* group = NULL;
@@ -546,12 +573,14 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   xyz = malloc((size_t)F * P * 3u * sizeof *xyz);
   w = malloc(P * sizeof *w);
   valid = malloc(F);
+  vfrom = malloc(F);
+  vinto = malloc(F);
   heading = malloc(F * sizeof *heading);
   group = malloc(F * sizeof *group);
   clip_start = malloc((b->clip_count ? b->clip_count : 1) * sizeof *clip_start);
   ceiling = malloc((size_t)(L ? L : 1) * (L ? L : 1) * sizeof *ceiling);
-  if (!ctx.map || !ctx.clip_of || !xyz || !w || !valid || !heading ||
-      !group || !clip_start || !ceiling)
+  if (!ctx.map || !ctx.clip_of || !xyz || !w || !valid || !vfrom ||
+      !vinto || !heading || !group || !clip_start || !ceiling)
     goto oom;
   for (c = 0; c < b->clip_count; ++c) clip_start[c] = SMGI_NONE;
 
@@ -570,6 +599,12 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
       group[F] = pc->label;
       /* window + arrival frame inside the clip */
       valid[F] = f + k < pc->count;
+      /* windows pair_filter can accept as a transition's start / end:
+       * the search then never looks at the others (a row that the filter
+       * would reject against every column costs a scan of the whole
+       * tree) */
+      vfrom[F] = valid[F] && f >= k;
+      vinto[F] = valid[F] && f + 2u * k + 1u <= pc->count;
       if (role == SMGI_CLIP_LOWER) {
         uint32_t p;
         for (p = 0; p < P; ++p) {
@@ -597,8 +632,12 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   cloud.weights = w;
   cloud.valid = valid;
   memset(&job, 0, sizeof job);
-  job.rows = &cloud;
-  job.cols = &cloud;
+  from = cloud;
+  from.valid = vfrom;
+  into = cloud;
+  into.valid = vinto;
+  job.rows = &from;
+  job.cols = &into;
   job.window = k;
   job.neighbours = SMGB_TRANSITION_NEIGHBOURS;
   job.align = 1;
@@ -646,8 +685,14 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
       }
       smgb_graph_free(g);
       ctx.mark = mark;
+      for (f = 0; f < F; ++f) {
+        uint32_t lab = b->clips[ctx.clip_of[f]].label + 1u;
+        vfrom[f] = vfrom[f] && mark[ctx.map[f]] == lab;
+        vinto[f] = vinto[f] && mark[ctx.map[f] + k] == lab;
+      }
       job.neighbours = 0;
       job.other_neighbours = SMGB_STYLE_CHANGE_NEIGHBOURS;
+      job.row_stride = k / 2u;
       r = smgb_pair_search_minima(&job, &cm, &ncross);
       ctx.mark = NULL;
       free(mark);
@@ -684,6 +729,8 @@ done:
   free(xyz);
   free(w);
   free(valid);
+  free(vfrom);
+  free(vinto);
   free(heading);
   free(group);
   free(clip_start);

@@ -42,6 +42,10 @@ typedef struct smgb_pair_search {
   uint32_t window;
   uint32_t neighbours;
   uint32_t other_neighbours;
+  /* Only rows i with i % row_stride == 0 start walks (0 or 1: all). For
+   * searches that keep one candidate per stretch of source frames (label
+   * changes, splices): the walks reach the minima between those rows. */
+  uint32_t row_stride;
   int align;                   /* 1: optimal 2-D alignment (Kovar) */
   smgb_pair_filter filter;     /* pairs it rejects are not searched */
   void* filter_user;
