@@ -50,6 +50,13 @@ extern "C" {
 #define SMG_BAKE_MIRROR_YES 1u     /* add a mirrored copy */
 #define SMG_BAKE_MIRROR_NO 2u      /* never mirror this clip */
 
+/* smg_bake_clip_desc.flags */
+/* A clip that cannot be used (unreadable, too short for a transition
+ * window, a skeleton without the body roles, ...) is left out with a
+ * warning instead of failing the bake: the clips of a manifest's folder
+ * pattern (docs/manifest.md). Without it every problem is an error. */
+#define SMG_BAKE_CLIP_SKIP_UNUSABLE 1u
+
 /* A clip held in memory instead of a file (tools, tests, engines that have
  * their own importers). Poses use the blob's layout: per frame the root
  * translation (3 floats, metres, Y up, facing +Z at identity) then one
@@ -83,7 +90,7 @@ typedef struct smg_bake_clip_desc {
                               0 = guess from the hips height */
   uint32_t animation_index; /* assimp files: which animation */
   int32_t source_line;     /* manifest line, for error messages (0 = none) */
-  uint32_t reserved0;
+  uint32_t flags;          /* SMG_BAKE_CLIP_* (0 = none) */
   const char* bones;       /* bone map: which joint plays which body role,
                               one "role=joint" per line, e.g.
                               "left_foot=Foot_L\nright_foot=Foot_R"
