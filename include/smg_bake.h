@@ -202,6 +202,17 @@ typedef struct smg_bake_result {
                                 broken clips or options names all of them
                                 ("" when none; a last line counts those
                                 that did not fit) */
+  /* Added with folder patterns: */
+  uint32_t skipped_clip_count; /* clips marked SMG_BAKE_CLIP_SKIP_UNUSABLE
+                                  that were left out (each named by a
+                                  warning in `problems`) */
+  /* Per stage (as `stages`) and in all: CPU seconds of the whole process
+   * (every thread), and the process's peak resident memory in bytes at
+   * the end of the stage (getrusage; 0 where not known). */
+  double stage_cpu_seconds[SMG_BAKE_MAX_STAGES];
+  uint64_t stage_peak_bytes[SMG_BAKE_MAX_STAGES];
+  double total_cpu_seconds;
+  uint64_t peak_bytes;
 } smg_bake_result;
 
 /* Bake. `out` must have struct_size set; it is reset first. On failure out
