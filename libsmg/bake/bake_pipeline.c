@@ -206,6 +206,11 @@ smg_result smgb_pipeline_run(const smg_bake_desc* desc,
   stage_begin(b, &c, "splice search");
   if ((r = smgb_find_splices(b)) != SMG_OK) goto done;
   stage_end(b, &c, out);
+  /* The joint positions were for the distance searches; the blob is made
+   * of poses and frame records. Freed before the blob is built, which is
+   * when a big bake's memory peaks. */
+  free(b->positions);
+  b->positions = NULL;
 
   stage_begin(b, &c, "internodal + blob");
   if ((r = smgb_write_blob(b, &out->blob, &out->blob_size)) != SMG_OK)
