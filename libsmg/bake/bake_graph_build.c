@@ -125,7 +125,7 @@ typedef struct cand {
 #define SMGB_TRANSITION_NEIGHBOURS 32u
 /* ... and into each other style: style changes are few and only need to
  * be available (select_candidates keeps the best per source region). */
-#define SMGB_STYLE_CHANGE_NEIGHBOURS 4u
+#define SMGB_STYLE_CHANGE_NEIGHBOURS 8u
 
 /* Same-label transitions kept per source region (select_candidates). */
 #define SMGB_REGION_TRANSITIONS 4u
