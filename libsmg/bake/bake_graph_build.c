@@ -128,7 +128,7 @@ typedef struct cand {
 #define SMGB_STYLE_CHANGE_NEIGHBOURS 8u
 
 /* Same-label transitions kept per source region (select_candidates). */
-#define SMGB_REGION_TRANSITIONS 4u
+#define SMGB_REGION_TRANSITIONS 3u
 
 /* Relative tolerance of the per-label-pair median ceiling (see
  * select_candidates): costs within 5 % of the median count as equal. */
@@ -143,6 +143,39 @@ static int region_cmp(const void* pa, const void* pb) {
   if (a->m.i != b->m.i) return a->m.i < b->m.i ? -1 : 1;
   if (a->m.j != b->m.j) return a->m.j < b->m.j ? -1 : 1;
   return 0;
+}
+
+/* The ceilings of same-label transitions (sampled_ceilings). */
+typedef struct pair_cut {
+  uint32_t ca, cb;             /* source clip, target clip */
+  float cut;
+} pair_cut;
+
+typedef struct ceilings {
+  float* median;               /* [l * L + l]: the label's median minimum */
+  float* cut;                  /* [l]: its transition_percentile-th minimum */
+  pair_cut* pairs;             /* sampled clip pairs' own percentile cuts,
+                                  sorted by (ca, cb) */
+  uint32_t pair_count;
+} ceilings;
+
+/* The cost a same-label candidate from clip ca into clip cb may have. */
+static float ceiling_of(const ceilings* c, uint32_t L, uint32_t l,
+                        uint32_t ca, uint32_t cb) {
+  uint32_t lo = 0, hi = c->pair_count;
+  float pct = l < L ? c->cut[l] : INFINITY, med;
+  while (lo < hi) {
+    uint32_t mid = (lo + hi) / 2;
+    const pair_cut* q = &c->pairs[mid];
+    if (q->ca < ca || (q->ca == ca && q->cb < cb))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  if (lo < c->pair_count && c->pairs[lo].ca == ca && c->pairs[lo].cb == cb)
+    pct = c->pairs[lo].cut;
+  med = l < L ? c->median[l * L + l] : INFINITY;
+  return pct < med ? pct : med;
 }
 
 static int region_cost_cmp(const void* pa, const void* pb) {
@@ -213,7 +246,7 @@ static uint32_t find_node(const smgb_graph* g, uint32_t frame) {
  * clip (label, for label changes) only the best candidate is kept.
  * Returns the new count. */
 static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
-                                  int by_clip, const float* ceiling) {
+                                  int by_clip, const ceilings* ceiling) {
   uint32_t i, kept = 0, t, nk = 0;
   uint32_t L = b->style_count > b->action_count ? b->style_count
                                                 : b->action_count;
@@ -227,17 +260,17 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
            (!by_clip || (cands[e].ci == cands[i].ci &&
                          cands[e].cj == cands[i].cj)))
       ++e;
-    /* Same-label pairs: the search already ranked (each window's nearest
-     * matches), the ceiling decides. Label changes: the percentile per
-     * label pair. */
+    /* Same-label pairs: the ceiling of their clip pair decides (the
+     * search found the good minima; sampled_ceilings knows the rest).
+     * Label changes: the percentile per label pair. */
     keep = by_clip ? e - i
                    : (uint32_t)ceil((e - i) *
                                     (double)b->opt.transition_percentile /
                                     100.0);
     if (keep < 1) keep = 1;
     if (keep > e - i) keep = e - i;
-    if (by_clip && ceiling && cands[i].li < L && cands[i].lj < L)
-      cap = ceiling[cands[i].li * L + cands[i].lj];
+    if (by_clip && ceiling)
+      cap = ceiling_of(ceiling, L, cands[i].li, cands[i].ci, cands[i].cj);
     if (b->opt.transition_threshold > 0.0f && b->opt.transition_threshold < cap)
       cap = b->opt.transition_threshold;
     /* Candidates the phase rule rejects still count above (the median
@@ -319,27 +352,51 @@ static int sub_pair_filter(uint32_t i, uint32_t j, void* user) {
   return pair_filter(f->row0 + i, f->col0 + j, (void*)f->ctx);
 }
 
-/* The ceiling of each label's same-label transitions: the median of the
- * label's local minima (Kovar's threshold, relative to the data), widened
- * by MEDIAN_TOLERANCE: periodic clips give dozens of minima of one and the
- * same cost, and a strict test on such a plateau lets float noise pick the
- * few that survive. The search only finds good minima, so their median
- * would be biased low: the median is taken over the exact full grids
- * (bake_pointcloud.c) of up to SMGB_CEILING_SAMPLE_PAIRS clip pairs of the
- * label, evenly spread over all its pairs (all of them in small sets,
- * where it is the exact median). ceiling[l * L + l]; INFINITY elsewhere. */
+/* The cost below which the best `pct` % of sorted minima d[0..n) lie,
+ * widened by MEDIAN_TOLERANCE: periodic clips give dozens of minima of one
+ * and the same cost, and a strict cut through such a plateau lets float
+ * noise pick the few that survive. */
+static float share_cut(const float* d, uint32_t n, double pct) {
+  uint32_t keep = (uint32_t)ceil(n * pct / 100.0);
+  if (keep < 1) keep = 1;
+  if (keep > n) keep = n;
+  return d[keep - 1] * (1.0f + MEDIAN_TOLERANCE);
+}
+
+static int pair_cut_cmp(const void* pa, const void* pb) {
+  const pair_cut* a = pa;
+  const pair_cut* b = pb;
+  if (a->ca != b->ca) return a->ca < b->ca ? -1 : 1;
+  return a->cb < b->cb ? -1 : a->cb > b->cb ? 1 : 0;
+}
+
+/* Kovar's threshold for same-label transitions, relative to the data: a
+ * candidate from clip A into clip B is kept if it is among the best
+ * transition_percentile % of the local minima of (A, B) and no worse than
+ * the median minimum of the label (ranking per clip pair: near-identical
+ * clips, periodic repeats and mirrored twins, have minima near 0 that
+ * would otherwise set the bar for all and leave, say, straight and
+ * turning walks unconnected). The search only finds good minima, so these
+ * statistics cannot come from its output: they come from the exact full
+ * grids (bake_pointcloud.c) of up to SMGB_CEILING_SAMPLE_PAIRS clip pairs
+ * per label, evenly spread over all its pairs. A sampled pair gets its own
+ * cut; the others the label's cut over all sampled minima. In small sets
+ * (CMU's) every pair is sampled and the rule is exactly the full grid's. */
 static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
                                    const smgb_cloud* cloud,
-                                   const uint32_t* clip_start, float* ceiling,
+                                   const uint32_t* clip_start, ceilings* out,
                                    uint32_t L) {
   uint32_t l, c, i;
   uint32_t* members = malloc((b->clip_count ? b->clip_count : 1) *
                              sizeof *members);
   float* d = NULL;
-  uint32_t nd = 0, dcap = 0;
+  uint32_t nd = 0, dcap = 0, pcap = 0;
+  double pct = b->opt.transition_percentile;
   smg_result r = SMG_OK;
   if (!members) return SMG_ERROR_OUT_OF_MEMORY;
-  for (i = 0; i < L * L; ++i) ceiling[i] = INFINITY;
+  for (i = 0; i < L * L; ++i) out->median[i] = INFINITY;
+  for (i = 0; i < L; ++i) out->cut[i] = INFINITY;
+  out->pair_count = 0;
   for (l = 0; l < L && r == SMG_OK; ++l) {
     uint32_t n = 0;
     uint64_t pairs, step, p;
@@ -386,17 +443,38 @@ static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
           dcap = cap;
         }
       }
-      if (r == SMG_OK)
-        for (u = 0; u < nm; ++u) d[nd++] = mins[u].dist;
+      if (r == SMG_OK && out->pair_count == pcap) {
+        uint32_t cap = pcap ? pcap * 2u : 64u;
+        pair_cut* np = realloc(out->pairs, cap * sizeof *np);
+        if (!np)
+          r = SMG_ERROR_OUT_OF_MEMORY;
+        else {
+          out->pairs = np;
+          pcap = cap;
+        }
+      }
+      if (r == SMG_OK && nm > 0) {
+        for (u = 0; u < nm; ++u) d[nd + u] = mins[u].dist;
+        qsort(d + nd, nm, sizeof *d, float_cmp);
+        out->pairs[out->pair_count].ca = ca;
+        out->pairs[out->pair_count].cb = cb;
+        out->pairs[out->pair_count].cut = share_cut(d + nd, nm, pct);
+        ++out->pair_count;
+        nd += nm;
+      }
       free(mins);
     }
     if (r == SMG_OK && nd > 0) {
       float med;
       qsort(d, nd, sizeof *d, float_cmp);
       med = d[(nd - 1) / 2] * (1.0f + MEDIAN_TOLERANCE);
-      ceiling[l * L + l] = med > SMGB_CEILING_FLOOR ? med : SMGB_CEILING_FLOOR;
+      out->median[l * L + l] =
+          med > SMGB_CEILING_FLOOR ? med : SMGB_CEILING_FLOOR;
+      out->cut[l] = share_cut(d, nd, pct);
     }
   }
+  if (out->pair_count > 1)
+    qsort(out->pairs, out->pair_count, sizeof *out->pairs, pair_cut_cmp);
   free(members);
   free(d);
   return r;
@@ -554,7 +632,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   double* heading = NULL;
   uint32_t* group = NULL;
   uint32_t* clip_start = NULL;
-  float* ceiling = NULL;
+  ceilings ceil_;
   uint32_t L = b->style_count > b->action_count ? b->style_count
                                                 : b->action_count;
 
@@ -578,9 +656,12 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   heading = malloc(F * sizeof *heading);
   group = malloc(F * sizeof *group);
   clip_start = malloc((b->clip_count ? b->clip_count : 1) * sizeof *clip_start);
-  ceiling = malloc((size_t)(L ? L : 1) * (L ? L : 1) * sizeof *ceiling);
+  memset(&ceil_, 0, sizeof ceil_);
+  ceil_.median = malloc((size_t)(L ? L : 1) * (L ? L : 1) * sizeof(float));
+  ceil_.cut = malloc((L ? L : 1) * sizeof(float));
   if (!ctx.map || !ctx.clip_of || !xyz || !w || !valid || !vfrom ||
-      !vinto || !heading || !group || !clip_start || !ceiling)
+      !vinto || !heading || !group || !clip_start || !ceil_.median ||
+      !ceil_.cut)
     goto oom;
   for (c = 0; c < b->clip_count; ++c) clip_start[c] = SMGI_NONE;
 
@@ -656,7 +737,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   } else {
     job.group_count = b->action_count; /* within an action only */
   }
-  r = sampled_ceilings(b, &ctx, &cloud, clip_start, ceiling, L);
+  r = sampled_ceilings(b, &ctx, &cloud, clip_start, &ceil_, L);
   if (r == SMG_OK) r = smgb_pair_search_minima(&job, &mins, &min_count);
 
   if (r != SMG_OK) {
@@ -675,7 +756,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
    * connect the styles (the best matches between styles are often where
    * a clip starts or ends, outside every cycle). */
   {
-    uint32_t nsame = select_candidates(b, cands, min_count, 1, ceiling);
+    uint32_t nsame = select_candidates(b, cands, min_count, 1, &ceil_);
     uint32_t ncross = 0;
     if (role == SMGI_CLIP_LOWER && b->style_count > 1) {
       uint8_t* mark = NULL;
@@ -738,7 +819,9 @@ done:
   free(heading);
   free(group);
   free(clip_start);
-  free(ceiling);
+  free(ceil_.median);
+  free(ceil_.cut);
+  free(ceil_.pairs);
   free(mins);
   free(cands);
   return r;
