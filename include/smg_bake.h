@@ -105,12 +105,11 @@ typedef struct smg_bake_options {
                                 right turns both exist) */
   float frame_rate;          /* working frame rate; 0 = 30 */
   float window_seconds;      /* transition/splice window; 0 = 1/3 s */
-  float transition_percentile; /* label changes (walk <-> run) kept: this
-                                percent of the local minima found between
-                                two labels' cores, per (label, label) pair
-                                (same-label transitions: each window's
-                                nearest matches under the label's median;
-                                docs/baker.md); 0 = 30 */
+  float transition_percentile; /* transition candidates kept: this percent
+                                of the local minima of the frame distance,
+                                ranked per (source clip, target clip) pair
+                                for same-label transitions and per (label,
+                                label) pair for label changes; 0 = 30 */
   float transition_threshold;  /* absolute RMS distance cap (metres) on
                                 top of the percentile; 0 = none */
   float max_edge_seconds;    /* simplification cap on merged edges; 0 = 1 */
