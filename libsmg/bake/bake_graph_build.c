@@ -115,7 +115,7 @@ typedef struct cand {
   uint32_t li, lj;    /* labels */
   uint32_t ci, cj;    /* clips */
   uint32_t region;    /* source region: (clip, local frame / span) */
-  uint32_t target;    /* thinning group: target clip */
+  uint32_t target;    /* thinning group: target clip and its mirror */
   float best;         /* label changes: best cost of the source region
                          into the same target label (select_candidates) */
 } cand;
@@ -611,7 +611,7 @@ static void to_cands(const smgb_bake* b, const build_ctx* ctx,
     /* pool frames are contiguous per clip: (clip, local frame / span) */
     cands[i].region =
         c0 * 65536u + (ctx->map[mins[i].i] - b->clips[c0].first) / span;
-    cands[i].target = cands[i].cj;
+    cands[i].target = b->clips[cands[i].cj].source_clip;
     cands[i].best = 0.0f;
   }
 }
