@@ -250,7 +250,27 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
   uint32_t i, kept = 0, t, nk = 0;
   uint32_t L = b->style_count > b->action_count ? b->style_count
                                                 : b->action_count;
+  float* median = NULL; /* exact mode: per label pair, from all minima */
   if (n == 0) return 0;
+  if (by_clip && !ceiling) {
+    median = malloc((size_t)L * L * sizeof *median);
+    if (median) {
+      for (i = 0; i < L * L; ++i) median[i] = INFINITY;
+      qsort(cands, n, sizeof *cands, cand_cmp);
+      for (i = 0; i < n;) {
+        uint32_t e = i;
+        while (e < n && cands[e].li == cands[i].li &&
+               cands[e].lj == cands[i].lj)
+          ++e;
+        if (cands[i].li < L && cands[i].lj < L) {
+          float med = cands[i + (e - i - 1) / 2].m.dist *
+                      (1.0f + MEDIAN_TOLERANCE);
+          median[cands[i].li * L + cands[i].lj] = med;
+        }
+        i = e;
+      }
+    }
+  }
   qsort(cands, n, sizeof *cands, by_clip ? clip_cmp : cand_cmp);
   for (i = 0; i < n;) {
     uint32_t e = i, keep, taken;
@@ -263,14 +283,22 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
     /* Same-label pairs: the ceiling of their clip pair decides (the
      * search found the good minima; sampled_ceilings knows the rest).
      * Label changes: the percentile per label pair. */
-    keep = by_clip ? e - i
-                   : (uint32_t)ceil((e - i) *
-                                    (double)b->opt.transition_percentile /
-                                    100.0);
+    keep = by_clip && ceiling
+               ? e - i
+               : (uint32_t)ceil((e - i) *
+                                (double)b->opt.transition_percentile / 100.0);
     if (keep < 1) keep = 1;
     if (keep > e - i) keep = e - i;
     if (by_clip && ceiling)
       cap = ceiling_of(ceiling, L, cands[i].li, cands[i].ci, cands[i].cj);
+    if (by_clip && !ceiling) {
+      /* exact mode: every minimum of the pair is here; ties at the cut
+       * are kept (same tolerance as the median) */
+      float cut = cands[i + keep - 1].m.dist * (1.0f + MEDIAN_TOLERANCE);
+      while (i + keep < e && cands[i + keep].m.dist <= cut) ++keep;
+      if (median && cands[i].li < L && cands[i].lj < L)
+        cap = median[cands[i].li * L + cands[i].lj];
+    }
     if (b->opt.transition_threshold > 0.0f && b->opt.transition_threshold < cap)
       cap = b->opt.transition_threshold;
     /* Candidates the phase rule rejects still count above (the median
@@ -286,6 +314,7 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
     }
     i = e;
   }
+  free(median);
   qsort(cands, kept, sizeof *cands, region_cmp);
   for (t = 0; t < kept; ++t) {
     if (nk > 0 && cands[nk - 1].region == cands[t].region &&
@@ -293,8 +322,8 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
       continue;
     cands[nk++] = cands[t];
   }
-  if (by_clip && nk > 0) {
-    /* and per source region only the best SMGB_REGION_TRANSITIONS target
+  if (by_clip && ceiling && nk > 0) {
+    /* and (search mode) per source region only the best SMGB_REGION_TRANSITIONS target
      * clips: with hundreds of similar clips every region has a good
      * match in each of them, and one per clip made the graph (and the
      * blend frames of its transitions) grow with clips x frames */
@@ -334,6 +363,12 @@ static uint32_t select_candidates(const smgb_bake* b, cand* cands, uint32_t n,
   }
   return nk;
 }
+
+/* Below this many grid cells (frames squared) a graph is built from the
+ * full distance grid, exact and quicker than the search at that size
+ * (the paper-size CMU set: 6M cells, 0.1 s); above it the search
+ * (bake_pair_search.h) keeps the cost near-linear. */
+#define SMGB_EXACT_GRID_CELLS 50000000ull
 
 /* Clip pairs per label whose full grids give the median (below). */
 #define SMGB_CEILING_SAMPLE_PAIRS 64u
@@ -590,7 +625,8 @@ static smg_result assemble(smgb_bake* b, smgb_graph* g, uint32_t role,
 
 /* Candidates with their labels, clips, phase rule and thinning groups. */
 static void to_cands(const smgb_bake* b, const build_ctx* ctx,
-                     const smgb_minimum* mins, uint32_t n, cand* cands) {
+                     const smgb_minimum* mins, uint32_t n, int exact,
+                     cand* cands) {
   uint32_t k = b->opt.window, i;
   for (i = 0; i < n; ++i) {
     uint32_t c0 = ctx->clip_of[mins[i].i], span;
@@ -611,9 +647,53 @@ static void to_cands(const smgb_bake* b, const build_ctx* ctx,
     /* pool frames are contiguous per clip: (clip, local frame / span) */
     cands[i].region =
         c0 * 65536u + (ctx->map[mins[i].i] - b->clips[c0].first) / span;
-    cands[i].target = b->clips[cands[i].cj].source_clip;
+    /* search mode: a clip and its mirror are one target (select) */
+    cands[i].target = exact ? cands[i].cj : b->clips[cands[i].cj].source_clip;
     cands[i].best = 0.0f;
   }
+}
+
+/* Small sets (exact mode): the full grid's minima are all at hand, so the
+ * rule is applied to them directly: same-label candidates per clip pair
+ * (the best transition_percentile % under their label pair's median);
+ * label changes among the minima that join the styles' cores. */
+static smg_result exact_selection(smgb_bake* b, smgb_graph* g, uint32_t role,
+                                  const build_ctx* ctx, cand* cands,
+                                  uint32_t n, uint32_t* out_kept) {
+  uint32_t nsame = 0, ncross, t, k = b->opt.window;
+  smg_result r;
+  for (t = 0; t < n; ++t)
+    if (cands[t].li == cands[t].lj) {
+      cand tmp = cands[nsame];
+      cands[nsame++] = cands[t];
+      cands[t] = tmp;
+    }
+  ncross = n - nsame;
+  nsame = select_candidates(b, cands, nsame, 1, NULL);
+  if (ncross > 0) {
+    uint8_t* mark;
+    memmove(cands + nsame, cands + (n - ncross), ncross * sizeof *cands);
+    if ((r = assemble(b, g, role, ctx, cands, nsame)) != SMG_OK) return r;
+    mark = calloc(b->frame_count, 1);
+    if (!mark || mark_cores(b, g, mark) != SMG_OK) {
+      free(mark);
+      return SMG_ERROR_OUT_OF_MEMORY;
+    }
+    for (t = nsame; t < nsame + ncross;) {
+      uint32_t fi = ctx->map[cands[t].m.i], fj = ctx->map[cands[t].m.j] + k;
+      if (mark[fi] == cands[t].li + 1 && mark[fj] == cands[t].lj + 1) {
+        ++t;
+      } else {
+        cands[t] = cands[nsame + ncross - 1];
+        --ncross;
+      }
+    }
+    free(mark);
+    ncross = select_candidates(b, cands + nsame, ncross, 0, NULL);
+    smgb_graph_free(g);
+  }
+  *out_kept = nsame + ncross;
+  return SMG_OK;
 }
 
 smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
@@ -629,6 +709,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   smgb_cloud cloud, from, into;
   uint8_t *vfrom = NULL, *vinto = NULL;
   smgb_pair_search job;
+  int exact;
   double* heading = NULL;
   uint32_t* group = NULL;
   uint32_t* clip_start = NULL;
@@ -737,8 +818,23 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
   } else {
     job.group_count = b->action_count; /* within an action only */
   }
-  r = sampled_ceilings(b, &ctx, &cloud, clip_start, &ceil_, L);
-  if (r == SMG_OK) r = smgb_pair_search_minima(&job, &mins, &min_count);
+  exact = (uint64_t)F * F <= SMGB_EXACT_GRID_CELLS;
+  if (exact) {
+    /* small set: every minimum of the full grid (bake_pointcloud.c) */
+    smgb_grid_job grid;
+    memset(&grid, 0, sizeof grid);
+    grid.rows = grid.cols = &cloud;
+    grid.window = k;
+    grid.align = 1;
+    grid.filter = pair_filter;
+    grid.filter_user = &ctx;
+    grid.threads = b->opt.threads;
+    grid.report = &b->report;
+    r = smgb_grid_minima(&grid, &mins, &min_count);
+  } else {
+    r = sampled_ceilings(b, &ctx, &cloud, clip_start, &ceil_, L);
+    if (r == SMG_OK) r = smgb_pair_search_minima(&job, &mins, &min_count);
+  }
 
   if (r != SMG_OK) {
     smgb_fail(&b->report, "%s graph: distance grid failed (%s)",
@@ -749,7 +845,11 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
 
   cands = malloc((min_count ? min_count : 1) * sizeof *cands);
   if (!cands) goto oom;
-  to_cands(b, &ctx, mins, min_count, cands);
+  to_cands(b, &ctx, mins, min_count, exact, cands);
+  if (exact) {
+    r = exact_selection(b, g, role, &ctx, cands, min_count, &kept);
+    if (r != SMG_OK) goto oom;
+  } else
   /* Same-label transitions first; label changes (walk <-> run) are
    * searched afterwards, only from one style's strongly connected core
    * into another's, so that the few costly ones that are kept actually
@@ -791,7 +891,7 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
         goto oom;
       }
       cands = grown;
-      to_cands(b, &ctx, cm, ncross, cands + nsame);
+      to_cands(b, &ctx, cm, ncross, 0, cands + nsame);
       free(cm);
       ncross = select_candidates(b, cands + nsame, ncross, 0, NULL);
     }

@@ -35,6 +35,9 @@
 /* Start cells per locomotion window and action for the minimum search
  * (bake_pair_search.h). */
 #define SMGB_SPLICE_NEIGHBOURS 8u
+/* Below this many grid cells (locomotion x action frames) the full grid
+ * is used: exact, and quicker than the search at that size. */
+#define SMGB_SPLICE_EXACT_CELLS 50000000ull
 
 typedef struct scand {
   smgb_minimum m;
@@ -255,7 +258,21 @@ smg_result smgb_find_splices(smgb_bake* b) {
   job.neighbours = SMGB_SPLICE_NEIGHBOURS;
   job.threads = b->opt.threads;
   job.report = &b->report;
-  if ((r = smgb_pair_search_minima(&job, &mins, &nmin)) != SMG_OK) {
+  if ((uint64_t)FL * FU <= SMGB_SPLICE_EXACT_CELLS) {
+    /* small sets: every minimum of the full grid */
+    smgb_grid_job grid;
+    memset(&grid, 0, sizeof grid);
+    grid.rows = &L;
+    grid.cols = &U;
+    grid.window = k;
+    grid.align = 0;
+    grid.threads = b->opt.threads;
+    grid.report = &b->report;
+    r = smgb_grid_minima(&grid, &mins, &nmin);
+  } else {
+    r = smgb_pair_search_minima(&job, &mins, &nmin);
+  }
+  if (r != SMG_OK) {
     smgb_fail(&b->report, "splice search: distance grid failed (%s)",
               smg_result_string(r));
     goto done;
