@@ -50,6 +50,13 @@ extern "C" {
 #define SMG_BAKE_MIRROR_YES 1u     /* add a mirrored copy */
 #define SMG_BAKE_MIRROR_NO 2u      /* never mirror this clip */
 
+/* smg_bake_clip_desc.flags */
+/* A clip that cannot be used (unreadable, too short for a transition
+ * window, a skeleton without the body roles, ...) is left out with a
+ * warning instead of failing the bake: the clips of a manifest's folder
+ * pattern (docs/manifest.md). Without it every problem is an error. */
+#define SMG_BAKE_CLIP_SKIP_UNUSABLE 1u
+
 /* A clip held in memory instead of a file (tools, tests, engines that have
  * their own importers). Poses use the blob's layout: per frame the root
  * translation (3 floats, metres, Y up, facing +Z at identity) then one
@@ -83,7 +90,7 @@ typedef struct smg_bake_clip_desc {
                               0 = guess from the hips height */
   uint32_t animation_index; /* assimp files: which animation */
   int32_t source_line;     /* manifest line, for error messages (0 = none) */
-  uint32_t reserved0;
+  uint32_t flags;          /* SMG_BAKE_CLIP_* (0 = none) */
   const char* bones;       /* bone map: which joint plays which body role,
                               one "role=joint" per line, e.g.
                               "left_foot=Foot_L\nright_foot=Foot_R"
@@ -195,6 +202,17 @@ typedef struct smg_bake_result {
                                 broken clips or options names all of them
                                 ("" when none; a last line counts those
                                 that did not fit) */
+  /* Added with folder patterns: */
+  uint32_t skipped_clip_count; /* clips marked SMG_BAKE_CLIP_SKIP_UNUSABLE
+                                  that were left out (each named by a
+                                  warning in `problems`) */
+  /* Per stage (as `stages`) and in all: CPU seconds of the whole process
+   * (every thread), and the process's peak resident memory in bytes at
+   * the end of the stage (getrusage; 0 where not known). */
+  double stage_cpu_seconds[SMG_BAKE_MAX_STAGES];
+  uint64_t stage_peak_bytes[SMG_BAKE_MAX_STAGES];
+  double total_cpu_seconds;
+  uint64_t peak_bytes;
 } smg_bake_result;
 
 /* Bake. `out` must have struct_size set; it is reset first. On failure out

@@ -27,6 +27,16 @@ $(BENCH_BAKE): bench/bench_bake.c $(LIBSMG_BAKE_A) $(LIBSMG_A) $(LIB_HDR) $(BAKE
 bench-bake: $(BENCH_BAKE)
 	SMG_SHARED=$(SMG_SHARED) $(BENCH_BAKE)
 
+# Baker scale benchmark (not part of `make bench` or `make test`: minutes
+# of baking): 1/8, 1/4, 1/2 and all of the Bandai Namco scale set from
+# ../shared (unpacked under build/), wall / CPU time, peak memory, graph
+# and blob sizes, growth exponents. Skips with a message without the data.
+.PHONY: bench-bake-scale
+bench-bake-scale: $(SMG_BAKE)
+	sh bench/bake_scale.sh $(SMG_BAKE) $(SMG_SHARED) $(BUILD) "$(SCALE_FRACTIONS)"
+
+SCALE_FRACTIONS ?= 8 4 2 1
+
 # The paper-size CMU blob (build/cmu.smg) when ../shared holds the clips:
 # the demo, eval and runtime tests use it for real figures.
 CMU_BLOB := $(BUILD)/cmu.smg

@@ -11,8 +11,9 @@
 #                        under GC churn, threads, the left-handed frame
 #                        conversion vs libsmg's matrices, no allocation per
 #                        frame; the Unity layer and sample type-checked;
-#                        the package's NUnit tests (Tests/Runtime) run
-#                        with nunit-console
+#                        the package's NUnit tests (Tests/Runtime: events,
+#                        engine mover, uneven ground, humanoid mapping,
+#                        blend weights, ...) run with nunit-console
 #   make bench-csharp    (part of `make bench`) managed step + pose per
 #                        character vs the same calls from C, medians, ratio
 #   make unity-package   the installable package in build/unity/package

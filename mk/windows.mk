@@ -19,6 +19,7 @@
 
 WIN_CC := x86_64-w64-mingw32-gcc
 WIN_AR := x86_64-w64-mingw32-ar
+WIN_CXX := x86_64-w64-mingw32-g++
 WIN_OBJDUMP := x86_64-w64-mingw32-objdump
 WIN_BUILD := $(BUILD)/windows
 # MinGW's own C99 printf (%zu, correctly rounded %f/%g), not the Microsoft
@@ -102,8 +103,34 @@ $(WIN_LIBSMG_BAKE_A): $(WIN_BAKE_OBJ)
 	rm -f $@
 	$(WIN_AR) rcs $@ $^
 
-$(WIN_SMG_SYNTH): tools/smg_synth.c $(WIN_LIBSMG_A) include/smg.h
-	$(WIN_CC) $(WIN_CFLAGS_TOOL) $(WIN_LDFLAGS_EXE) $(WIN_LDFLAGS_SHIP) $< -o $@ $(WIN_LIBSMG_A)
+# smg-synth's glTF export (tools/gltf) with the demo's body generator
+# (C++ with GLM), as on Linux. GLM is header-only; the cross compiler gets
+# a folder holding only a link to it, never the host's /usr/include (whose
+# C library headers are not MinGW's).
+WIN_GLM_DIR := $(WIN_BUILD)/glm-include
+WIN_GLTF_OBJ := $(GLTF_SRC:%.c=$(WIN_BUILD)/obj/%.o) \
+	$(WIN_BUILD)/obj/tools/gltf/gltf_body.o $(WIN_BUILD)/obj/demo/body.o $(WIN_BUILD)/obj/demo/body_graph.o
+WIN_CXXFLAGS := -std=c++17 -Wall -Wextra -Werror $(OPT) -Iinclude -isystem $(WIN_GLM_DIR)
+
+$(WIN_GLM_DIR)/glm:
+	@mkdir -p $(dir $@)
+	ln -sfn /usr/include/glm $@
+
+$(WIN_BUILD)/obj/tools/gltf/%.o: tools/gltf/%.c $(GLTF_HDR) include/smg.h
+	@mkdir -p $(dir $@)
+	$(WIN_CC) $(WIN_CFLAGS_TOOL) -Itools/gltf -c $< -o $@
+
+$(WIN_BUILD)/obj/tools/gltf/gltf_body.o: tools/gltf/gltf_body.cpp $(GLTF_HDR) demo/body.h demo/body_graph.h include/smg.h | $(WIN_GLM_DIR)/glm
+	@mkdir -p $(dir $@)
+	$(WIN_CXX) $(WIN_CXXFLAGS) -Itools/gltf -c $< -o $@
+
+$(WIN_BUILD)/obj/demo/%.o: demo/%.cpp demo/body.h demo/body_graph.h include/smg.h | $(WIN_GLM_DIR)/glm
+	@mkdir -p $(dir $@)
+	$(WIN_CXX) $(WIN_CXXFLAGS) -c $< -o $@
+
+$(WIN_SMG_SYNTH): tools/smg_synth.c $(WIN_GLTF_OBJ) $(WIN_LIBSMG_A) include/smg.h
+	$(WIN_CC) $(WIN_CFLAGS_TOOL) -Itools/gltf -c $< -o $(WIN_BUILD)/obj/smg_synth.o
+	$(WIN_CXX) $(WIN_LDFLAGS_EXE) $(WIN_LDFLAGS_SHIP) $(WIN_BUILD)/obj/smg_synth.o -o $@ $(WIN_GLTF_OBJ) $(WIN_LIBSMG_A)
 
 $(WIN_SMG_BAKE): tools/smg_bake.c $(WIN_LIBSMG_BAKE_A) $(WIN_LIBSMG_A) $(LIB_HDR) $(BAKE_HDR)
 	$(WIN_CC) $(WIN_CFLAGS_TOOL) $(WIN_LDFLAGS_EXE) $(WIN_LDFLAGS_SHIP) $< -o $@ $(WIN_LIBSMG_BAKE_A) $(WIN_LIBSMG_A) -lpthread

@@ -31,9 +31,10 @@ python3           # Godot binding: method-bind hashes; C# test: smg.h layout gen
 assimp-testmodels # baker tests: real FBX/glTF files (tests skip without it)
 mono-mcs          # Unity binding: C# compiler for make test-csharp / bench-csharp
 mono-runtime      # Unity binding: runs the C# tests against libsmg.so
-libnunit-cil-dev  # Unity binding: NUnit for the package's own tests (make test-csharp)
+libnunit-cil-dev  # Unity binding: NUnit for the tests inside the package (make test-csharp)
 nunit-console     # Unity binding: runs them under mono
 gcc-mingw-w64-x86-64 # Windows builds: the MinGW-w64 cross compiler (mk/windows.mk)
+g++-mingw-w64-x86-64 # Windows builds: the glTF body generator of smg-synth.exe (C++)
 wine              # Windows builds: runs the Windows tests (make test-windows)
 wine64            # Windows builds: 64-bit Wine for the x86_64 programs
 '

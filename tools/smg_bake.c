@@ -541,11 +541,18 @@ int main(int argc, char** argv) {
   }
   if (!ps.quiet) {
     const smg_bake_stats* s = &res.stats;
-    fprintf(stderr, "\n  %-22s %10s\n", "stage", "seconds");
+    fprintf(stderr, "\n  %-22s %10s %10s %10s\n", "stage", "seconds",
+            "cpu s", "peak MB");
     for (i = 0; i < res.stage_count; ++i)
-      fprintf(stderr, "  %-22s %10.3f\n", res.stages[i].name,
-              res.stages[i].seconds);
-    fprintf(stderr, "  %-22s %10.3f\n", "total", res.total_seconds);
+      fprintf(stderr, "  %-22s %10.3f %10.3f %10.1f\n", res.stages[i].name,
+              res.stages[i].seconds, res.stage_cpu_seconds[i],
+              (double)res.stage_peak_bytes[i] / 1048576.0);
+    fprintf(stderr, "  %-22s %10.3f %10.3f %10.1f\n", "total",
+            res.total_seconds, res.total_cpu_seconds,
+            (double)res.peak_bytes / 1048576.0);
+    if (res.skipped_clip_count)
+      fprintf(stderr, "\n  %u unusable clips skipped (named above)\n",
+              res.skipped_clip_count);
     fprintf(stderr,
             "\n  clips %u, frames %u + %u blended\n"
             "  lower graph: %u nodes / %u edges before simplification, "

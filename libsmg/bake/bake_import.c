@@ -7,7 +7,9 @@
  *
  * A clip that fails is reported and skipped, and the next one is still
  * read, so one run names every broken clip; only a failure of the blob's
- * skeleton or of memory stops the stage at once.
+ * skeleton or of memory stops the stage at once. A clip marked
+ * SMG_BAKE_CLIP_SKIP_UNUSABLE (a manifest folder pattern's) that fails
+ * that way is a warning instead: the bake goes on without it.
  */
 #include <math.h>
 #include <stddef.h>
@@ -417,19 +419,43 @@ static smg_result import_clip(smgb_bake* b, const smg_bake_desc* desc,
   return r;
 }
 
+/* Clip `i` failed (not fatally) and may be left out: its errors become
+ * one warning naming it and the first of them. */
+static void skip_clip(smgb_bake* b, const smg_bake_desc* desc, uint32_t i,
+                      uint32_t mark) {
+  char why[512], at[96];
+  const smgb_report* rep = &b->report;
+  const char* file = desc->clips[i].path ? desc->clips[i].path : "";
+  const char* slash = strrchr(file, '/');
+  snprintf(why, sizeof why, "%s",
+           mark < rep->problem_count ? rep->problems[mark].text : "");
+  const char* reason = why;
+  smgb_report_rewind(&b->report, mark);
+  where(&desc->clips[i], i, at, sizeof at);
+  /* the error starts with the clip's place, which the warning names */
+  if (strncmp(why, at, strlen(at)) == 0 && strstr(why, ": "))
+    reason = strstr(why, ": ") + 2;
+  smgb_warn(&b->report, "%s (%s) skipped, it cannot be used: %s", at,
+            slash ? slash + 1 : file, reason);
+  ++b->skipped_clips;
+}
+
 smg_result smgb_import_clips(smgb_bake* b, const smg_bake_desc* desc) {
   smg_result r = load_target(b, desc), first = SMG_OK;
   int fatal = r != SMG_OK, have_lower = 0;
   uint32_t i;
   for (i = 0; i < desc->clip_count && !fatal; ++i) {
+    uint32_t mark = smgb_report_mark(&b->report);
     r = import_clip(b, desc, i, &fatal);
     if (r == SMG_OK)
       have_lower |= desc->clips[i].role == SMG_BAKE_ROLE_LOWER;
+    else if (!fatal && (desc->clips[i].flags & SMG_BAKE_CLIP_SKIP_UNUSABLE))
+      skip_clip(b, desc, i, mark);
     else if (first == SMG_OK)
       first = r;
     smgb_progress(&b->report, (float)(i + 1) / (float)desc->clip_count);
   }
-  if (first == SMG_OK) first = r;
+  if (first == SMG_OK && fatal) first = r;
   if (first == SMG_OK && !have_lower) {
     smgb_fail(&b->report, "no lower-body (locomotion) clip given");
     first = SMG_ERROR_INVALID_ARGUMENT;

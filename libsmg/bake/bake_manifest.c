@@ -16,6 +16,7 @@
 
 #include "bake_import_util.h"
 #include "bake_manifest.h"
+#include "bake_manifest_pattern.h"
 #include "bake_roles.h"
 
 #define LINE_MAX_CHARS 4096
@@ -51,7 +52,8 @@ static int valid_label(const char* s) {
   for (i = 0; i < n; ++i) {
     char c = s[i];
     if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-          (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.'))
+          (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.' ||
+          c == ':'))
       return 0;
   }
   return 1;
@@ -79,7 +81,7 @@ smg_result smgb_manifest_add(smgb_manifest* m, const smgb_manifest_clip* clip,
   if (!valid_label(clip->label)) {
     smgb_imp_errorf(err,
                     "%sinvalid label '%.63s' (1-63 characters of A-Z a-z 0-9 "
-                    "_ . -)",
+                    "_ . - :)",
                     at, clip->label);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
@@ -295,12 +297,82 @@ bad:
   return 0;
 }
 
+/* Every file of the pattern's folder that matches it, in name order
+ * (every `every`-th), each with its label from the template. */
+static smg_result add_pattern(smgb_manifest* m, const smgb_manifest_clip* c,
+                              const char* tmpl, const char* file,
+                              uint32_t every, const char* at,
+                              smgb_error* err) {
+  char dir[SMGB_PATH_MAX], rel[SMGB_PATH_MAX];
+  const char* slash = strrchr(file, '/');
+  const char* pattern = slash ? slash + 1 : file;
+  char (*names)[SMGB_PATTERN_NAME_MAX] = NULL;
+  uint32_t n = 0, i, added = 0;
+  smg_result r;
+  int k;
+  if (slash && memchr(file, '*', (size_t)(slash - file))) {
+    smgb_imp_errorf(err, "%s'*' may only appear in the file name, not in "
+                    "its folder: %.200s", at, file);
+    return SMG_ERROR_PARSE;
+  }
+  /* the folder: root joined like a clip path */
+  if (slash)
+    k = file[0] == '/' || !m->root[0]
+            ? snprintf(dir, sizeof dir, "%.*s", (int)(slash - file), file)
+            : snprintf(dir, sizeof dir, "%s/%.*s", m->root,
+                       (int)(slash - file), file);
+  else
+    k = snprintf(dir, sizeof dir, "%s", m->root);
+  if (k < 0 || (size_t)k >= sizeof dir) {
+    smgb_imp_errorf(err, "%sfolder path too long: %.200s", at, file);
+    return SMG_ERROR_INVALID_ARGUMENT;
+  }
+  r = smgb_pattern_list(dir, pattern, &names, &n, err);
+  if (r != SMG_OK) {
+    char tmp[sizeof err->message];
+    snprintf(tmp, sizeof tmp, "%s", err->message);
+    smgb_imp_errorf(err, "%s%s", at, tmp);
+    return r;
+  }
+  for (i = 0; i < n && r == SMG_OK; i += every) {
+    smgb_pattern_match pm;
+    smgb_manifest_clip one = *c;
+    smgb_pattern_matches(pattern, names[i], &pm);
+    if (!smgb_pattern_label(tmpl, &pm, one.label, sizeof one.label)) {
+      smgb_imp_errorf(err, "%slabel '%.63s' for '%.200s': each {N} must name "
+                      "one of the pattern's %d '*'", at, tmpl, names[i],
+                      pm.count);
+      r = SMG_ERROR_PARSE;
+      break;
+    }
+    k = slash ? snprintf(rel, sizeof rel, "%.*s/%s", (int)(slash - file),
+                         file, names[i])
+              : snprintf(rel, sizeof rel, "%s", names[i]);
+    if (k < 0 || (size_t)k >= sizeof rel) {
+      smgb_imp_errorf(err, "%sclip path too long: %.200s", at, names[i]);
+      r = SMG_ERROR_INVALID_ARGUMENT;
+      break;
+    }
+    r = smgb_manifest_add(m, &one, rel, 1, err);
+    ++added;
+  }
+  free(names);
+  if (r == SMG_OK && added == 0) {
+    smgb_imp_errorf(err, "%sno file in '%s' matches '%.200s'", at, dir,
+                    pattern);
+    r = SMG_ERROR_IO;
+  }
+  return r;
+}
+
 static smg_result parse_clip_line(smgb_manifest* m, char** tok, int n,
                                   int32_t line, const defaults* d,
                                   const char* at, smgb_error* err) {
   smgb_manifest_clip c;
   const char* frames = NULL;
-  int i;
+  int i, pattern = strchr(tok[2 < n ? 2 : 0], '*') != NULL;
+  uint32_t every = 1;
+  char label_check[SMGB_NAME_MAX];
   if (n < 3) {
     smgb_imp_errorf(err, "%s'%s' needs a label and a file: %s LABEL FILE "
                     "[options]", at, tok[0], tok[0]);
@@ -309,11 +381,27 @@ static smg_result parse_clip_line(smgb_manifest* m, char** tok, int n,
   memset(&c, 0, sizeof c);
   c.role = strcmp(tok[0], "lower") == 0 ? SMG_BAKE_ROLE_LOWER
                                         : SMG_BAKE_ROLE_UPPER;
-  if (!valid_label(tok[1])) {
+  /* a pattern's label is a template: check it with its {N} taken out */
+  {
+    const char* t = tok[1];
+    size_t o = 0;
+    while (*t && o + 1 < sizeof label_check) {
+      if (pattern && t[0] == '{' && t[1] >= '1' && t[1] <= '9' &&
+          t[2] == '}') {
+        label_check[o++] = 'x';
+        t += 3;
+      } else {
+        label_check[o++] = *t++;
+      }
+    }
+    label_check[o] = '\0';
+    if (*t) label_check[0] = '\0'; /* too long */
+  }
+  if (!valid_label(label_check)) {
     smgb_imp_errorf(err,
                     "%sinvalid label '%.63s' (1-63 characters of A-Z a-z 0-9 "
-                    "_ . -)",
-                    at, tok[1]);
+                    "_ . - :%s)",
+                    at, tok[1], pattern ? ", and {1}..{9} in a pattern" : "");
     return SMG_ERROR_PARSE;
   }
   snprintf(c.label, sizeof c.label, "%s", tok[1]);
@@ -322,6 +410,7 @@ static smg_result parse_clip_line(smgb_manifest* m, char** tok, int n,
   c.mirror = d->mirror;
   c.animation_index = d->animation;
   c.line = line;
+  c.from_folder = (uint32_t)pattern;
   bones_text(d, c.bones, sizeof c.bones);
   for (i = 3; i < n; ++i) {
     char* eq = strchr(tok[i], '=');
@@ -338,14 +427,16 @@ static smg_result parse_clip_line(smgb_manifest* m, char** tok, int n,
     else if (strcmp(tok[i], "unit") == 0) ok = parse_float(v, 0.0f, 1e3f, &c.unit_scale);
     else if (strcmp(tok[i], "skip_first_frame") == 0) ok = parse_u32(v, 1, &c.skip_first_frame);
     else if (strcmp(tok[i], "animation") == 0) ok = parse_u32(v, 1000000u, &c.animation_index);
-    else if (strcmp(tok[i], "name") == 0) {
+    else if (strcmp(tok[i], "every") == 0 && pattern)
+      ok = parse_u32(v, 1000000u, &every) && every >= 1;
+    else if (strcmp(tok[i], "name") == 0 && !pattern) {
       if (strlen(v) == 0 || strlen(v) >= sizeof c.name) ok = 0;
       else snprintf(c.name, sizeof c.name, "%s", v);
     } else {
       smgb_imp_errorf(err,
                       "%sunknown option '%.60s' (frames, mirror, unit, "
-                      "skip_first_frame, animation, name)",
-                      at, tok[i]);
+                      "skip_first_frame, animation, %s)",
+                      at, tok[i], pattern ? "every" : "name");
       return SMG_ERROR_PARSE;
     }
     if (!ok) {
@@ -357,10 +448,10 @@ static smg_result parse_clip_line(smgb_manifest* m, char** tok, int n,
   if (frames && !parse_frames(frames, c.skip_first_frame, &c.first_frame,
                               &c.frame_count, at, err))
     return SMG_ERROR_PARSE;
+  if (pattern) return add_pattern(m, &c, tok[1], tok[2], every, at, err);
   return smgb_manifest_add(m, &c, tok[2], 1, err);
 }
 
-/* Folder part of a path ("" -> "."). */
 static void dir_of(const char* path, char* out, size_t n) {
   const char* slash = strrchr(path, '/');
   if (!slash) snprintf(out, n, ".");
@@ -585,6 +676,7 @@ smg_result smgb_manifest_descs(const smgb_manifest* m,
     d->animation_index = c->animation_index;
     d->source_line = c->line;
     d->bones = c->bones[0] ? c->bones : NULL;
+    d->flags = c->from_folder ? SMG_BAKE_CLIP_SKIP_UNUSABLE : 0u;
   }
   return SMG_OK;
 }

@@ -31,6 +31,8 @@ typedef struct smgb_manifest_clip {
   float unit_scale;           /* 0 = guess */
   uint32_t animation_index;   /* assimp files */
   int32_t line;               /* manifest line (0: not from a file) */
+  uint32_t from_folder;       /* 1: one of a pattern's files (a bake skips
+                                 it with a warning when unusable) */
   char bones[SMGB_BONES_MAX]; /* bone map, "role=joint" lines ("" = by
                                  name; bake_roles.h) */
 } smgb_manifest_clip;
@@ -52,7 +54,7 @@ typedef struct smgb_manifest {
 smg_result smgb_manifest_init(smgb_manifest* m, const char* root);
 
 /* Append a clip. `file` is resolved against m->root unless absolute; label
- * must be 1-63 characters of [A-Za-z0-9_.-], and an upper label may not be
+ * must be 1-63 characters of [A-Za-z0-9_.-:], and an upper label may not be
  * "none". check_exists: fail with SMG_ERROR_IO when the file is not
  * readable. Errors name the manifest file and clip->line when known. */
 smg_result smgb_manifest_add(smgb_manifest* m, const smgb_manifest_clip* clip,

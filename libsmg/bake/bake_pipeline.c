@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
 
 #include "bake_graph_build.h"
@@ -32,21 +33,37 @@
 #include "bake_transition.h"
 #include "blob.h"
 
-static double now_seconds(void) {
+static double clock_seconds(clockid_t id) {
   struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
+  clock_gettime(id, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double now_seconds(void) { return clock_seconds(CLOCK_MONOTONIC); }
+
+/* CPU time of the whole process (every thread): the bake's workers
+ * included, and whatever else the caller runs meanwhile. */
+static double cpu_seconds(void) {
+  return clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
+}
+
+/* The process's peak resident memory so far, bytes (Linux reports KiB). */
+static uint64_t peak_memory(void) {
+  struct rusage u;
+  if (getrusage(RUSAGE_SELF, &u) != 0 || u.ru_maxrss < 0) return 0;
+  return (uint64_t)u.ru_maxrss * 1024u;
 }
 
 /* A stage: its name for progress and the result's timing table. */
 typedef struct stage_clock {
   const char* name;
-  double t0;
+  double t0, cpu0;
 } stage_clock;
 
 static void stage_begin(smgb_bake* b, stage_clock* c, const char* name) {
   c->name = name;
   c->t0 = now_seconds();
+  c->cpu0 = cpu_seconds();
   smgb_report_stage(&b->report, name);
 }
 
@@ -55,6 +72,8 @@ static void stage_end(smgb_bake* b, const stage_clock* c,
   if (out->stage_count < SMG_BAKE_MAX_STAGES) {
     out->stages[out->stage_count].name = c->name;
     out->stages[out->stage_count].seconds = now_seconds() - c->t0;
+    out->stage_cpu_seconds[out->stage_count] = cpu_seconds() - c->cpu0;
+    out->stage_peak_bytes[out->stage_count] = peak_memory();
     ++out->stage_count;
   }
   smgb_progress(&b->report, 1.0f);
@@ -137,6 +156,7 @@ static void fill_stats(const smgb_bake* b, smg_bake_result* out) {
   s->action_count = b->action_count;
   for (c = 0; c < SMGB_MAX_LABELS; ++c)
     out->upper_phase_fallbacks += (uint32_t)(b->upper_phase_free >> c & 1u);
+  out->skipped_clip_count = b->skipped_clips;
 }
 
 /* Every problem of the bake into the result: the first error as its one
@@ -157,7 +177,7 @@ smg_result smgb_pipeline_run(const smg_bake_desc* desc,
   smgb_bake* b;
   smg_result r;
   stage_clock c;
-  double tstart = now_seconds();
+  double tstart = now_seconds(), cstart = cpu_seconds();
   b = calloc(1, sizeof *b);
   if (!b) {
     snprintf(out->error, sizeof out->error, "out of memory");
@@ -186,6 +206,11 @@ smg_result smgb_pipeline_run(const smg_bake_desc* desc,
   stage_begin(b, &c, "splice search");
   if ((r = smgb_find_splices(b)) != SMG_OK) goto done;
   stage_end(b, &c, out);
+  /* The joint positions were for the distance searches; the blob is made
+   * of poses and frame records. Freed before the blob is built, which is
+   * when a big bake's memory peaks. */
+  free(b->positions);
+  b->positions = NULL;
 
   stage_begin(b, &c, "internodal + blob");
   if ((r = smgb_write_blob(b, &out->blob, &out->blob_size)) != SMG_OK)
@@ -200,6 +225,8 @@ done:
   }
   fill_problems(&b->report, r, out);
   out->total_seconds = now_seconds() - tstart;
+  out->total_cpu_seconds = cpu_seconds() - cstart;
+  out->peak_bytes = peak_memory();
   smgb_bake_free(b);
   free(b);
   return r;

@@ -1,13 +1,14 @@
 /*
  * bake_splice.c - splice candidates (the paper, III.B.2).
  *
- * For every locomotion frame l (original frames on lower-graph edges) and
- * every action frame u (original frames on upper-graph edges) the window
- * distance between their upper-body segment COGs, each expressed in its
+ * Between locomotion frames l (original frames on lower-graph edges) and
+ * action frames u (original frames on upper-graph edges) the window
+ * distance compares their upper-body segment COGs, each expressed in its
  * own root ground frame (no alignment: the runtime places the action's
- * upper body on the locomotion's pelvis as it is), is computed with the
- * same streamed grid as the motion graphs. Its local minima are the
- * candidates. Lower frames are grouped into regions of
+ * upper body on the locomotion's pelvis as it is). Its local minima are
+ * the candidates; they are found from each locomotion window's nearest
+ * windows of every action (bake_pair_search.h), so the cost grows with
+ * the frames, not with their product. Lower frames are grouped into regions of
  * splice_region_seconds; per (region, action) the best candidate is always
  * kept (so every action can be entered within about a region of any
  * locomotion frame) and up to splices_per_region - 1 more if they are
@@ -29,6 +30,14 @@
 #include "bake_splice.h"
 #include "bake_upper.h"
 #include "bake_math.h"
+#include "bake_pair_search.h"
+
+/* Start cells per locomotion window and action for the minimum search
+ * (bake_pair_search.h). */
+#define SMGB_SPLICE_NEIGHBOURS 8u
+/* Below this many grid cells (locomotion x action frames) the full grid
+ * is used: exact, and quicker than the search at that size. */
+#define SMGB_SPLICE_EXACT_CELLS 50000000ull
 
 typedef struct scand {
   smgb_minimum m;
@@ -164,7 +173,8 @@ smg_result smgb_find_splices(smgb_bake* b) {
   float* thr = NULL;
   smg_result r = SMG_ERROR_OUT_OF_MEMORY;
   smgb_cloud L, U;
-  smgb_grid_job job;
+  smgb_pair_search job;
+  uint32_t* action_of = NULL;
 
   b->splice_count = 0;
   b->splice_coverage = 0.0f;
@@ -208,8 +218,9 @@ smg_result smgb_find_splices(smgb_bake* b) {
   ta = malloc((size_t)k * b->body.torso_point_count * 3u * sizeof *ta);
   tl = malloc((size_t)k * b->body.torso_point_count * 3u * sizeof *tl);
   thr = malloc(b->action_count * sizeof *thr);
+  action_of = malloc((FU ? FU : 1) * sizeof *action_of);
   if (!map_l || !region_of || !map_u || !vl || !vu || !xl || !xu || !w ||
-      !ta || !tl || !thr)
+      !ta || !tl || !thr || !action_of)
     goto oom;
   FL = FU = 0;
   for (c = 0; c < b->clip_count; ++c) {
@@ -225,6 +236,7 @@ smg_result smgb_find_splices(smgb_bake* b) {
         ++FL;
       } else if (pc->flags & SMGI_CLIP_UPPER) {
         map_u[FU] = pf;
+        action_of[FU] = pc->label;
         vu[FU] = f + k <= pc->count && uedge[pf] != SMGI_NONE;
         smgb_upper_cogs(b, pf, xu + (size_t)FU * P * 3u);
         ++FU;
@@ -241,9 +253,26 @@ smg_result smgb_find_splices(smgb_bake* b) {
   job.cols = &U;
   job.window = k;
   job.align = 0;
+  job.col_group = action_of; /* every action gets its nearest windows */
+  job.group_count = b->action_count;
+  job.neighbours = SMGB_SPLICE_NEIGHBOURS;
   job.threads = b->opt.threads;
   job.report = &b->report;
-  if ((r = smgb_grid_minima(&job, &mins, &nmin)) != SMG_OK) {
+  if ((uint64_t)FL * FU <= SMGB_SPLICE_EXACT_CELLS) {
+    /* small sets: every minimum of the full grid */
+    smgb_grid_job grid;
+    memset(&grid, 0, sizeof grid);
+    grid.rows = &L;
+    grid.cols = &U;
+    grid.window = k;
+    grid.align = 0;
+    grid.threads = b->opt.threads;
+    grid.report = &b->report;
+    r = smgb_grid_minima(&grid, &mins, &nmin);
+  } else {
+    r = smgb_pair_search_minima(&job, &mins, &nmin);
+  }
+  if (r != SMG_OK) {
     smgb_fail(&b->report, "splice search: distance grid failed (%s)",
               smg_result_string(r));
     goto done;
@@ -311,27 +340,32 @@ smg_result smgb_find_splices(smgb_bake* b) {
   /* coverage: for each lower frame on an edge, the distance (same clip) to
    * the nearest candidate of every action */
   {
-    uint32_t covered = 0, total = 0, a, maxgap = 0;
+    uint32_t covered = 0, total = 0, a, maxgap = 0, s0 = 0, s1;
     uint32_t* near = malloc(b->frame_count * sizeof *near);
     if (!near) goto oom;
-    for (a = 1; a < b->action_count; ++a) (void)a;
     for (f = 0; f < b->frame_count; ++f) near[f] = 0;
     for (c = 0; c < b->clip_count; ++c) {
       const smgb_pool_clip* pc = &b->clips[c];
       if (!(pc->flags & SMGI_CLIP_LOWER) || (pc->flags & SMGI_CLIP_BLEND))
         continue;
       for (f = pc->first; f < pc->first + pc->count; ++f) near[f] = 0;
+      /* splices are sorted by lower frame: the clip's own are one run */
+      while (s0 < b->splice_count &&
+             b->splices[s0].lower_frame < pc->first)
+        ++s0;
+      s1 = s0;
+      while (s1 < b->splice_count &&
+             b->splices[s1].lower_frame < pc->first + pc->count)
+        ++s1;
       for (a = 1; a < b->action_count; ++a) {
         /* two sweeps over the clip: distance to the previous / next
          * candidate of action a */
-        uint32_t last = SMGI_NONE, s = 0;
+        uint32_t last = SMGI_NONE, s;
         uint32_t* dist = malloc(pc->count * sizeof *dist);
         if (!dist) { free(near); goto oom; }
         for (f = 0; f < pc->count; ++f) dist[f] = UINT32_MAX;
-        for (s = 0; s < b->splice_count; ++s)
-          if (b->splices[s].action == a &&
-              b->splices[s].lower_frame >= pc->first &&
-              b->splices[s].lower_frame < pc->first + pc->count)
+        for (s = s0; s < s1; ++s)
+          if (b->splices[s].action == a)
             dist[b->splices[s].lower_frame - pc->first] = 0;
         for (f = 0; f < pc->count; ++f) {
           if (dist[f] == 0) last = f;
@@ -380,5 +414,6 @@ done:
   free(mins);
   free(cands);
   free(thr);
+  free(action_of);
   return r;
 }

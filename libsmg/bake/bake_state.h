@@ -79,6 +79,7 @@ typedef struct smgb_bake {
   float splice_coverage, splice_max_gap;
 
   uint32_t bake_flags;
+  uint32_t skipped_clips;      /* unusable clips left out (bake_import.c) */
 } smgb_bake;
 
 /* An empty bake: default options (smgb_options_resolve fills them), no

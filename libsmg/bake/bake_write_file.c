@@ -5,52 +5,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
-#ifdef _WIN32
-#include <io.h>
-#include <windows.h>
-#endif
-
 #include "bake_desc.h"
+#include "file_replace.h"
 #include "smg_bake.h"
 
-/* The platform parts of writing a file in place. Windows has no file mode
- * bits to keep, flushes a descriptor with _commit, and its rename() refuses
- * an existing target: MoveFileEx replaces it (one call, atomic on NTFS
- * within a directory). */
-#ifdef _WIN32
-static void keep_mode(int fd, const char* path) {
-  (void)fd;
-  (void)path;
-}
-static int sync_fd(int fd) { return _commit(fd); }
-static int replace_file(const char* from, const char* to) {
-  return MoveFileExA(from, to, MOVEFILE_REPLACE_EXISTING |
-                                   MOVEFILE_WRITE_THROUGH) ? 0 : -1;
-}
-static const char* path_base(const char* path) {
-  const char* slash = strrchr(path, '/');
-  const char* back = strrchr(path, '\\');
-  if (back && (!slash || back > slash)) slash = back;
-  return slash ? slash + 1 : path;
-}
-#else
-/* mkstemp makes it private (0600): keep the old file's mode, else the
- * usual 0644 */
-static void keep_mode(int fd, const char* path) {
-  struct stat st;
-  fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644);
-}
-static int sync_fd(int fd) { return fsync(fd); }
-static int replace_file(const char* from, const char* to) {
-  return rename(from, to);
-}
-static const char* path_base(const char* path) {
-  const char* slash = strrchr(path, '/');
-  return slash ? slash + 1 : path;
-}
-#endif
 
 /* The blob goes to a fresh temporary file beside `path` (same directory,
  * so the rename cannot cross file systems), is flushed to the disk, and
@@ -72,7 +31,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
       snprintf(error, error_size, "smg_bake_write_file: no blob or no path");
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  base = path_base(path);
+  base = smg_file_base(path);
   if (snprintf(tmp, sizeof tmp, "%.*s.%s.XXXXXX", (int)(base - path), path,
                base) >= (int)sizeof tmp) {
     if (error && error_size)
@@ -86,7 +45,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
                path, strerror(errno));
     return SMG_ERROR_IO;
   }
-  keep_mode(fd, path);
+  smg_file_keep_mode(fd, path);
   f = fdopen(fd, "wb");
   if (!f) {
     close(fd);
@@ -96,7 +55,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
     return SMG_ERROR_IO;
   }
   n = fwrite(result->blob, 1, result->blob_size, f);
-  ok = n == result->blob_size && fflush(f) == 0 && sync_fd(fd) == 0;
+  ok = n == result->blob_size && fflush(f) == 0 && smg_file_sync(fd) == 0;
   if (fclose(f) != 0 || !ok) {
     remove(tmp);
     if (error && error_size)
@@ -104,7 +63,7 @@ smg_result smg_bake_write_file(const smg_bake_result* result,
                "unchanged", tmp, path);
     return SMG_ERROR_IO;
   }
-  if (replace_file(tmp, path) != 0) {
+  if (smg_file_replace(tmp, path) != 0) {
     remove(tmp);
     if (error && error_size)
       snprintf(error, error_size, "%s: cannot rename to %s", tmp, path);

@@ -447,6 +447,35 @@ static void test_every_problem_reported(void** state) {
   bg_free(&s);
 }
 
+/* A clip that may be skipped (a folder pattern's) and cannot be used is
+ * left out with a warning naming it, and counted; the same clip without
+ * the flag fails the bake. */
+static void test_unusable_clip_skipped(void** state) {
+  bg_set s;
+  smg_bake_result res;
+  uint32_t n;
+  (void)state;
+  bg_standard(&s, 3.0f);
+  n = s.count;
+  /* half a second: shorter than two transition windows */
+  bg_add(&s, SMGB_SYNTH_WALK, 0.5f, 0.0f, SMG_BAKE_ROLE_LOWER, "walk");
+  assert_int_equal(s.count, n + 1);
+  s.descs[n].name = "short.bvh";
+  assert_int_not_equal(bg_bake(&s, NULL, &res), SMG_OK);
+  assert_non_null(strstr(res.error, "frames"));
+  s.descs[n].flags = SMG_BAKE_CLIP_SKIP_UNUSABLE;
+  assert_int_equal(bg_bake(&s, NULL, &res), SMG_OK);
+  assert_non_null(res.blob);
+  assert_int_equal(res.skipped_clip_count, 1);
+  assert_int_equal(res.error_count, 0);
+  assert_true(res.warning_count >= 1);
+  if (!strstr(res.problems, "warning: clip ") ||
+      !strstr(res.problems, "skipped") || !strstr(res.problems, "frames"))
+    fail_msg("warning does not name the clip and why: %s", res.problems);
+  smg_bake_result_free(&res);
+  bg_free(&s);
+}
+
 /* File-based input through a manifest: a missing clip is reported with the
  * manifest's file and line, a truncated BVH with the BVH file and line, and
  * a good manifest bakes. */
@@ -576,6 +605,7 @@ int main(void) {
   const struct CMUnitTest misuse[] = {
       cmocka_unit_test(test_bad_input),
       cmocka_unit_test(test_every_problem_reported),
+      cmocka_unit_test(test_unusable_clip_skipped),
       cmocka_unit_test(test_manifest_and_files),
   };
   int fails = cmocka_run_group_tests(tests, setup, teardown);

@@ -2,8 +2,8 @@
  * test_manifest.c - the manifest format (docs/manifest.md): settings and
  * per-clip options, path resolution (root relative to the manifest, the
  * --data-dir override), frame ranges, every parse error naming file:line,
- * missing clip files, conversion to smg_bake_clip_desc, and the project's
- * own data/ manifest files.
+ * missing clip files, conversion to smg_bake_clip_desc, folder patterns
+ * with label templates, and the project's own data/ manifest files.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -104,6 +104,72 @@ static void test_valid(void** state) {
   assert_int_equal(d[2].source_line, 10);
   assert_int_equal(d[2].first_frame, 9);
   smgb_manifest_free(&m);
+}
+
+/* A clip line whose file name has '*' takes every matching file of the
+ * folder in name order (every=N: every N-th), labelled from the captures;
+ * its clips are marked skippable, explicit lines are not. */
+static void test_pattern(void** state) {
+  static const char* names[] = {
+      "d_walk_active_001.bvh", "d_walk_active_002.bvh",
+      "d_walk-turn-left_exhausted_001.bvh", "d_walk_exhausted_003.bvh",
+      "d_run_active_001.bvh", "d_run_active_002.bvh", "d_walk_notes.txt"};
+  char sub[400], path[600];
+  smgb_manifest m;
+  smgb_error err;
+  smg_bake_clip_desc d[8];
+  size_t i;
+  (void)state;
+  snprintf(sub, sizeof sub, "%s/lib", g_dir);
+  assert_int_equal(mkdir(sub, 0777), 0);
+  for (i = 0; i < sizeof names / sizeof names[0]; ++i) {
+    snprintf(path, sizeof path, "%s/%s", sub, names[i]);
+    assert_true(imp_write_file(path, "x"));
+  }
+  if (load_text("root lib\n"
+                "lower walk:{2} \"d_walk*_*_*.bvh\"\n"
+                "lower run:{1} d_run_*_*.bvh every=2 mirror=0\n"
+                "upper wave d_run_active_002.bvh\n",
+                NULL, &m, &err, path, sizeof path) != SMG_OK)
+    fail_msg("%s", err.message);
+  /* name order: '-' sorts before '_' */
+  assert_int_equal(m.clip_count, 6);
+  assert_string_equal(m.clips[0].label, "walk:exhausted");
+  assert_non_null(strstr(m.clips[0].path, "d_walk-turn-left_exhausted_001"));
+  assert_string_equal(m.clips[1].label, "walk:active");
+  assert_string_equal(m.clips[2].label, "walk:active");
+  assert_string_equal(m.clips[3].label, "walk:exhausted");
+  assert_string_equal(m.clips[4].label, "run:active"); /* every=2: 1 of 2 */
+  assert_non_null(strstr(m.clips[4].path, "d_run_active_001"));
+  assert_int_equal(m.clips[4].mirror, SMG_BAKE_MIRROR_NO);
+  assert_int_equal(m.clips[4].line, 3);
+  assert_string_equal(m.clips[5].label, "wave");
+  assert_int_equal(smgb_manifest_descs(&m, d, 8), SMG_OK);
+  assert_int_equal(d[0].flags, SMG_BAKE_CLIP_SKIP_UNUSABLE);
+  assert_int_equal(d[4].flags, SMG_BAKE_CLIP_SKIP_UNUSABLE);
+  assert_int_equal(d[5].flags, 0); /* an explicit line stays strict */
+  smgb_manifest_free(&m);
+
+  /* errors name the line and the problem */
+  assert_int_not_equal(load_text("root lib\nlower walk nomatch_*.bvh\n", NULL,
+                                 &m, &err, path, sizeof path), SMG_OK);
+  assert_non_null(strstr(err.message, "test.manifest:2"));
+  assert_non_null(strstr(err.message, "no file"));
+  assert_int_not_equal(load_text("root lib\nlower walk:{3} d_run_*.bvh\n",
+                                 NULL, &m, &err, path, sizeof path), SMG_OK);
+  assert_non_null(strstr(err.message, "{N}"));
+  assert_int_not_equal(load_text("lower walk l*b/d_run_*.bvh\n", NULL, &m,
+                                 &err, path, sizeof path), SMG_OK);
+  assert_non_null(strstr(err.message, "folder"));
+  assert_int_not_equal(load_text("root lib\nlower walk d_run_*.bvh every=0\n",
+                                 NULL, &m, &err, path, sizeof path), SMG_OK);
+  assert_non_null(strstr(err.message, "every"));
+  assert_int_not_equal(load_text("root lib\nlower walk d_run_active_001.bvh "
+                                 "every=2\n",
+                                 NULL, &m, &err, path, sizeof path), SMG_OK);
+  assert_non_null(strstr(err.message, "unknown option 'every'"));
+  assert_int_not_equal(load_text("root lib\nlower walk{ d_run_*.bvh\n", NULL,
+                                 &m, &err, path, sizeof path), SMG_OK);
 }
 
 static void test_override(void** state) {
@@ -280,6 +346,7 @@ static void test_project_manifests(void** state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_valid),
+      cmocka_unit_test(test_pattern),
       cmocka_unit_test(test_override),
       cmocka_unit_test(test_errors),
       cmocka_unit_test(test_overlong_line_and_missing_manifest),

@@ -13,9 +13,13 @@ namespace Smg.Tests
 {
     static class LayoutTest
     {
-        // constant prefix -> the C# type holding its members (longest first)
+        // constant prefix -> the C# type holding its members (longest first);
+        // a prefix may have several homes (event types and event flags
+        // share SMG_EVENT_): the constant must be in one of them
         static readonly KeyValuePair<string, Type>[] ConstantHomes =
         {
+            new KeyValuePair<string, Type>("SMG_EVENT_", typeof(SmgEventType)),
+            new KeyValuePair<string, Type>("SMG_EVENT_", typeof(SmgEventFlags)),
             new KeyValuePair<string, Type>("SMG_CHARACTER_", typeof(SmgCharacterFlags)),
             new KeyValuePair<string, Type>("SMG_GRAPH_", typeof(SmgGraphFlags)),
             new KeyValuePair<string, Type>("SMG_STATE_", typeof(SmgStateFlags)),
@@ -109,11 +113,15 @@ namespace Smg.Tests
 
         static void CheckConstant(string cName, long value, List<string> problems)
         {
+            string prefix = null;
+            var homes = new List<string>();
             foreach (var home in ConstantHomes)
             {
-                if (!cName.StartsWith(home.Key))
+                if (!cName.StartsWith(home.Key) || (prefix != null && home.Key != prefix))
                     continue;
+                prefix = home.Key;
                 Type t = home.Value;
+                homes.Add(t.Name);
                 string rest = t == typeof(SmgResult) ? cName.Substring(4) : cName.Substring(home.Key.Length);
                 string name = Pascal(rest);
                 long? mirrored = null;
@@ -126,12 +134,15 @@ namespace Smg.Tests
                         mirrored = Convert.ToInt64(f.GetRawConstantValue());
                 }
                 if (mirrored == null)
-                    problems.Add("C constant " + cName + " has no mirror " + t.Name + "." + name);
-                else if (mirrored.Value != value)
+                    continue;
+                if (mirrored.Value != value)
                     problems.Add(cName + " is " + value + " in C, " + mirrored.Value + " in " + t.Name + "." + name);
                 return;
             }
-            problems.Add("C constant " + cName + " has no home in the binding");
+            if (prefix == null)
+                problems.Add("C constant " + cName + " has no home in the binding");
+            else
+                problems.Add("C constant " + cName + " has no mirror in " + string.Join(" or ", homes));
         }
     }
 }

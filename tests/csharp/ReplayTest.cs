@@ -148,6 +148,8 @@ namespace Smg.Tests
                 }
 
                 var moved = new float[8];
+                var probes = new float[6];
+                var events = new SmgEvent[32 + 5];
                 for (frame = 0; frame < frames; ++frame)
                 {
                     character = -1;
@@ -194,16 +196,47 @@ namespace Smg.Tests
                     if (frame == 9000)
                         ExpectResult(Result(() => ch[2].SetPath(Square)), "set_path");
 
+                    if (frame >= 2000 && frame < 6000)
+                    {
+                        character = 2;
+                        ExpectResult(Result(() => ch[2].GetGroundProbes(probes)), "get_ground_probes");
+                        ExpectFloats(probes, "ground probes");
+                        var g = new SmgGround
+                        {
+                            FootHeight = new SmgFloat2(0.1f * probes[1], 0.1f * probes[3]),
+                            RootHeight = 0.1f * probes[5],
+                        };
+                        ExpectResult(Result(() => ch[2].SetGround(g)), "set_ground");
+                    }
+                    if (frame == 6000)
+                        ExpectResult(Result(() => ch[2].ClearGround()), "set_ground NULL");
+
                     float dt = frame % 97 == 0 ? 0.0f : frame % 7 == 3 ? 0.05f : 1.0f / 60.0f;
                     for (int k = 0; k < Characters; ++k)
                     {
                         character = k;
                         SmgCharacter c = ch[k];
                         ExpectResult(Result(() => c.Step(dt)), "step");
+                        int count = 0;
+                        Array.Clear(events, 0, events.Length);
+                        ExpectResult(Result(() => count = c.GetEvents(events)), "get_events");
+                        uint countCopy = (uint)count;
+                        Expect((byte*)&countCopy, 4, "event count");
+                        fixed (SmgEvent* e = events)
+                            Expect((byte*)e, count * sizeof(SmgEvent), "events");
+                        SmgRootMotion rm = default(SmgRootMotion);
+                        ExpectResult(Result(() => rm = c.RootMotion), "get_root_motion");
+                        SmgRootMotion rmCopy = rm;
+                        Expect((byte*)&rmCopy, sizeof(SmgRootMotion), "root motion");
                         SmgCharacterState st = default(SmgCharacterState);
                         ExpectResult(Result(() => st = c.State), "get_state");
                         SmgCharacterState stCopy = st;
                         Expect((byte*)&stCopy, sizeof(SmgCharacterState), "state");
+                        if (k == 0 && frame >= 1000 && frame < 2500)
+                        {
+                            var movedTo = new SmgFloat3(st.Position.X + 0.002f, st.Position.Y, st.Position.Z);
+                            ExpectResult(Result(() => c.SetGroundPosition(movedTo, st.Heading)), "set_ground_position");
+                        }
                         ExpectResult(Result(() => c.GetLocalPose(root, rot)), "get_local_pose");
                         ExpectFloats(root, "root translation");
                         ExpectFloats(rot, "local rotations");

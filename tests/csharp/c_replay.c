@@ -5,9 +5,11 @@
  *
  * Performs a fixed call sequence through the C API (three characters, a
  * path that grows, transition and splice points added, moved and removed,
- * immediate controls, a replaced and a cleared path, uneven dt) and writes
- * every result code and every output (state struct, local pose, world
- * matrices, character-space matrices every 10th frame) as raw bytes to
+ * immediate controls, a replaced and a cleared path, uneven dt, ground
+ * heights from the probes for one character, a mover shifting another)
+ * and writes every result code and every output (state struct, local
+ * pose, world matrices, character-space matrices every 10th frame, the
+ * step's events and root motion, the ground probes) as raw bytes to
  * stdout. tests/csharp/ReplayTest.cs performs the same sequence through
  * the C# classes and compares the stream byte for byte, so any difference in what the binding passes or reads shows up as
  * the first differing frame. Keep the two sequences identical: every
@@ -114,15 +116,47 @@ int main(int argc, char** argv) {
     if (f == 8500) put_result(smg_character_clear_path(ch[2]));
     if (f == 9000) put_result(smg_character_set_path(ch[2], square, 4));
 
+    /* character 2 walks on ground 0.1 z high, measured at its probes */
+    if (f >= 2000 && f < 6000) {
+      float p[6];
+      smg_ground g;
+      put_result(smg_character_get_ground_probes(ch[2], p, 3));
+      put(p, sizeof p);
+      memset(&g, 0, sizeof g);
+      g.struct_size = sizeof g;
+      g.foot_height[0] = 0.1f * p[1];
+      g.foot_height[1] = 0.1f * p[3];
+      g.root_height = 0.1f * p[5];
+      put_result(smg_character_set_ground(ch[2], &g));
+    }
+    if (f == 6000) put_result(smg_character_set_ground(ch[2], NULL));
+
     float dt = f % 97 == 0 ? 0.0f : f % 7 == 3 ? 0.05f : 1.0f / 60.0f;
     for (int k = 0; k < CHARACTERS; ++k) {
       smg_character_state st;
+      smg_event ev[32 + 5];
+      smg_root_motion rm;
+      uint32_t n = 0;
       float root[3];
       memset(&st, 0, sizeof st);
       st.struct_size = sizeof st;
       put_result(smg_character_step(ch[k], dt));
+      memset(ev, 0, sizeof ev);
+      ev[0].struct_size = sizeof ev[0];
+      put_result(smg_character_get_events(ch[k], ev, 32 + 5, &n));
+      put(&n, sizeof n);
+      put(ev, sizeof ev[0] * n);
+      memset(&rm, 0, sizeof rm);
+      rm.struct_size = sizeof rm;
+      put_result(smg_character_get_root_motion(ch[k], &rm));
+      put(&rm, sizeof rm);
       put_result(smg_character_get_state(ch[k], &st));
       put(&st, sizeof st);
+      /* character 0: a mover that shifts it 2 mm sideways every step */
+      if (k == 0 && f >= 1000 && f < 2500) {
+        const float moved_to[3] = {st.position[0] + 0.002f, st.position[1], st.position[2]};
+        put_result(smg_character_set_ground_position(ch[0], moved_to, st.heading));
+      }
       put_result(smg_character_get_local_pose(ch[k], root, rot, joints));
       put(root, sizeof root);
       put(rot, sizeof(float) * 4 * joints);

@@ -40,19 +40,20 @@ for job in "$@"; do
   args=${job#* }
   # shellcheck disable=SC2086
   "$build/smg-synth" -g "$blob" -p "$out/$name.txt" $args --seconds 12 \
-    --csv "$out/$name-linux.csv" -o "$out/$name-linux.bvh" >> "$out/log.txt" 2>&1
+    --csv "$out/$name-linux.csv" --glb "$out/$name-linux.glb" -o "$out/$name-linux.bvh" >> "$out/log.txt" 2>&1
   # shellcheck disable=SC2086
   $wine_run "$wbuild/smg-synth.exe" -g "$blob" -p "$out/$name.txt" $args \
-    --seconds 12 --csv "$out/$name-windows.csv" -o "$out/$name-windows.bvh" \
+    --seconds 12 --csv "$out/$name-windows.csv" --glb "$out/$name-windows.glb" \
+    -o "$out/$name-windows.bvh" \
     >> "$out/log.txt" 2>&1
-  for ext in bvh csv; do
+  for ext in bvh csv glb; do
     if ! cmp -s "$out/$name-linux.$ext" "$out/$name-windows.$ext"; then
       echo "test-windows: FAILED: smg-synth.exe and smg-synth differ on $name.$ext ($blob):" >&2
       cmp "$out/$name-linux.$ext" "$out/$name-windows.$ext" >&2 || true
       exit 1
     fi
   done
-  echo "test-windows: smg-synth.exe = smg-synth on $(basename "$blob"), path $name ($args): $(wc -c < "$out/$name-linux.bvh") + $(wc -c < "$out/$name-linux.csv") bytes"
+  echo "test-windows: smg-synth.exe = smg-synth on $(basename "$blob"), path $name ($args): $(wc -c < "$out/$name-linux.bvh") + $(wc -c < "$out/$name-linux.csv") + $(wc -c < "$out/$name-linux.glb") bytes (BVH, CSV, glTF)"
 done
 
 # same_bake NAME MANIFEST DATA_DIR LINUX_BLOB

@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "gltf_write.h"
+#include "printf_check.h"
 
 typedef struct gltf_bytes {
   unsigned char* data;
@@ -20,9 +21,7 @@ typedef struct gltf_bytes {
 void gltf_bytes_append(gltf_bytes* b, const void* data, size_t size);
 /* printf-style text (no terminating zero kept) */
 void gltf_bytes_printf(gltf_bytes* b, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
+    SMG_PRINTF_CHECK(2, 3)
     ;
 /* a JSON string literal, quotes and escapes included */
 void gltf_bytes_json_string(gltf_bytes* b, const char* s);

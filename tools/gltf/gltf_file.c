@@ -10,9 +10,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
+#include "file_replace.h"
 #include "gltf_bytes.h"
 
 static int reserve(gltf_bytes* b, size_t extra) {
@@ -151,8 +151,7 @@ smg_result gltf_file_write(const char* path, gltf_bytes* json,
                            char* error, size_t error_size) {
   gltf_bytes file = {NULL, 0, 0, 0};
   char tmp[4096];
-  const char* base = strrchr(path, '/');
-  struct stat st;
+  const char* base = smg_file_base(path);
   FILE* f;
   int fd, ok;
   assemble(&file, json, bin, format);
@@ -162,7 +161,6 @@ smg_result gltf_file_write(const char* path, gltf_bytes* json,
         "");
     return SMG_ERROR_OUT_OF_MEMORY;
   }
-  base = base ? base + 1 : path;
   if (snprintf(tmp, sizeof tmp, "%.*s.%s.XXXXXX", (int)(base - path), path,
                base) >= (int)sizeof tmp) {
     gltf_bytes_free(&file);
@@ -176,8 +174,7 @@ smg_result gltf_file_write(const char* path, gltf_bytes* json,
         strerror(errno));
     return SMG_ERROR_IO;
   }
-  /* mkstemp makes it private (0600): keep the old file's mode, else 0644 */
-  if (fchmod(fd, stat(path, &st) == 0 ? (st.st_mode & 07777) : 0644) != 0 ||
+  if (smg_file_keep_mode(fd, path) != 0 ||
       !(f = fdopen(fd, "wb"))) {
     close(fd);
     remove(tmp);
@@ -186,7 +183,7 @@ smg_result gltf_file_write(const char* path, gltf_bytes* json,
     return SMG_ERROR_IO;
   }
   ok = fwrite(file.data, 1, file.size, f) == file.size && fflush(f) == 0 &&
-       fsync(fd) == 0;
+       smg_file_sync(fd) == 0;
   gltf_bytes_free(&file);
   if (fclose(f) != 0 || !ok) {
     remove(tmp);
@@ -194,7 +191,7 @@ smg_result gltf_file_write(const char* path, gltf_bytes* json,
         tmp, path);
     return SMG_ERROR_IO;
   }
-  if (rename(tmp, path) != 0) {
+  if (smg_file_replace(tmp, path) != 0) {
     remove(tmp);
     say(error, error_size, "%s: cannot rename to %s", tmp, path);
     return SMG_ERROR_IO;

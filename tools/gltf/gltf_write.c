@@ -28,9 +28,7 @@ typedef struct doc {
 } doc;
 
 static smg_result bad(char* error, size_t error_size, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
+    SMG_PRINTF_CHECK(3, 4)
     ;
 static smg_result bad(char* error, size_t error_size, const char* fmt, ...) {
   va_list ap;

@@ -1,6 +1,8 @@
 ## libsmg demo: draw a path on the ground and the character follows it with
 ## motion from the baked graph; place transition (lower body style) and
-## splice (upper body action) points along the path.
+## splice (upper body action) points along the path. The character is moved
+## by its CharacterBody3D (engine-mover mode): walk it into the wall and it
+## slides along. Footsteps leave marks, the walked track is drawn.
 ##
 ##   left mouse, drag   draw a new path (the character rejoins it at once)
 ##   T                  transition point at the mouse: next style
@@ -8,15 +10,17 @@
 ##   right mouse        remove the nearest transition/splice point
 ##   C                  clear the path      I  toggle foot IK
 ##
-## Run with `-- --screenshot=FILE.png` to draw a fixed path, let the character
-## walk it, save one frame and quit (make godot-screenshot).
+## Run with `-- --screenshot=FILE.png` for a scripted sequence (a drawn path,
+## a stop, then a new path behind the character that runs into the wall),
+## one frame saved, then quit (make godot-screenshot).
 extends Node3D
 
 const BoneMeshes = preload("res://bone_meshes.gd")
 const MIN_POINT_SPACING := 0.25  # metres between recorded mouse points
 const BODY_GLTF := "res://body.gltf"
 
-@onready var character: SmgCharacter = $Character
+@onready var body: CharacterBody3D = $Body
+@onready var character: SmgCharacter = $Body/Character
 @onready var camera: Camera3D = $Camera3D
 @onready var path_mesh: MeshInstance3D = $PathMesh
 @onready var markers_root: Node3D = $Markers
@@ -30,11 +34,16 @@ var markers: Array = []  # {id, kind ("T"/"S"), distance, value, node}
 var next_style := 1
 var next_action := 1
 var last_event := ""
+var track := PackedVector3Array()   # where the body went, for the track line
+var footprints: Array = []          # the last footstep marks
+var track_mesh := MeshInstance3D.new()
+const MAX_FOOTPRINTS := 40
 
 
 func _ready() -> void:
 	help.text = "Left drag: draw a path   T: transition (next style) at mouse   " \
-		+ "S: splice (next action) at mouse\nRight click: remove nearest point   C: clear path   I: toggle IK"
+		+ "S: splice (next action) at mouse\nRight click: remove nearest point   C: clear path   I: toggle IK\n" \
+		+ "The body is moved by its CharacterBody3D: walk into the wall and it slides"
 	graph = character.graph
 	if graph == null or not graph.is_loaded():
 		status.text = "No graph loaded: run `make godot-demo` to copy build/default.smg here."
@@ -46,6 +55,16 @@ func _ready() -> void:
 	character.style_changed.connect(func(_s, n): last_event = "style -> " + n)
 	character.action_changed.connect(func(_a, n): last_event = "action -> " + n)
 	character.path_end_reached.connect(func(): last_event = "path end reached")
+	character.constraint_reached.connect(func(id, _v, splice):
+		last_event = "%s point %d reached" % ["splice" if splice else "transition", id])
+	character.footstep.connect(_on_footstep)
+	var track_mat := StandardMaterial3D.new()
+	track_mat.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	track_mat.albedo_color = Color(0.2, 0.9, 1.0)
+	track_mesh.material_override = track_mat
+	track_mesh.mesh = ImmediateMesh.new()
+	track_mesh.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	add_child(track_mesh)
 	var line_mat := StandardMaterial3D.new()
 	line_mat.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
 	line_mat.albedo_color = Color(1, 1, 0.2)
@@ -63,6 +82,38 @@ func _process(_delta: float) -> void:
 		graph.get_style_name(character.style), graph.get_action_name(character.action),
 		character.get_path_distance(), character.get_path_length(), character.get_path_error(),
 		"on" if character.ik_enabled else "off", last_event]
+
+
+# The engine's mover: the character steps here (it is not active), its
+# root motion goes through move_and_slide, and where the body ended up
+# (against the wall) goes back to the character.
+func _physics_process(delta: float) -> void:
+	if graph == null or not graph.is_loaded():
+		return
+	character.step(delta)
+	body.velocity = character.get_root_motion() / delta
+	body.velocity.y = 0.0
+	body.move_and_slide()
+	body.rotation.y += character.get_root_motion_yaw()
+	character.set_ground_position(body.global_position, body.rotation.y)
+	if track.is_empty() or track[track.size() - 1].distance_to(body.global_position) > 0.05:
+		track.append(body.global_position)
+		_draw_ribbon(track_mesh.mesh, track, 0.02, 0.025)  # narrower, above the path ribbons
+
+
+func _on_footstep(_foot: int, pos: Vector3, _strength: float) -> void:
+	var mark := MeshInstance3D.new()
+	var disc := CylinderMesh.new()
+	disc.top_radius = 0.07
+	disc.bottom_radius = 0.07
+	disc.height = 0.01
+	mark.mesh = disc
+	mark.position = Vector3(pos.x, 0.01, pos.z)
+	mark.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	add_child(mark)
+	footprints.append(mark)
+	if footprints.size() > MAX_FOOTPRINTS:
+		footprints.pop_front().queue_free()
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -159,18 +210,21 @@ func _extend_path(p: Vector3) -> void:
 
 
 func _redraw_path() -> void:
-	var m: ImmediateMesh = path_mesh.mesh
+	_draw_ribbon(path_mesh.mesh, points, 0.06, 0.02)
+
+
+# A flat ribbon along pts: visible from the camera where a 1-pixel line is not.
+func _draw_ribbon(m: ImmediateMesh, pts: PackedVector3Array, half_width: float, lift: float) -> void:
 	m.clear_surfaces()
-	if points.size() < 2:
+	if pts.size() < 2:
 		return
-	# A flat ribbon is visible from the camera where a 1-pixel line is not.
 	m.surface_begin(Mesh.PRIMITIVE_TRIANGLE_STRIP)
-	for i in points.size():
-		var a := points[max(i - 1, 0)]
-		var b := points[min(i + 1, points.size() - 1)]
-		var side := (b - a).cross(Vector3.UP).normalized() * 0.06
-		m.surface_add_vertex(points[i] + side + Vector3(0, 0.02, 0))
-		m.surface_add_vertex(points[i] - side + Vector3(0, 0.02, 0))
+	for i in pts.size():
+		var a := pts[max(i - 1, 0)]
+		var b := pts[min(i + 1, pts.size() - 1)]
+		var side := (b - a).cross(Vector3.UP).normalized() * half_width
+		m.surface_add_vertex(pts[i] + side + Vector3(0, lift, 0))
+		m.surface_add_vertex(pts[i] - side + Vector3(0, lift, 0))
 	m.surface_end()
 
 
@@ -254,23 +308,52 @@ func _clear_markers() -> void:
 
 # --- scripted run for the screenshot --------------------------------------
 
-func _screenshot(out: String) -> void:
-	var pts: Array[Vector3] = [Vector3(0, 0, 0), Vector3(0, 0, 3), Vector3(1, 0, 5), Vector3(3, 0, 6), Vector3(5, 0, 6.5),
-		Vector3(6.5, 0, 5.5), Vector3(7, 0, 3), Vector3(6.5, 0, 0)]
+# Draws pts through the same code as a mouse drag (a point every 0.5 m).
+func _draw_scripted(pts: Array) -> void:
 	_start_path(pts[0])
 	for i in range(1, pts.size()):
-		var seg_len := pts[i - 1].distance_to(pts[i])
+		var seg_len: float = pts[i - 1].distance_to(pts[i])
 		var n := int(ceil(seg_len / 0.5))
 		for k in range(1, n + 1):
 			_extend_path(pts[i - 1].lerp(pts[i], float(k) / n))
-	_add_marker("S", Vector3(0.5, 0, 4))
-	_add_marker("T", Vector3(5, 0, 6.5))
-	camera.transform = Transform3D(Basis(), Vector3(2.6, 2.3, 9.2)).looking_at(Vector3(2.6, 0.6, 4.2), Vector3.UP)
-	for i in 150:
-		await get_tree().process_frame
+
+
+# A drawn path with a splice point, the stop at its end, then a new path
+# that starts behind the standing character and runs into the wall: the
+# frame shows the first path (grey), the walked track (cyan), the footsteps
+# and the character sliding along the wall on the second path (yellow).
+func _screenshot(out: String) -> void:
+	_draw_scripted([Vector3(0, 0, 0), Vector3(0, 0, 3), Vector3(-0.5, 0, 5)])
+	_add_marker("S", Vector3(0, 0, 1.5))
+	camera.transform = Transform3D(Basis(), Vector3(0.8, 7.0, 9.0)).looking_at(Vector3(0.8, 0.3, 1.8), Vector3.UP)
+	var ended := [false]
+	character.path_end_reached.connect(func(): ended[0] = true, CONNECT_ONE_SHOT)
+	for i in 600:
+		await get_tree().physics_frame
+		if ended[0]:
+			break
+	for i in 60:  # stand for a second
+		await get_tree().physics_frame
+	var first := MeshInstance3D.new()
+	first.mesh = ImmediateMesh.new()
+	_draw_ribbon(first.mesh, points, 0.06, 0.02)
+	var grey := StandardMaterial3D.new()
+	grey.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	grey.albedo_color = Color(0.65, 0.65, 0.65)
+	first.material_override = grey
+	add_child(first)
+	_draw_scripted([body.global_position + Vector3(0.2, 0, -0.8), Vector3(1.2, 0, 2.0), Vector3(2.4, 0, -1.5)])
+	var blocked := 0
+	for i in 480:
+		await get_tree().physics_frame
+		if body.get_slide_collision_count() > 0:
+			blocked += 1
+		if blocked > 45:  # sliding along the wall for a while
+			break
 	await RenderingServer.frame_post_draw
 	var img := get_viewport().get_texture().get_image()
 	var err := img.save_png(out)
 	print("screenshot: ", out, " err=", err, " size=", img.get_size(), " driver=",
-		RenderingServer.get_current_rendering_driver_name())
+		RenderingServer.get_current_rendering_driver_name(), " blocked physics frames: ", blocked,
+		" along path 2: %.1f m, off it %.2f m" % [character.get_path_distance(), character.get_path_error()])
 	get_tree().quit(0 if err == OK else 1)

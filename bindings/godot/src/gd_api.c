@@ -11,8 +11,9 @@ GDExtensionPtrBuiltInMethod gd_builtins[GDBB_COUNT_];
 GDExtensionPtrUtilityFunction gd_utilities[GDU_COUNT_];
 
 static GDExtensionPtrDestructor dtor_string, dtor_string_name, dtor_node_path;
-static GDExtensionVariantFromTypeConstructorFunc from_int, from_string, from_sn, from_object;
-static GDExtensionTypeFromVariantConstructorFunc to_object;
+static GDExtensionVariantFromTypeConstructorFunc from_int, from_string, from_sn, from_object, from_bool, from_float,
+	from_vec3;
+static GDExtensionTypeFromVariantConstructorFunc to_object, to_vec3;
 static GDExtensionObjectPtr engine_singleton;
 
 bool gd_api_load(GDExtensionInterfaceGetProcAddress get_proc, GDExtensionClassLibraryPtr lib) {
@@ -41,6 +42,7 @@ bool gd_api_load(GDExtensionInterfaceGetProcAddress get_proc, GDExtensionClassLi
 	LOAD(variant_new_nil);
 	LOAD(variant_destroy);
 	LOAD(variant_get_type);
+	LOAD(variant_get);
 	LOAD(variant_can_convert_strict);
 	LOAD(get_variant_from_type_constructor);
 	LOAD(get_variant_to_type_constructor);
@@ -86,6 +88,10 @@ bool gd_api_init_scene(void) {
 	from_sn = gd.get_variant_from_type_constructor(GDEXTENSION_VARIANT_TYPE_STRING_NAME);
 	from_object = gd.get_variant_from_type_constructor(GDEXTENSION_VARIANT_TYPE_OBJECT);
 	to_object = gd.get_variant_to_type_constructor(GDEXTENSION_VARIANT_TYPE_OBJECT);
+	from_bool = gd.get_variant_from_type_constructor(GDEXTENSION_VARIANT_TYPE_BOOL);
+	from_float = gd.get_variant_from_type_constructor(GDEXTENSION_VARIANT_TYPE_FLOAT);
+	from_vec3 = gd.get_variant_from_type_constructor(GDEXTENSION_VARIANT_TYPE_VECTOR3);
+	to_vec3 = gd.get_variant_to_type_constructor(GDEXTENSION_VARIANT_TYPE_VECTOR3);
 
 	for (int i = 0; i < GDB_COUNT_; i++) {
 		const smg_gd_bind_spec *s = &smg_gd_bind_specs[i];
@@ -208,6 +214,29 @@ void gd_packed_strings_push(gd_packed *a, const char *utf8) {
 void gd_variant_nil(gd_variant *v) { gd.variant_new_nil(v); }
 void gd_variant_destroy(gd_variant *v) { gd.variant_destroy(v); }
 void gd_variant_from_int(gd_variant *v, int64_t i) { from_int(v, &i); }
+void gd_variant_from_bool(gd_variant *v, bool b) {
+	GDExtensionBool x = b;
+	from_bool(v, &x);
+}
+void gd_variant_from_float(gd_variant *v, double f) { from_float(v, &f); }
+void gd_variant_from_vec3(gd_variant *v, gd_vec3 x) { from_vec3(v, &x); }
+bool gd_variant_to_vec3(const gd_variant *v, gd_vec3 *out) {
+	if (gd.variant_get_type(v) != GDEXTENSION_VARIANT_TYPE_VECTOR3) return false;
+	to_vec3(out, (GDExtensionVariantPtr)v);
+	return true;
+}
+bool gd_variant_get_key(const gd_variant *v, const char *key, gd_variant *out) {
+	gd_variant k;
+	GDExtensionBool valid = 0;
+	gd_variant_from_cstr(&k, key);
+	gd.variant_get(v, &k, out, &valid);
+	gd_variant_destroy(&k);
+	if (!valid) {
+		gd_variant_destroy(out);
+		gd_variant_nil(out);
+	}
+	return valid != 0;
+}
 void gd_variant_from_cstr(gd_variant *v, const char *utf8) {
 	gd_string s;
 	gd_str_init(&s, utf8);
@@ -236,11 +265,29 @@ GDExtensionObjectPtr gd_cast(GDExtensionConstObjectPtr obj, const char *class_na
 	gd_sn_init(&n, class_name);
 	void *tag = gd.classdb_get_class_tag(&n);
 	gd_sn_destroy(&n);
-	return tag ? gd.object_cast_to(obj, tag) : NULL;
+	if (!tag || !gd.object_cast_to(obj, tag)) return NULL;
+	/* An extension class's tag is its engine parent's (Godot gives
+	 * extension classes no tag of their own), so the cast alone takes any
+	 * Node3D for an SmgCharacter: ask the object itself, which knows its
+	 * extension class and script subclasses. */
+	gd_string s;
+	gd_str_init(&s, class_name);
+	GDExtensionBool is = 0;
+	const void *a[1] = { &s };
+	gd_call(GDB_Object_is_class, (GDExtensionObjectPtr)obj, a, &is);
+	gd_str_destroy(&s);
+	return is ? (GDExtensionObjectPtr)obj : NULL;
 }
 
 void gd_call(int bind, GDExtensionObjectPtr obj, const void *const *args, void *ret) {
 	gd.object_method_bind_ptrcall(gd_binds[bind], obj, (const GDExtensionConstTypePtr *)args, ret);
+}
+
+bool gd_call_variant(int bind, GDExtensionObjectPtr obj, const gd_variant *const *args, int argc, gd_variant *ret) {
+	GDExtensionCallError err;
+	memset(&err, 0, sizeof err);
+	gd.object_method_bind_call(gd_binds[bind], obj, (const GDExtensionConstVariantPtr *)args, argc, ret, &err);
+	return err.error == GDEXTENSION_CALL_OK;
 }
 
 void gd_emit(GDExtensionObjectPtr obj, const char *signal, const gd_variant *args, int argc) {

@@ -55,6 +55,7 @@ typedef struct gd_interface {
 	GDExtensionInterfaceVariantNewNil variant_new_nil;
 	GDExtensionInterfaceVariantDestroy variant_destroy;
 	GDExtensionInterfaceVariantGetType variant_get_type;
+	GDExtensionInterfaceVariantGet variant_get;
 	GDExtensionInterfaceVariantCanConvertStrict variant_can_convert_strict;
 	GDExtensionInterfaceGetVariantFromTypeConstructor get_variant_from_type_constructor;
 	GDExtensionInterfaceGetVariantToTypeConstructor get_variant_to_type_constructor;
@@ -128,6 +129,14 @@ void gd_variant_nil(gd_variant *v);
 void gd_variant_destroy(gd_variant *v);
 void gd_variant_from_int(gd_variant *v, int64_t i);
 void gd_variant_from_cstr(gd_variant *v, const char *utf8);
+void gd_variant_from_bool(gd_variant *v, bool b);
+void gd_variant_from_float(gd_variant *v, double f);
+void gd_variant_from_vec3(gd_variant *v, gd_vec3 x);
+/* false (and *out untouched) unless v holds a Vector3. */
+bool gd_variant_to_vec3(const gd_variant *v, gd_vec3 *out);
+/* v[key] (e.g. a Dictionary's entry) into *out, which the caller destroys;
+ * false and nil when there is none. */
+bool gd_variant_get_key(const gd_variant *v, const char *key, gd_variant *out);
 void gd_variant_from_sn(gd_variant *v, const gd_string_name *sn);
 void gd_variant_from_object(gd_variant *v, GDExtensionObjectPtr o);
 /* The object a Variant holds, or NULL (nil or another type). */
@@ -138,6 +147,11 @@ GDExtensionObjectPtr gd_variant_object(const gd_variant *v);
 GDExtensionObjectPtr gd_cast(GDExtensionConstObjectPtr obj, const char *class_name);
 /* ptrcall of an engine method bind (index into gd_binds). */
 void gd_call(int bind, GDExtensionObjectPtr obj, const void *const *args, void *ret);
+/* The Variant call of an engine method bind: Godot manages the reference
+ * counts of what goes in and out (Ref<> returns, Dictionaries). obj NULL
+ * for a static method; *ret is initialised and the caller destroys it.
+ * false: the call failed (wrong arguments). */
+bool gd_call_variant(int bind, GDExtensionObjectPtr obj, const gd_variant *const *args, int argc, gd_variant *ret);
 /* emit_signal(name, args...) on obj. */
 void gd_emit(GDExtensionObjectPtr obj, const char *signal, const gd_variant *args, int argc);
 GDExtensionObjectPtr gd_singleton(const char *name);

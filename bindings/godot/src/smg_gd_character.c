@@ -67,13 +67,25 @@ static const char *action_name(smg_gd_character *self, uint32_t a) {
 	return n ? n : "";
 }
 
+static bool in_tree(smg_gd_character *self) {
+	GDExtensionBool r = 0;
+	gd_call(GDB_Node_is_inside_tree, self->owner, NULL, &r);
+	return r != 0;
+}
+
 bool smg_gd_character_ensure(smg_gd_character *self) {
 	smg_gd_blob *b = current_blob(self);
 	if (b == self->blob && self->ch) return true;
 	teardown(self);
 	if (!b) return false;
 
+	/* libsmg's space: the parent's (the node moves in it) or, with the
+	 * engine's mover, global space */
 	gd_transform3d t = get_xform(self);
+	if (self->root_motion_mode == SMG_GD_ENGINE_MOVER) {
+		if (!in_tree(self)) return false; /* no global transform yet */
+		gd_call(GDB_Node3D_get_global_transform, self->owner, NULL, &t);
+	}
 	smg_graph_info info;
 	memset(&info, 0, sizeof info);
 	info.struct_size = sizeof info;
@@ -105,11 +117,18 @@ bool smg_gd_character_ensure(smg_gd_character *self) {
 		return false;
 	}
 	self->blob = smg_gd_blob_retain(b);
+	self->ground_given = false;
+	if (self->root_motion_mode == SMG_GD_ENGINE_MOVER && t.origin[1] != 0.0f) {
+		/* start on the mover's floor, not at y = 0 */
+		float p[3] = { t.origin[0], t.origin[1], t.origin[2] };
+		smg_character_set_ground_position(self->ch, p, heading_of(&t));
+	}
 	if (!smg_gd_bone_map_init(&self->bones, b->joint_count)) {
 		GD_ERR("SmgCharacter: out of memory");
 		teardown(self);
 		return false;
 	}
+	self->bones.bone_map = &self->bone_map_var;
 	/* Replay what the user gave the previous character. */
 	smg_gd_mirror_replay(&self->mirror, self->ch);
 	smg_character_state st;
@@ -118,7 +137,6 @@ bool smg_gd_character_ensure(smg_gd_character *self) {
 	if (smg_character_get_state(self->ch, &st) == SMG_OK) {
 		self->last_style = st.style;
 		self->last_action = st.action;
-		self->end_reached = (st.flags & SMG_STATE_PATH_END_REACHED) != 0;
 	}
 	return true;
 }
@@ -129,6 +147,8 @@ bool smg_gd_character_need(smg_gd_character *self, const char *what) {
 		GD_ERR("SmgCharacter.%s: no graph set (assign an SmgGraph to the 'graph' property first)", what);
 	else if (!current_blob(self))
 		GD_ERR("SmgCharacter.%s: the SmgGraph has no graph loaded", what);
+	else if (self->root_motion_mode == SMG_GD_ENGINE_MOVER && !in_tree(self))
+		GD_ERR("SmgCharacter.%s: in engine-mover mode the node must be in the scene tree first", what);
 	return false;
 }
 
@@ -145,9 +165,29 @@ static uint64_t process_frame(void) {
  * the skeleton's modifier stage (it did so in the last two frames). The
  * skeleton is looked up every frame, never kept as a pointer, so freeing
  * or replacing it is safe. */
+/* An active SmgSkeletonModifier under skel: it applies the pose, from the
+ * first frame on (a pose written here would stay under its mask). */
+static bool has_modifier(GDExtensionObjectPtr skel) {
+	int64_t count = 0;
+	GDExtensionBool internal = 0;
+	const void *ca[1] = { &internal };
+	gd_call(GDB_Node_get_child_count, skel, ca, &count);
+	for (int64_t i = 0; i < count; i++) {
+		GDExtensionObjectPtr c = NULL;
+		const void *a[2] = { &i, &internal };
+		gd_call(GDB_Node_get_child, skel, a, &c);
+		GDExtensionObjectPtr m = gd_cast(c, "SmgSkeletonModifier");
+		GDExtensionBool active = 0;
+		if (m) gd_call(GDB_SkeletonModifier3D_is_active, m, NULL, &active);
+		if (active) return true;
+	}
+	return false;
+}
+
 static void write_pose(smg_gd_character *self) {
 	if (self->modifier_frame && self->modifier_frame + 2 >= process_frame()) return;
 	GDExtensionObjectPtr skel = smg_gd_find_skeleton(self->owner, &self->skeleton_path);
+	if (skel && has_modifier(skel)) return;
 	if (!skel) {
 		if (!self->warned_skeleton) {
 			self->warned_skeleton = true;
@@ -157,15 +197,16 @@ static void write_pose(smg_gd_character *self) {
 		return;
 	}
 	self->warned_skeleton = false;
-	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel);
+	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel, NULL);
 }
 
-bool smg_gd_character_apply_pose(GDExtensionObjectPtr character, GDExtensionObjectPtr skel) {
+bool smg_gd_character_apply_pose(GDExtensionObjectPtr character, GDExtensionObjectPtr skel,
+	const smg_gd_mask *mask) {
 	smg_gd_character *self = gd_object_self(character, CLASS);
 	if (!self || !skel) return false;
 	self->modifier_frame = process_frame();
 	if (!smg_gd_character_ensure(self)) return false;
-	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel);
+	smg_gd_bone_map_write_pose(&self->bones, self->blob->graph, self->ch, skel, mask);
 	return true;
 }
 
@@ -178,9 +219,13 @@ int64_t smg_gd_character_step(smg_gd_character *self, double dt) {
 	if (!smg_gd_character_ensure(self)) return GD_ERR_UNCONFIGURED;
 	if (!(dt >= 0.0)) dt = 0.0; /* also NaN */
 	smg_result r = SMG_OK;
+	self->event_count = 0;
+	memset(self->root_motion, 0, sizeof self->root_motion);
 	while (dt > 0.0 && r == SMG_OK) {
 		double d = dt > MAX_STEP ? MAX_STEP : dt;
+		smg_gd_character_probe_ground(self);
 		r = smg_character_step(self->ch, (float)d);
+		if (r == SMG_OK) smg_gd_character_collect(self);
 		dt -= d;
 	}
 	if (r != SMG_OK) {
@@ -194,20 +239,21 @@ int64_t smg_gd_character_step(smg_gd_character *self, double dt) {
 	st.struct_size = sizeof st;
 	if (smg_character_get_state(self->ch, &st) != SMG_OK) return GD_FAILED;
 
-	gd_transform3d t = get_xform(self);
-	float c = cosf(st.heading), s = sinf(st.heading);
-	gd_transform3d nt = { { { c, 0, s }, { 0, 1, 0 }, { -s, 0, c } }, { st.position[0], t.origin[1], st.position[2] } };
-	const void *ta[1] = { &nt };
-	gd_call(GDB_Node3D_set_transform, self->owner, ta, NULL);
+	if (self->root_motion_mode == SMG_GD_MOVE_NODE) {
+		/* the node's height: its own, or the ground's once heights are given */
+		gd_transform3d t = get_xform(self);
+		float c = cosf(st.heading), s = sinf(st.heading);
+		float y = self->ground_given ? st.position[1] : t.origin[1];
+		gd_transform3d nt = { { { c, 0, s }, { 0, 1, 0 }, { -s, 0, c } }, { st.position[0], y, st.position[2] } };
+		const void *ta[1] = { &nt };
+		gd_call(GDB_Node3D_set_transform, self->owner, ta, NULL);
+	}
 	write_pose(self);
 
 	bool style_changed = st.style != self->last_style;
 	bool action_changed = st.action != self->last_action;
-	bool end = (st.flags & SMG_STATE_PATH_END_REACHED) != 0;
-	bool end_now = end && !self->end_reached;
 	self->last_style = st.style;
 	self->last_action = st.action;
-	self->end_reached = end;
 
 	GDExtensionObjectPtr owner = self->owner;
 	GDObjectInstanceID oid = gd.object_get_instance_id(owner);
@@ -228,7 +274,7 @@ int64_t smg_gd_character_step(smg_gd_character *self, double dt) {
 		gd_variant_destroy(&a[0]);
 		gd_variant_destroy(&a[1]);
 	}
-	if (end_now && gd.object_get_instance_from_id(oid)) gd_emit(owner, "path_end_reached", NULL, 0);
+	if (gd.object_get_instance_from_id(oid)) smg_gd_character_emit_events(self, oid);
 	return GD_OK;
 }
 
@@ -255,11 +301,13 @@ static GDExtensionObjectPtr create(void *ud, GDExtensionBool notify) {
 	smg_gd_character *self = calloc(1, sizeof *self);
 	if (!self) return NULL;
 	gd_variant_nil(&self->graph_var);
+	gd_variant_nil(&self->bone_map_var);
 	gd_node_path_init(&self->skeleton_path, "");
 	self->threshold = 0.25;
 	self->ik = true;
 	self->steering = true;
 	self->active = true;
+	self->ground_mask = 0xFFFFFFFF;
 	self->owner = gd_object_create("Node3D", CLASS, self, notify);
 	if (!self->owner) {
 		gd_node_path_destroy(&self->skeleton_path);
@@ -274,8 +322,10 @@ static void destroy(void *ud, GDExtensionClassInstancePtr inst) {
 	smg_gd_character *self = inst;
 	teardown(self);                       /* character, then its graph ref */
 	gd_variant_destroy(&self->graph_var); /* then the resource itself */
+	gd_variant_destroy(&self->bone_map_var);
 	gd_node_path_destroy(&self->skeleton_path);
 	smg_gd_mirror_free(&self->mirror);
+	free(self->events);
 	free(self);
 }
 

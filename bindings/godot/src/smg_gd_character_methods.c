@@ -45,6 +45,25 @@ static void m_get_skeleton(void *vself, const gd_value *a, gd_value *r) {
 	gd_node_path_copy(&r->np, &self->skeleton_path);
 }
 
+static void m_set_bone_map(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	if (a[0].o && !gd_cast(a[0].o, "BoneMap")) {
+		GD_ERR("SmgCharacter.bone_map: expected a BoneMap");
+		return;
+	}
+	gd_variant_destroy(&self->bone_map_var);
+	gd_variant_from_object(&self->bone_map_var, a[0].o);
+	smg_gd_bone_map_invalidate(&self->bones);
+	self->bones.warned = false;
+}
+
+static void m_get_bone_map(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	r->o = gd_variant_object(&self->bone_map_var);
+}
+
 static void m_set_style(void *vself, const gd_value *a, gd_value *r) {
 	SELF;
 	(void)r;
@@ -243,9 +262,7 @@ static int64_t set_path_points(smg_gd_character *self, const gd_packed *pts, con
 		return GD_ERR_INVALID_PARAMETER;
 	}
 	if (!smg_gd_character_need(self, what)) return GD_ERR_UNCONFIGURED;
-	int64_t err = smg_gd_mirror_set_path(&self->mirror, self->ch, pts, what);
-	if (err == GD_OK) self->end_reached = false;
-	return err;
+	return smg_gd_mirror_set_path(&self->mirror, self->ch, pts, what);
 }
 
 static void m_set_path(void *vself, const gd_value *a, gd_value *r) {
@@ -278,7 +295,6 @@ static void m_append_path_points(void *vself, const gd_value *a, gd_value *r) {
 		return;
 	}
 	r->i = smg_gd_mirror_append_path(&self->mirror, self->ch, &a[0].pa);
-	if (r->i == GD_OK) self->end_reached = false;
 }
 
 static void m_clear_path(void *vself, const gd_value *a, gd_value *r) {
@@ -400,6 +416,8 @@ static const gd_method methods[] = {
 	{ "get_graph", m_get_graph, GT_REF, "SmgGraph", 0, { { 0 } }, 1 },
 	{ "set_skeleton", m_set_skeleton, GT_NIL, NULL, 1, { { "path", GT_NODE_PATH, NULL } }, 0 },
 	{ "get_skeleton", m_get_skeleton, GT_NODE_PATH, NULL, 0, { { 0 } }, 1 },
+	{ "set_bone_map", m_set_bone_map, GT_NIL, NULL, 1, { { "bone_map", GT_REF, "BoneMap" } }, 0 },
+	{ "get_bone_map", m_get_bone_map, GT_REF, "BoneMap", 0, { { 0 } }, 1 },
 	{ "set_style", m_set_style, GT_NIL, NULL, 1, { { "style", GT_INT, NULL } }, 0 },
 	{ "get_style", m_get_style, GT_INT, NULL, 0, { { 0 } }, 1 },
 	{ "set_action", m_set_action, GT_NIL, NULL, 1, { { "action", GT_INT, NULL } }, 0 },
@@ -444,12 +462,15 @@ static const gd_method methods[] = {
 
 void smg_gd_character_register_methods(void) {
 	gd_register_methods(CLASS, methods, (int)(sizeof methods / sizeof methods[0]));
+	smg_gd_character_register_scene_methods();
 
 	gd_arg p_graph = { "graph", GT_REF, "SmgGraph" };
 	gd_register_property(CLASS, &p_graph, GD_PROPERTY_HINT_RESOURCE_TYPE, "SmgGraph", "set_graph", "get_graph");
 	gd_arg p_skel = { "skeleton", GT_NODE_PATH, NULL };
 	gd_register_property(CLASS, &p_skel, GD_PROPERTY_HINT_NODE_PATH_VALID_TYPES, "Skeleton3D", "set_skeleton",
 		"get_skeleton");
+	gd_arg p_bmap = { "bone_map", GT_REF, "BoneMap" };
+	gd_register_property(CLASS, &p_bmap, GD_PROPERTY_HINT_RESOURCE_TYPE, "BoneMap", "set_bone_map", "get_bone_map");
 	gd_arg p_style = { "style", GT_INT, NULL };
 	gd_register_property(CLASS, &p_style, GD_PROPERTY_HINT_RANGE, "0,15,1,or_greater", "set_style", "get_style");
 	gd_arg p_action = { "action", GT_INT, NULL };

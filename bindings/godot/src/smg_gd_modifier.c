@@ -6,7 +6,12 @@
  * serves it, it stops writing bone poses directly, so the pose blends with
  * `influence` and other modifiers (look-at, IK, ...) that come after it. Like
  * every SkeletonModifier3D result, the pose is transient: read it with
- * Skeleton3D.get_bone_pose*() from the modification_processed signal. */
+ * Skeleton3D.get_bone_pose*() from the modification_processed signal.
+ *
+ * The mask: per body part (root, lower, upper: smg_joint_info.body_part)
+ * and per bone, how much of libsmg's pose a bone takes; the rest stays as
+ * the skeleton had it before this modifier ran, i.e. the AnimationTree's
+ * (AnimationMixer) pose, which Godot applies before the modifier stage. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +24,7 @@
 typedef struct smg_gd_modifier {
 	GDExtensionObjectPtr owner;
 	gd_node_path character_path;
+	smg_gd_mask mask;
 	bool warned;
 } smg_gd_modifier;
 
@@ -53,7 +59,7 @@ static void apply(smg_gd_modifier *self) {
 		return;
 	}
 	self->warned = false;
-	smg_gd_character_apply_pose(ch, skel);
+	smg_gd_character_apply_pose(ch, skel, &self->mask);
 }
 
 static void virt_process_with_delta(GDExtensionClassInstancePtr inst, const GDExtensionConstTypePtr *args,
@@ -99,9 +105,96 @@ static void m_get_character(void *vself, const gd_value *a, gd_value *r) {
 	gd_node_path_copy(&r->np, &self->character_path);
 }
 
+/* ---- the mask: body-part weights and per-bone weights ---- */
+
+static bool weight_ok(double w, const char *what) {
+	if (w >= 0.0 && w <= 1.0) return true;
+	GD_ERR("SmgSkeletonModifier.%s: weight must be in [0, 1] (got %g)", what, w);
+	return false;
+}
+
+#define PART_WEIGHT(which, setter, getter, name)                                  \
+	static void setter(void *vself, const gd_value *a, gd_value *r) {              \
+		SELF;                                                                      \
+		(void)r;                                                                   \
+		if (weight_ok(a[0].f, name)) self->mask.part[which] = (float)a[0].f;       \
+	}                                                                              \
+	static void getter(void *vself, const gd_value *a, gd_value *r) {              \
+		SELF;                                                                      \
+		(void)a;                                                                   \
+		r->f = self->mask.part[which];                                             \
+	}
+PART_WEIGHT(SMG_BODY_ROOT, m_set_root_weight, m_get_root_weight, "root_weight")
+PART_WEIGHT(SMG_BODY_LOWER, m_set_lower_body_weight, m_get_lower_body_weight, "lower_body_weight")
+PART_WEIGHT(SMG_BODY_UPPER, m_set_upper_body_weight, m_get_upper_body_weight, "upper_body_weight")
+
+static int64_t find_override(const smg_gd_mask *m, const char *bone) {
+	for (uint32_t k = 0; k < m->count; k++)
+		if (!strcmp(m->bones[k], bone)) return k;
+	return -1;
+}
+
+static void m_set_bone_weight(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)r;
+	char bone[256];
+	gd_str_to_c(&a[0].s, bone, sizeof bone);
+	if (!bone[0] || !weight_ok(a[1].f, "set_bone_weight")) return;
+	int64_t k = find_override(&self->mask, bone);
+	if (k < 0) {
+		uint32_t n = self->mask.count + 1;
+		char **names = realloc(self->mask.bones, n * sizeof *names);
+		if (names) self->mask.bones = names;
+		float *w = realloc(self->mask.weights, n * sizeof *w);
+		if (w) self->mask.weights = w;
+		char *copy = names && w ? strdup(bone) : NULL;
+		if (!copy) {
+			GD_ERR("SmgSkeletonModifier.set_bone_weight: out of memory");
+			return;
+		}
+		k = self->mask.count++;
+		self->mask.bones[k] = copy;
+	}
+	self->mask.weights[k] = (float)a[1].f;
+}
+
+static void m_get_bone_weight(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	char bone[256];
+	gd_str_to_c(&a[0].s, bone, sizeof bone);
+	int64_t k = find_override(&self->mask, bone);
+	r->f = k >= 0 ? self->mask.weights[k] : -1.0;
+}
+
+static void clear_overrides(smg_gd_mask *m) {
+	for (uint32_t k = 0; k < m->count; k++) free(m->bones[k]);
+	free(m->bones);
+	free(m->weights);
+	m->bones = NULL;
+	m->weights = NULL;
+	m->count = 0;
+}
+
+static void m_clear_bone_weights(void *vself, const gd_value *a, gd_value *r) {
+	SELF;
+	(void)a;
+	(void)r;
+	clear_overrides(&self->mask);
+}
+
 static const gd_method methods[] = {
 	{ "set_character", m_set_character, GT_NIL, NULL, 1, { { "path", GT_NODE_PATH, NULL } }, 0 },
 	{ "get_character", m_get_character, GT_NODE_PATH, NULL, 0, { { 0 } }, 1 },
+	{ "set_root_weight", m_set_root_weight, GT_NIL, NULL, 1, { { "weight", GT_FLOAT, NULL } }, 0 },
+	{ "get_root_weight", m_get_root_weight, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_lower_body_weight", m_set_lower_body_weight, GT_NIL, NULL, 1, { { "weight", GT_FLOAT, NULL } }, 0 },
+	{ "get_lower_body_weight", m_get_lower_body_weight, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_upper_body_weight", m_set_upper_body_weight, GT_NIL, NULL, 1, { { "weight", GT_FLOAT, NULL } }, 0 },
+	{ "get_upper_body_weight", m_get_upper_body_weight, GT_FLOAT, NULL, 0, { { 0 } }, 1 },
+	{ "set_bone_weight", m_set_bone_weight, GT_NIL, NULL, 2,
+	  { { "bone", GT_STRING, NULL }, { "weight", GT_FLOAT, NULL } }, 0 },
+	{ "get_bone_weight", m_get_bone_weight, GT_FLOAT, NULL, 1, { { "bone", GT_STRING, NULL } }, 1 },
+	{ "clear_bone_weights", m_clear_bone_weights, GT_NIL, NULL, 0, { { 0 } }, 0 },
 };
 
 static GDExtensionObjectPtr create(void *ud, GDExtensionBool notify) {
@@ -109,6 +202,7 @@ static GDExtensionObjectPtr create(void *ud, GDExtensionBool notify) {
 	smg_gd_modifier *self = calloc(1, sizeof *self);
 	if (!self) return NULL;
 	gd_node_path_init(&self->character_path, "");
+	self->mask.part[SMG_BODY_ROOT] = self->mask.part[SMG_BODY_LOWER] = self->mask.part[SMG_BODY_UPPER] = 1.0f;
 	self->owner = gd_object_create("SkeletonModifier3D", CLASS, self, notify);
 	if (!self->owner) {
 		gd_node_path_destroy(&self->character_path);
@@ -122,6 +216,7 @@ static void destroy(void *ud, GDExtensionClassInstancePtr inst) {
 	(void)ud;
 	smg_gd_modifier *self = inst;
 	gd_node_path_destroy(&self->character_path);
+	clear_overrides(&self->mask);
 	free(self);
 }
 
@@ -133,6 +228,13 @@ void smg_gd_modifier_register(void) {
 	gd_arg p_char = { "character", GT_NODE_PATH, NULL };
 	gd_register_property(CLASS, &p_char, GD_PROPERTY_HINT_NODE_PATH_VALID_TYPES, "SmgCharacter", "set_character",
 		"get_character");
+	static const char *const parts[3][3] = { { "root_weight", "set_root_weight", "get_root_weight" },
+		{ "lower_body_weight", "set_lower_body_weight", "get_lower_body_weight" },
+		{ "upper_body_weight", "set_upper_body_weight", "get_upper_body_weight" } };
+	for (int i = 0; i < 3; i++) {
+		gd_arg p = { parts[i][0], GT_FLOAT, NULL };
+		gd_register_property(CLASS, &p, GD_PROPERTY_HINT_RANGE, "0,1,0.01", parts[i][1], parts[i][2]);
+	}
 }
 
 void smg_gd_modifier_unregister(void) {

@@ -70,7 +70,7 @@ func run() -> void:
 	root.add_child(main)
 	await process_frame
 	await process_frame
-	var c: SmgCharacter = main.get_node("Character")
+	var c: SmgCharacter = main.get_node("Body/Character")
 	var cam: Camera3D = main.get_node("Camera3D")
 	check(c.graph != null and c.graph.is_loaded() and c.get_child_count() > 0,
 		"demo loaded the graph and built the skeleton")
@@ -110,12 +110,12 @@ func run() -> void:
 
 	var actions: Array = []
 	c.action_changed.connect(func(a, _n): actions.append(a))
-	var start := c.position
+	var start := c.global_position
 	var worst := 0.0
 	for i in 150:
 		await process_frame
 		if not c.is_path_end_reached():     # afterwards it walks on: not path following
 			worst = max(worst, c.get_path_error())
-	check(c.position.distance_to(start) > 2.0, "character walks the drawn path (%.2f m)" % c.position.distance_to(start))
+	check(c.global_position.distance_to(start) > 2.0, "character walks the drawn path (%.2f m)" % c.global_position.distance_to(start))
 	check(worst < 1.0, "character stays on the drawn path (at most %.2f m off)" % worst)
 	check(actions.size() > 0, "the splice point changed the action: %s" % [actions])

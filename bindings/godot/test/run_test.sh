@@ -57,6 +57,20 @@ sh "$HERE/check_log.sh" "$LOG_ABS"
 # into a Skeleton3D with its own bone axes and compared with smg-synth
 # (test_rig.gd). SMG_RIG_GRAPH / SMG_RIG_REF: the graph and the reference
 # positions (bvh_positions.py output); skipped when not given.
+SCENE_LOG=$(echo "$LOG_ABS" | sed 's/\.log$//')-scene.log
+echo "== godot game scene test ($SCENE_LOG)"
+set +e
+(cd "$PROJ" && env ${GODOT_PRELOAD:+LD_PRELOAD=$GODOT_PRELOAD} timeout "$TMO" $GD --headless --fixed-fps 30 \
+	--audio-driver Dummy --path . --script res://test_scene.gd > "$SCENE_LOG" 2>&1)
+set -e
+grep -E '^(PASS|FAIL|scene:)' "$SCENE_LOG" || true
+planned=$(sed -n 's/^const PLANNED := \([0-9]*\).*/\1/p' "$HERE/test_scene.gd")
+if ! grep -qx "scene: $planned passed, 0 failed" "$SCENE_LOG" || grep -qE 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$SCENE_LOG"; then
+	echo "test-godot: game scene test failed, see $SCENE_LOG" >&2
+	grep -E -A3 'SCRIPT ERROR|Program crashed|AddressSanitizer' "$SCENE_LOG" | head -20 >&2
+	exit 1
+fi
+
 if [ -n "${SMG_RIG_GRAPH:-}" ]; then
 	RIG_LOG=$(echo "$LOG_ABS" | sed 's/\.log$//')-rig.log
 	cp "$SMG_RIG_GRAPH" "$PROJ/rig.smg"

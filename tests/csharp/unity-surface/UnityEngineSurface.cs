@@ -27,6 +27,91 @@ namespace UnityEngine
     public class Behaviour : Component
     {
         public extern bool enabled { get; set; }
+        public extern bool isActiveAndEnabled { get; }
+    }
+
+    public class Collider : Component
+    {
+        public extern bool enabled { get; set; }
+    }
+
+    [Flags]
+    public enum CollisionFlags
+    {
+        None = 0,
+        Sides = 1,
+        Above = 2,
+        Below = 4,
+    }
+
+    public class CharacterController : Collider
+    {
+        public extern CollisionFlags Move(Vector3 motion);
+        public extern bool isGrounded { get; }
+    }
+
+    public class Animator : Behaviour
+    {
+        public extern bool applyRootMotion { get; set; }
+        public extern bool isHuman { get; }
+        public extern Transform GetBoneTransform(HumanBodyBones humanBoneId);
+        public extern void ApplyBuiltinRootMotion();
+    }
+
+    public enum HumanBodyBones
+    {
+        Hips = 0,
+        LeftUpperLeg = 1,
+        RightUpperLeg = 2,
+        LeftLowerLeg = 3,
+        RightLowerLeg = 4,
+        LeftFoot = 5,
+        RightFoot = 6,
+        Spine = 7,
+        Chest = 8,
+        Neck = 9,
+        Head = 10,
+        LeftShoulder = 11,
+        RightShoulder = 12,
+        LeftUpperArm = 13,
+        RightUpperArm = 14,
+        LeftLowerArm = 15,
+        RightLowerArm = 16,
+        LeftHand = 17,
+        RightHand = 18,
+        LeftToes = 19,
+        RightToes = 20,
+        LeftEye = 21,
+        RightEye = 22,
+        Jaw = 23,
+        UpperChest = 54,
+        LastBone = 55,
+    }
+
+    public struct LayerMask
+    {
+        public static extern implicit operator int(LayerMask mask);
+        public static extern implicit operator LayerMask(int intVal);
+    }
+
+    public enum QueryTriggerInteraction
+    {
+        UseGlobal = 0,
+        Ignore = 1,
+        Collide = 2,
+    }
+
+    public struct RaycastHit
+    {
+        public extern Vector3 point { get; set; }
+        public extern Collider collider { get; }
+    }
+
+    public class Physics
+    {
+        public static extern Vector3 gravity { get; set; }
+        public static extern int RaycastNonAlloc(Ray ray, RaycastHit[] results, float maxDistance, int layerMask,
+                                                 QueryTriggerInteraction queryTriggerInteraction);
     }
 
     public class MonoBehaviour : Behaviour
@@ -52,6 +137,9 @@ namespace UnityEngine
         public extern Vector3 eulerAngles { get; set; }
         public extern void SetPositionAndRotation(Vector3 position, Quaternion rotation);
         public extern Vector3 TransformPoint(Vector3 position);
+        public extern Vector3 InverseTransformPoint(Vector3 position);
+        public extern Transform parent { get; set; }
+        public extern bool IsChildOf(Transform parent);
     }
 
     public class TextAsset : Object
@@ -134,6 +222,8 @@ namespace UnityEngine
         public static extern Vector3 Lerp(Vector3 a, Vector3 b, float t);
         public static extern float Distance(Vector3 a, Vector3 b);
         public static extern Vector3 up { get; }
+        public static extern Vector3 down { get; }
+        public static extern Vector3 zero { get; }
         public static extern Vector3 right { get; }
         public extern float magnitude { get; }
         public extern Vector3 normalized { get; }
@@ -150,6 +240,7 @@ namespace UnityEngine
         public static extern Quaternion identity { get; }
         public static extern Quaternion Inverse(Quaternion rotation);
         public static extern Quaternion Euler(float x, float y, float z);
+        public static extern Quaternion Slerp(Quaternion a, Quaternion b, float t);
         public static extern Quaternion operator *(Quaternion lhs, Quaternion rhs);
     }
 
@@ -161,6 +252,7 @@ namespace UnityEngine
 
     public struct Ray
     {
+        public extern Ray(Vector3 origin, Vector3 direction);
         public extern Vector3 GetPoint(float distance);
     }
 
@@ -241,6 +333,12 @@ namespace UnityEngine
     public class HeaderAttribute : Attribute
     {
         public extern HeaderAttribute(string header);
+    }
+
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
+    public sealed class RangeAttribute : Attribute
+    {
+        public extern RangeAttribute(float min, float max);
     }
 
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)]

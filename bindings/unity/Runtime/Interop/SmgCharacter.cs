@@ -234,5 +234,70 @@ namespace Smg
                 SmgException.Check(SmgNative.smg_character_get_model_matrices(this, space, m, (uint)(matrices.Length / 16)),
                                    "smg_character_get_model_matrices");
         }
+
+        // --- Ground and the engine's mover, before or after the step ---
+
+        /// <summary>Where to measure the ground for the next step: 6 floats,
+        /// (x, z) of the left foot, right foot and root probes.</summary>
+        public void GetGroundProbes(Span<float> xz)
+        {
+            if (xz.Length != 6)
+                throw new ArgumentException("3 probes of (x, z): 6 floats", nameof(xz));
+            fixed (float* p = &MemoryMarshal.GetReference(xz))
+                SmgException.Check(SmgNative.smg_character_get_ground_probes(this, p, 3), "smg_character_get_ground_probes");
+        }
+
+        /// <summary>The ground heights measured at the probes, for the next
+        /// steps (ground.StructSize 0 is taken as SmgGround.Size).</summary>
+        public void SetGround(SmgGround ground)
+        {
+            if (ground.StructSize == 0)
+                ground.StructSize = SmgGround.Size;
+            SmgException.Check(SmgNative.smg_character_set_ground(this, &ground), "smg_character_set_ground");
+        }
+
+        /// <summary>The flat floor at y = 0 again (the default).</summary>
+        public void ClearGround()
+        {
+            SmgException.Check(SmgNative.smg_character_set_ground(this, null), "smg_character_set_ground");
+        }
+
+        /// <summary>Where the engine's mover put the character after the
+        /// last step: ground position (y: the floor there) and heading. The
+        /// character moves rigidly, its pose does not pop.</summary>
+        public void SetGroundPosition(SmgFloat3 position, float heading)
+        {
+            SmgException.Check(SmgNative.smg_character_set_ground_position(this, &position.X, heading),
+                               "smg_character_set_ground_position");
+        }
+
+        /// <summary>The ground position's displacement over the last step.</summary>
+        public SmgRootMotion RootMotion
+        {
+            get
+            {
+                SmgRootMotion m = SmgRootMotion.Create();
+                SmgException.Check(SmgNative.smg_character_get_root_motion(this, &m), "smg_character_get_root_motion");
+                return m;
+            }
+        }
+
+        /// <summary>The events of the last step, in order, into `events`
+        /// (never more than ConstraintCapacity + 5); returns how many. Too
+        /// small a span throws SmgException (BufferTooSmall).</summary>
+        public int GetEvents(Span<SmgEvent> events)
+        {
+            uint count;
+            if (events.Length == 0)
+            {
+                SmgException.Check(SmgNative.smg_character_get_events(this, null, 0, out count), "smg_character_get_events");
+                return (int)count;
+            }
+            events[0].StructSize = SmgEvent.Size;
+            fixed (SmgEvent* e = &MemoryMarshal.GetReference(events))
+                SmgException.Check(SmgNative.smg_character_get_events(this, e, (uint)events.Length, out count),
+                                   "smg_character_get_events");
+            return (int)count;
+        }
     }
 }

@@ -83,4 +83,22 @@ namespace Smg
         Warning = 2,
         Info = 3,
     }
+
+    /// <summary>smg_event.type (SMG_EVENT_CONSTRAINT, _FOOTSTEP, _PATH_END).</summary>
+    public enum SmgEventType : uint
+    {
+        Constraint = 1,
+        Footstep = 2,
+        PathEnd = 3,
+    }
+
+    /// <summary>smg_event.flags of a constraint event.</summary>
+    [Flags]
+    public enum SmgEventFlags : uint
+    {
+        None = 0,
+        Splice = 1,
+        Superseded = 2,
+        Unchanged = 4,
+    }
 }

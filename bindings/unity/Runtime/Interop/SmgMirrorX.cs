@@ -56,5 +56,30 @@ namespace Smg
         {
             return -yawDegrees * (float)(Math.PI / 180.0);
         }
+
+        /// <summary>A point or displacement in the other frame (the same
+        /// map both ways): (x, y, z) -> (-x, y, z).</summary>
+        public static SmgFloat3 Point(SmgFloat3 p)
+        {
+            return new SmgFloat3(-p.X, p.Y, p.Z);
+        }
+
+        /// <summary>The root motion of the last step for a mover in the
+        /// mirrored frame: the world displacement (metres) and the change
+        /// of yaw about +Y in degrees (Unity's eulerAngles.y).</summary>
+        public static void RootMotion(in SmgRootMotion motion, out SmgFloat3 displacement, out float yawDegrees)
+        {
+            displacement = Point(motion.Translation);
+            yawDegrees = HeadingToYawDegrees(motion.Yaw);
+        }
+
+        /// <summary>Tells `character` where the mover put it: a position in
+        /// the mirrored frame (y: the floor there) and a yaw in degrees.</summary>
+        public static void SetGroundPosition(SmgCharacter character, SmgFloat3 position, float yawDegrees)
+        {
+            if (character == null)
+                throw new ArgumentNullException(nameof(character));
+            character.SetGroundPosition(Point(position), YawDegreesToHeading(yawDegrees));
+        }
     }
 }

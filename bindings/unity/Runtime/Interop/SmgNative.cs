@@ -138,20 +138,6 @@ namespace Smg
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_set_swing_clearance(SmgCharacter character, uint enabled, float clearance);
 
-        // events (smg_character_get_events): types and flags
-        public const uint EventConstraint = 1;
-        public const uint EventFootstep = 2;
-        public const uint EventPathEnd = 3;
-        public const uint EventSplice = 1;
-        public const uint EventSuperseded = 2;
-        public const uint EventUnchanged = 4;
-
-        [DllImport(Library, CallingConvention = Cdecl)]
-        public static extern SmgResult smg_character_get_events(SmgCharacter character, SmgEvent* events, uint capacity, uint* count);
-
-        [DllImport(Library, CallingConvention = Cdecl)]
-        public static extern SmgResult smg_character_get_root_motion(SmgCharacter character, SmgRootMotion* motion);
-
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_set_ground_position(SmgCharacter character, float* position, float heading);
 
@@ -172,5 +158,13 @@ namespace Smg
 
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern SmgResult smg_character_get_model_matrices(SmgCharacter character, SmgSpace space, float* matrices, uint jointCount);
+
+        // --- After the step: events and root motion ---
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_get_events(SmgCharacter character, SmgEvent* events, uint capacity, out uint outCount);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern SmgResult smg_character_get_root_motion(SmgCharacter character, SmgRootMotion* outMotion);
     }
 }

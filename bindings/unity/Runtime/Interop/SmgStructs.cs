@@ -174,6 +174,12 @@ namespace Smg
     public struct SmgFloat2
     {
         public float X, Y;
+
+        public SmgFloat2(float x, float y)
+        {
+            X = x;
+            Y = y;
+        }
     }
 
     /// <summary>smg_event: one entry of smg_character_get_events.</summary>
@@ -181,11 +187,17 @@ namespace Smg
     public struct SmgEvent
     {
         public uint StructSize;
-        public uint Type;
+        public SmgEventType Type;
+        /// <summary>Constraint: the id AddTransition/AddSplice returned (0:
+        /// a change no constraint asked for). Footstep: 0 left, 1 right.</summary>
         public uint Id;
+        /// <summary>Constraint: its style or action.</summary>
         public uint Value;
-        public uint Flags;
+        public SmgEventFlags Flags;
+        /// <summary>Footstep: the toe where it landed (world); others: the
+        /// character's ground position.</summary>
         public SmgFloat3 Position;
+        /// <summary>Footstep: the toe's downward speed as it landed, m/s.</summary>
         public float Strength;
         public float ArcLength;
         public uint Reserved0;
@@ -194,7 +206,8 @@ namespace Smg
         public static readonly uint Size = (uint)Marshal.SizeOf(typeof(SmgEvent));
     }
 
-    /// <summary>smg_root_motion.</summary>
+    /// <summary>smg_root_motion: the ground position's displacement over
+    /// the last step.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct SmgRootMotion
     {
@@ -213,8 +226,8 @@ namespace Smg
         }
     }
 
-    /// <summary>smg_ground: heights at the probes of
-    /// smg_character_get_ground_probes.</summary>
+    /// <summary>smg_ground: ground heights at the probes of
+    /// smg_character_get_ground_probes (left foot, right foot, root).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct SmgGround
     {

@@ -1,21 +1,20 @@
 // A character that follows a path with libsmg: loads a graph (a TextAsset
 // or a file in StreamingAssets, shared through SmgGraphCache), steps one
-// SmgCharacter per frame, moves the GameObject by the character's root
-// motion and poses a Transform hierarchy found by bone name.
+// SmgCharacter per frame and poses a rig (SmgRigPose: bones through the
+// Humanoid avatar or by name, blended with the engine's animation by a
+// per-joint mask). Who moves the GameObject is the Root Motion mode: the
+// library (its ground position each frame), the engine's mover (libsmg's
+// root motion goes to a CharacterController, or through OnAnimatorMove
+// when an Animator applies root motion, and where the mover ended up is
+// told back), or nobody (only the bones move). Uneven ground is measured by
+// ray casts before each step (SmgGroundSensor). What happened in a step
+// (constraints reached, footsteps, the path's end) is raised as C# events
+// after it, on the main thread.
 //
 // Frames: libsmg is right-handed (Y up, heading 0 faces +Z), Unity is
 // left-handed; everything crossing between them is mirrored in X (points
 // (x, y, z) <-> (-x, y, z), rotations through SmgMirrorX, headings
 // negated), so a left foot stays a left foot.
-//
-// Retargeting: each mapped bone gets libsmg's world rotation for its joint
-// times the bone's own rotation in the rig's rest pose, recorded when the
-// component starts. The rig must therefore stand in the blob skeleton's
-// rest pose (all joint rotations identity: for BVH data the zero pose,
-// usually a T-pose) and face its GameObject's +Z at Start. Bones of any
-// local axes work; unmapped joints still pass their rotation to children.
-// Sizes are libsmg's (metres): bake the blob from a skeleton of the rig's
-// proportions.
 using System;
 using System.Collections.Generic;
 using UnityEngine;
@@ -41,8 +40,33 @@ namespace Smg.Unity
         public Transform bone;
     }
 
+    /// <summary>A joint's weight in the blend with the engine's animation.</summary>
+    [Serializable]
+    public struct SmgJointWeight
+    {
+        public string joint;
+
+        [Range(0.0f, 1.0f)]
+        public float weight;
+    }
+
+    /// <summary>Who moves the GameObject.</summary>
+    public enum SmgRootMotionMode
+    {
+        /// <summary>libsmg: the GameObject is placed at the character's
+        /// ground position and heading each frame.</summary>
+        Library = 0,
+        /// <summary>The engine's mover: each step's root motion goes to a
+        /// CharacterController (or the Transform), through OnAnimatorMove
+        /// when an Animator applies root motion; the resulting position and
+        /// heading are told back to libsmg.</summary>
+        EngineMover = 1,
+        /// <summary>Nobody: only the bones move.</summary>
+        Off = 2,
+    }
+
     [DisallowMultipleComponent]
-    public sealed class SmgPathCharacter : MonoBehaviour
+    public sealed class SmgPathCharacter : MonoBehaviour, ISmgEventHandler
     {
         [Header("Graph (set one)")]
         [Tooltip("A graph blob imported as NAME.smg.bytes.")]
@@ -55,11 +79,48 @@ namespace Smg.Unity
         [Tooltip("Searched for bones named like the graph's joints.")]
         public Transform skeletonRoot;
 
-        [Tooltip("Joints whose bone has another name.")]
+        [Tooltip("Joints whose bone has another name (these win over the avatar and names).")]
         public List<SmgBoneOverride> boneOverrides = new List<SmgBoneOverride>();
 
-        [Tooltip("Move and turn this GameObject with the character; off: only the bones move.")]
-        public bool applyRootMotion = true;
+        [Tooltip("Map bones through the Animator's Humanoid avatar when it has one (names for the rest).")]
+        public bool useHumanoidAvatar = true;
+
+        [Header("Movement")]
+        [Tooltip("Library: libsmg moves this GameObject. Engine Mover: a CharacterController (or the Transform) is moved by libsmg's root motion and collides; libsmg continues from where it ends up. Off: only the bones move.")]
+        public SmgRootMotionMode rootMotion = SmgRootMotionMode.Library;
+
+        [Tooltip("Engine Mover: the CharacterController to move (empty: the one on this GameObject, else the Transform).")]
+        public CharacterController characterController;
+
+        [Tooltip("Engine Mover with a CharacterController: fall with Physics.gravity when not grounded.")]
+        public bool moverGravity = true;
+
+        [Header("Uneven ground")]
+        [Tooltip("Ray cast the ground under the feet and the root before each step; off: a flat floor at the start height.")]
+        public bool unevenGround;
+
+        [Tooltip("Layers the ground rays hit (the character's own colliders are skipped).")]
+        public LayerMask groundLayers = ~0;
+
+        [Tooltip("Rays start this far above the character's ground height (metres).")]
+        public float groundRayAbove = 1.0f;
+
+        [Tooltip("... and reach this far below it (metres).")]
+        public float groundRayBelow = 2.0f;
+
+        [Header("Blending with the engine's animation")]
+        [Tooltip("Which body parts take libsmg's pose; the others keep the Animator's (its IK included).")]
+        public SmgBodyMask bodyMask = SmgBodyMask.FullBody;
+
+        [Tooltip("How much of libsmg's pose the masked joints take.")]
+        [Range(0.0f, 1.0f)]
+        public float weight = 1.0f;
+
+        [Tooltip("Exact weights for named joints, over the mask.")]
+        public List<SmgJointWeight> jointWeights = new List<SmgJointWeight>();
+
+        [Tooltip("The Animator whose pose is blended with (empty: the one on this GameObject).")]
+        public Animator animator;
 
         [Header("Path (world space)")]
         [Tooltip("Path taken from this line; used instead of Path Points when set.")]
@@ -104,12 +165,37 @@ namespace Smg.Unity
         /// <summary>The character's state after this frame's step.</summary>
         public SmgCharacterState State { get; private set; }
 
-        Transform[] bones;
-        Quaternion[] restRotation;
-        float[] world;
-        int[] parents;
-        readonly float[] rootTranslation = new float[3];
-        float[] rotations;
+        // --- Events, raised after each step on the main thread ---
+
+        /// <summary>A transition (isSplice false: value is a style) or a
+        /// splice (an action) took effect: (id from AddTransition /
+        /// AddSplice, value, isSplice). id 0: a change no constraint asked
+        /// for (SetStyle / SetAction, the steering walking to a stop).</summary>
+        public event Action<uint, uint, bool> ConstraintReached;
+
+        /// <summary>A constraint that will never take effect (a later one
+        /// of its kind, or SetStyle / SetAction, took over first). Every
+        /// constraint gets ConstraintReached or this, once.</summary>
+        public event Action<uint, uint, bool> ConstraintSuperseded;
+
+        /// <summary>A foot landed: (0 left, 1 right; the toe's world
+        /// position; its downward speed as it landed, m/s).</summary>
+        public event Action<int, Vector3, float> Footstep;
+
+        /// <summary>The character arrived at its path's end.</summary>
+        public event Action PathEndReached;
+
+        /// <summary>After the pose is written in LateUpdate: run IK that
+        /// must act on libsmg's pose (look-at, hand IK) here.</summary>
+        public event Action PoseApplied;
+
+        SmgRigPose rig;
+        float[] weights;
+        SmgEventQueue events;
+        SmgGroundSensor ground;
+        Vector3 pendingMove;
+        float pendingTurn;
+        float fallSpeed;
         float[] pathXz = new float[0];
         Vector3[] lineBuffer = new Vector3[0];
         int linePointsSent;
@@ -117,16 +203,36 @@ namespace Smg.Unity
         readonly List<SmgPathMarker> pendingTransitions = new List<SmgPathMarker>();
         readonly List<SmgPathMarker> pendingSplices = new List<SmgPathMarker>();
         SmgFailOnce frameGuard;
-        Action stepFrame;
+        Action stepFrame, moveFrame;
 
         void Start()
         {
             frameGuard = new SmgFailOnce(e => Debug.LogError(name + ": SmgPathCharacter stopped: " + e, this));
             stepFrame = StepFrame;
+            moveFrame = ApplyMove;
+            if (animator == null)
+                animator = GetComponent<Animator>();
+            if (characterController == null)
+                characterController = GetComponent<CharacterController>();
             Graph = LoadGraph();
             MapBones();
-            Character = SmgCharacter.Create(Graph, Desc());
+            var kv = new List<KeyValuePair<string, float>>();
+            foreach (SmgJointWeight jw in jointWeights)
+                kv.Add(new KeyValuePair<string, float>(jw.joint, jw.weight));
+            weights = SmgBoneMask.Build(Graph, bodyMask, weight, kv);
+            SmgCharacterDesc desc = Desc();
+            Character = SmgCharacter.Create(Graph, desc);
+            events = new SmgEventQueue(desc.ConstraintCapacity);
             groundY = transform.position.y;
+            if (WorldHeights)
+            {
+                // libsmg's heights are then world heights; its start
+                // height is not in the descriptor (y is ignored there)
+                Vector3 p = transform.position;
+                SmgMirrorX.SetGroundPosition(Character, new SmgFloat3(p.x, p.y, p.z), transform.eulerAngles.y);
+            }
+            if (unevenGround)
+                ground = new SmgGroundSensor(groundY);
             pendingTransitions.AddRange(transitions);
             pendingSplices.AddRange(splices);
             if (pathLine != null)
@@ -147,13 +253,19 @@ namespace Smg.Unity
 
         // A failure (a bad marker name, a path libsmg refuses, ...) is
         // logged once and disables the component, instead of throwing again
-        // every frame.
+        // every frame. The step's events are raised after it, outside that
+        // guard: an exception in a handler is the handler's (Unity logs it),
+        // not a reason to stop the character.
         void Update()
         {
             if (Character == null)
                 return;
             if (!frameGuard.Run(stepFrame))
+            {
                 enabled = false;
+                return;
+            }
+            events.Dispatch(this);
         }
 
         void StepFrame()
@@ -161,32 +273,114 @@ namespace Smg.Unity
             if (pathLine != null && followLineChanges)
                 SyncLine();
             AddReachedMarkers();
-            Character.Step(Mathf.Clamp(Time.deltaTime, 0.0f, 1.0f));
+            if (ground != null)
+                ground.Measure(Character, transform, groundLayers, groundRayAbove, groundRayBelow);
+            float dt = Mathf.Clamp(Time.deltaTime, 0.0f, 1.0f);
+            Character.Step(dt);
             State = Character.State;
-            if (applyRootMotion)
+            if (rootMotion == SmgRootMotionMode.Library)
             {
                 SmgFloat3 p = State.Position;
-                transform.SetPositionAndRotation(new Vector3(-p.X, groundY, p.Z),
+                transform.SetPositionAndRotation(new Vector3(-p.X, HeightOffset + p.Y, p.Z),
                                                  Quaternion.Euler(0.0f, SmgMirrorX.HeadingToYawDegrees(State.Heading), 0.0f));
             }
+            else if (rootMotion == SmgRootMotionMode.EngineMover)
+            {
+                SmgMirrorX.RootMotion(Character.RootMotion, out SmgFloat3 d, out float turn);
+                pendingMove += new Vector3(d.X, d.Y, d.Z);
+                pendingTurn += turn;
+                if (!AnimatorMoves)
+                    ApplyMove();
+            }
+            events.Read(Character);
         }
 
-        // After Update (and after an Animator on the same rig), so the
-        // libsmg pose is the one rendered.
+        // The Animator calls this after evaluating, before LateUpdate, when
+        // it applies root motion: the engine's mover takes libsmg's root
+        // motion here; in the other modes the Animator's own root motion is
+        // applied only when libsmg does not move the GameObject.
+        void OnAnimatorMove()
+        {
+            if (Character == null || animator == null)
+                return;
+            if (rootMotion == SmgRootMotionMode.EngineMover)
+            {
+                if (AnimatorMoves && !frameGuard.Run(moveFrame))
+                    enabled = false;
+            }
+            else if (rootMotion == SmgRootMotionMode.Off)
+                animator.ApplyBuiltinRootMotion();
+        }
+
+        // The engine's mover: the root motion of the steps since the last
+        // move (a CharacterController collides), then where it ended up is
+        // libsmg's ground position and heading, so planning and steering go
+        // on from there.
+        void ApplyMove()
+        {
+            Vector3 move = pendingMove;
+            float turn = pendingTurn;
+            pendingMove = Vector3.zero;
+            pendingTurn = 0.0f;
+            if (characterController != null && characterController.enabled)
+            {
+                if (moverGravity)
+                {
+                    float dt = Time.deltaTime;
+                    // grounded: a step's worth of gravity keeps it in contact
+                    fallSpeed = characterController.isGrounded ? Physics.gravity.y * dt : fallSpeed + Physics.gravity.y * dt;
+                    move.y += fallSpeed * dt;
+                }
+                characterController.Move(move);
+            }
+            else
+                transform.position += move;
+            transform.rotation = Quaternion.Euler(0.0f, transform.eulerAngles.y + turn, 0.0f);
+            Vector3 p = transform.position;
+            SmgMirrorX.SetGroundPosition(Character, new SmgFloat3(p.x, p.y, p.z), transform.eulerAngles.y);
+            State = Character.State;
+        }
+
+        // After Update and after the Animator (its IK included), so the
+        // libsmg pose is the one rendered where the mask gives it weight.
         void LateUpdate()
         {
             if (Character == null)
                 return;
-            Character.GetLocalPose(rootTranslation, rotations);
-            SmgMirrorX.WorldRotations(rotations, parents, world);
-            for (int j = 0; j < bones.Length; ++j)
-            {
-                int i = 4 * j;
-                if (bones[j] != null)
-                    bones[j].rotation = new Quaternion(world[i], world[i + 1], world[i + 2], world[i + 3]) * restRotation[j];
-            }
-            if (bones[0] != null)
-                bones[0].position = new Vector3(-rootTranslation[0], groundY + rootTranslation[1], rootTranslation[2]);
+            rig.Apply(Character, weights, animator != null && animator.isActiveAndEnabled, HeightOffset);
+            PoseApplied?.Invoke();
+        }
+
+        // libsmg's heights are world heights when it is told them (ground
+        // rays, the mover's position); else its floor is at the start height
+        bool WorldHeights => unevenGround || rootMotion == SmgRootMotionMode.EngineMover;
+
+        float HeightOffset => WorldHeights ? 0.0f : groundY;
+
+        // Unity calls OnAnimatorMove only on the Animator's own GameObject
+        bool AnimatorMoves => animator != null && animator.gameObject == gameObject && animator.isActiveAndEnabled
+                              && animator.applyRootMotion;
+
+        // --- ISmgEventHandler: libsmg's events as this component's ---
+
+        void ISmgEventHandler.OnConstraintReached(uint id, uint value, bool isSplice)
+        {
+            ConstraintReached?.Invoke(id, value, isSplice);
+        }
+
+        void ISmgEventHandler.OnConstraintSuperseded(uint id, uint value, bool isSplice)
+        {
+            ConstraintSuperseded?.Invoke(id, value, isSplice);
+        }
+
+        void ISmgEventHandler.OnFootstep(int foot, SmgFloat3 position, float strength)
+        {
+            Footstep?.Invoke(foot, new Vector3(-position.X, HeightOffset + position.Y, position.Z), strength);
+        }
+
+        void ISmgEventHandler.OnPathEndReached()
+        {
+            PathEndReached?.Invoke();
         }
 
         // --- Path, styles and actions from gameplay code ---
@@ -238,33 +432,9 @@ namespace Smg.Unity
 
         void MapBones()
         {
-            int n = Graph.JointCount;
-            bones = new Transform[n];
-            restRotation = new Quaternion[n];
-            world = new float[4 * n];
-            parents = new int[n];
-            rotations = new float[4 * n];
-            var byName = new Dictionary<string, Transform>();
             Transform root = skeletonRoot != null ? skeletonRoot : transform;
-            foreach (Transform t in root.GetComponentsInChildren<Transform>(true))
-                if (!byName.ContainsKey(t.name))
-                    byName.Add(t.name, t);
-            foreach (SmgBoneOverride o in boneOverrides)
-                if (o.bone != null && !string.IsNullOrEmpty(o.joint))
-                    byName[o.joint] = o.bone;
-            Quaternion toCharacter = Quaternion.Inverse(transform.rotation);
-            for (int j = 0; j < n; ++j)
-            {
-                SmgJoint joint = Graph.GetJoint(j);
-                parents[j] = joint.Parent;
-                Transform bone;
-                if (byName.TryGetValue(joint.Name, out bone))
-                {
-                    bones[j] = bone;
-                    restRotation[j] = toCharacter * bone.rotation;
-                }
-            }
-            if (bones[0] == null)
+            rig = new SmgRigPose(Graph, transform, root, useHumanoidAvatar ? animator : null, boneOverrides);
+            if (!rig.HasRoot)
                 Debug.LogWarning(name + ": no bone for the root joint \"" + Graph.GetJoint(0).Name
                                  + "\" under " + root.name + ": add a bone override", this);
         }
