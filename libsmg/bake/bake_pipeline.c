@@ -18,8 +18,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <time.h>
+#ifdef _WIN32
+#define PSAPI_VERSION 2 /* GetProcessMemoryInfo from kernel32 itself */
+#include <windows.h>
+#include <psapi.h>
+#else
+#include <sys/resource.h>
+#endif
 
 #include "bake_graph_build.h"
 #include "bake_import.h"
@@ -47,11 +53,18 @@ static double cpu_seconds(void) {
   return clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
 }
 
-/* The process's peak resident memory so far, bytes (Linux reports KiB). */
+/* The process's peak resident memory so far, bytes (Linux reports KiB;
+ * Windows has no getrusage: its peak working set is the same measure). */
 static uint64_t peak_memory(void) {
+#ifdef _WIN32
+  PROCESS_MEMORY_COUNTERS c;
+  if (!GetProcessMemoryInfo(GetCurrentProcess(), &c, sizeof c)) return 0;
+  return (uint64_t)c.PeakWorkingSetSize;
+#else
   struct rusage u;
   if (getrusage(RUSAGE_SELF, &u) != 0 || u.ru_maxrss < 0) return 0;
   return (uint64_t)u.ru_maxrss * 1024u;
+#endif
 }
 
 /* A stage: its name for progress and the result's timing table. */
