@@ -36,10 +36,10 @@
 #include "bake_pair_search.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_threads.h"
 #include "smg_format.h"
 
 #define SMGB_PAIR_DIMS 12u
@@ -708,7 +708,6 @@ smg_result smgb_pair_search_minima(const smgb_pair_search* job,
   const smgb_cloud* B = job->cols;
   search s;
   worker ws[8];
-  pthread_t th[8];
   uint32_t nt = job->threads ? job->threads : 1u, t, p, total = 0;
   smg_result res = SMG_OK;
   double wsum = 0.0;
@@ -743,18 +742,7 @@ smg_result smgb_pair_search_minima(const smgb_pair_search* job,
     if (!ws[t].cache) res = SMG_ERROR_OUT_OF_MEMORY;
   }
   if (res == SMG_OK) {
-    for (t = 1; t < nt; ++t)
-      if (pthread_create(&th[t], NULL, worker_run, &ws[t]) != 0)
-        ws[t].failed = 2; /* run it inline below */
-    worker_run(&ws[0]);
-    for (t = 1; t < nt; ++t) {
-      if (ws[t].failed == 2) {
-        ws[t].failed = 0;
-        worker_run(&ws[t]);
-      } else {
-        pthread_join(th[t], NULL);
-      }
-    }
+    smgb_run_workers(ws, sizeof ws[0], nt, worker_run);
     for (t = 0; t < nt; ++t) {
       if (ws[t].failed) res = SMG_ERROR_OUT_OF_MEMORY;
       total += ws[t].count;

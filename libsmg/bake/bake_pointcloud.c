@@ -27,11 +27,11 @@
  * are concatenated in row order, so the output does not depend on timing.
  */
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bake_pointcloud.h"
+#include "bake_threads.h"
 
 typedef struct win_sums {
   double* sq;
@@ -326,7 +326,6 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
   const smgb_cloud* B = job->cols;
   win_sums sa, sb;
   worker ws[8];
-  pthread_t th[8];
   uint32_t nt = job->threads ? job->threads : 1, t, total = 0, p;
   double* soa;
   double wsum = 0.0;
@@ -387,19 +386,7 @@ smg_result smgb_grid_minima(const smgb_grid_job* job, smgb_minimum** out,
     free(sb.sq);
     return SMG_ERROR_INVALID_ARGUMENT;
   }
-  for (t = 1; t < nt; ++t)
-    if (pthread_create(&th[t], NULL, worker_run, &ws[t]) != 0) {
-      ws[t].failed = 2; /* run it inline below */
-    }
-  worker_run(&ws[0]);
-  for (t = 1; t < nt; ++t) {
-    if (ws[t].failed == 2) {
-      ws[t].failed = 0;
-      worker_run(&ws[t]);
-    } else {
-      pthread_join(th[t], NULL);
-    }
-  }
+  smgb_run_workers(ws, sizeof ws[0], nt, worker_run);
   for (t = 0; t < nt; ++t) {
     if (ws[t].failed) res = SMG_ERROR_OUT_OF_MEMORY;
     total += ws[t].count;
