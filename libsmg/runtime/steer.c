@@ -46,6 +46,7 @@
  */
 #include <math.h>
 
+#include "graph_derived.h"
 #include "rest.h"
 #include "steer.h"
 
@@ -124,10 +125,11 @@ static int frame_ground(const smgi_lower* lower, const smg_graph* g,
 /* (x, z), the ground point of the frame k frames after the playhead,
  * moved on to where the hips come to stand when the character stops on
  * that frame: the settling step (rest.c). */
-static void frame_stand(const smgi_lower* lower, const smg_graph* g,
-                        uint32_t k, float* x, float* z) {
+static float frame_stand(const smgi_lower* lower, const smg_graph* g,
+                         uint32_t k, float* x, float* z) {
   uint32_t entry, offset;
-  if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset)) return;
+  if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset))
+    return 0.0f;
   const smgi_qentry* q = smgi_q_at_c(lower, entry);
   float dx, dz, wx, wz;
   smgi_rest_settle_shift(g, g->data.lower_edges[q->edge].first_frame + offset,
@@ -135,6 +137,7 @@ static void frame_stand(const smgi_lower* lower, const smg_graph* g,
   smgi_rot2(smgi_q_placement(lower, entry).h, dx, dz, &wx, &wz);
   *x += wx;
   *z += wz;
+  return sqrtf(dx * dx + dz * dz);
 }
 
 /* Frames from the playhead to (seq, offset), or a negative value when the
@@ -175,6 +178,8 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
   /* decide only on a plan that reaches that far (not just after a
    * re-plan left the edge playing alone) */
   if (ahead < limit) return;
+  const float brake_way = 0.5f * s->own_speed * s->stride *
+                          smgi_derived_of(g)->idle.swing_seconds;
   float best = INFINITY, x, z;
   uint32_t best_k = 0, prev = 0;
   if (!frame_ground(lower, g, 0, &x, &z, &prev)) return;
@@ -187,10 +192,16 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
     int down = (fl & both) == both ||
                ((fl | prev) == both && (fl & both) != 0 && fl != prev);
     /* where the hips will stand: on from the stop frame by the settling
-     * step, worked out for the frames it can start from */
-    if (down) frame_stand(lower, g, k, &x, &z);
+     * step, worked out for every frame it can start from (a foot down:
+     * a run has no frame with both) */
+    const float way = fl ? frame_stand(lower, g, k, &x, &z) : 0.0f;
     float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
     if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
+    /* the hips cannot stop from the motion's speed in less than braking
+     * evenly over the settling step: from a frame whose settling way is
+     * shorter they would stand before the stepping foot lands (a run's
+     * swinging foot, 15-50 cm up, still coming down at rest) */
+    if (fl) d += fmaxf(brake_way - way, 0.0f);
     prev = fl;
     if (d < best) {
       best = d;
