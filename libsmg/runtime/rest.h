@@ -68,11 +68,6 @@ typedef struct smgi_rest_io {
   uint32_t action;
 } smgi_rest_io;
 
-/* Where the settling step would take the hips of a character stopping on
- * pool frame `frame`, relative to that frame's ground point, in its clip
- * space (the steering chooses the frame to stop on with it). */
-void smgi_rest_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
-                            float* dz);
 /* Frames the lower body advances this step, given what the steering
  * wants: none while turning on the spot. */
 float smgi_rest_frames(const smgi_rest* r, float frames);

@@ -47,7 +47,7 @@
 #include <math.h>
 
 #include "graph_derived.h"
-#include "rest.h"
+#include "settle.h"
 #include "steer.h"
 
 /* v moved towards target by at most step. */
@@ -132,7 +132,7 @@ static float frame_stand(const smgi_lower* lower, const smg_graph* g,
     return 0.0f;
   const smgi_qentry* q = smgi_q_at_c(lower, entry);
   float dx, dz, wx, wz;
-  smgi_rest_settle_shift(g, g->data.lower_edges[q->edge].first_frame + offset,
+  smgi_settle_shift(g, g->data.lower_edges[q->edge].first_frame + offset,
                          &dx, &dz);
   smgi_rot2(smgi_q_placement(lower, entry).h, dx, dz, &wx, &wz);
   *x += wx;
