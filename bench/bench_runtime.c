@@ -33,7 +33,7 @@
 
 #include "blob.h"
 #include "fixture_graph.h"
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "smg.h"
 
 #define DT (1.0f / 60.0f)

@@ -15,7 +15,7 @@
 #include "constraints.h"
 #include "events.h"
 #include "graph_derived.h"
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "ik.h"
 #include "lower.h"
 #include "path.h"

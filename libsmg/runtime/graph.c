@@ -15,7 +15,7 @@
 #include "abi.h"
 #include "alloc.h"
 #include "blob.h"
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "log.h"
 
 /* Files larger than this are refused before any allocation: a real baked

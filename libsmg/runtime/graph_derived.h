@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "idle.h"
 #include "tuning.h"
 

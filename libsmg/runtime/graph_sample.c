@@ -1,12 +1,12 @@
 /*
  * graph_sample.c - joint rotations of two of the graph's POSE records
- * blended at t (graph_internal.h): what the pose (lower body) and the
+ * blended at t (graph_data.h): what the pose (lower body) and the
  * upper body sample their frames with. Packed rotations are decoded
  * straight into the nlerp, four joints at a time with SSE2 (pose_simd.h).
  */
 #include <string.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "pose_simd.h"
 #include "rmath.h"
 

@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 
 #define SMGI_IDLE_STANCE 0.5f /* leg lengths between the toes, at most */
 #define SMGI_IDLE_SWING_DEFAULT 0.4f /* s a step takes in a graph without

@@ -7,7 +7,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "pose.h"
 #include "smg.h"
 

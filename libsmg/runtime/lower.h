@@ -13,7 +13,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "rmath.h"
 #include "tuning.h"
 

@@ -21,7 +21,7 @@
 
 #include "constraints.h"
 #include "graph_derived.h"
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "path.h"
 #include "rmath.h"
 #include "steer_envelope.h"

@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "lower.h"
 #include "smg.h"
 #include "upper.h"

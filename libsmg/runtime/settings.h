@@ -9,7 +9,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "smg.h"
 
 typedef struct smgi_settings {

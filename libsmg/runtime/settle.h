@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "rmath.h"
 
 /* The settling step from a pose with its toes at toe[2] (x, z), its hips'

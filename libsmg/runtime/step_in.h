@@ -10,7 +10,7 @@
 #include <stdint.h>
 
 #include "constraints.h"
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "path.h"
 
 typedef struct smgi_step_in {

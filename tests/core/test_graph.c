@@ -17,7 +17,7 @@
 
 #include "blob_testutil.h"
 #include "fixture_graph.h"
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "smg.h"
 
 typedef struct fx {

@@ -7,7 +7,7 @@
 #ifndef SMG_STAGE_TESTUTIL_H
 #define SMG_STAGE_TESTUTIL_H
 
-#include "graph_internal.h"
+#include "graph_data.h"
 #include "lower.h"
 #include "path.h"
 #include "runtime/runtime_testutil.h"

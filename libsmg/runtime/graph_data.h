@@ -1,10 +1,10 @@
 /*
- * graph_internal.h - what an smg_graph is inside the runtime. Characters
+ * graph_data.h - what an smg_graph is inside the runtime. Characters
  * read `data` (validated once at load, immutable afterwards) and bump
  * `character_count` so the graph cannot be destroyed under them.
  */
-#ifndef SMG_GRAPH_INTERNAL_H
-#define SMG_GRAPH_INTERNAL_H
+#ifndef SMG_GRAPH_DATA_H
+#define SMG_GRAPH_DATA_H
 
 #include <stdint.h>
 
@@ -58,4 +58,4 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
                         const unsigned char* rb, float t,
                         smgi_joint_set set, float* out);
 
-#endif /* SMG_GRAPH_INTERNAL_H */
+#endif /* SMG_GRAPH_DATA_H */
