@@ -22,6 +22,7 @@
 #include <assimp/cimport.h>
 #include <assimp/scene.h>
 
+#include "cli_testutil.h"
 #include "gltf_write.h"
 #include "smg.h"
 
@@ -32,33 +33,14 @@
 
 static char dir[512];
 
-static int run_cmd(const char* fmt, ...) {
-  char cmd[4096];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(cmd, sizeof cmd, fmt, ap);
-  va_end(ap);
-  int rc = system(cmd);
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-}
-
 static int setup(void** state) {
   (void)state;
-  struct stat st;
-  char blob[1024];
-  snprintf(blob, sizeof blob, "%s/default.smg", SMG_BUILD_DIR);
-  if (stat(blob, &st) != 0) {
-    fprintf(stderr, "test_gltf_export: %s missing: run `make` first\n", blob);
-    return -1;
-  }
-  snprintf(dir, sizeof dir, "%s/tests/export/gltf-XXXXXX", SMG_BUILD_DIR);
-  if (!mkdtemp(dir)) return -1;
-  return 0;
+  return smgt_scratch_dir("test_gltf_export", "export/gltf", dir, sizeof dir);
 }
 
 static int teardown(void** state) {
   (void)state;
-  run_cmd("rm -rf '%s'", dir);
+  smgt_run("rm -rf '%s'", dir);
   return 0;
 }
 
@@ -121,7 +103,7 @@ static void synth(const char* extra, const char* bvh, const char* glb) {
   fprintf(f, "0 0\n0 4\n3 7\n8 7\n12 3\n12 -2\n");
   fclose(f);
   assert_int_equal(
-      run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' --seconds %d "
+      smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' --seconds %d "
               "--fps %d --transition 6:run --splice 3:1 %s -o '%s' --glb '%s' "
               ">/dev/null",
               SMG_BUILD_DIR, SMG_BUILD_DIR, path, SECONDS, FPS, extra, bvh,
@@ -250,7 +232,7 @@ static int stray_files(const char* keep) {
 static void test_bad_input_leaves_target(void** state) {
   (void)state;
   char target[600], error[256];
-  run_cmd("rm -f '%s'/*", dir);
+  smgt_run("rm -f '%s'/*", dir);
   snprintf(target, sizeof target, "%s/old.glb", dir);
   FILE* f = fopen(target, "w");
   assert_non_null(f);
@@ -367,7 +349,7 @@ static void test_synth_glb_errors(void** state) {
   fprintf(f, "0 0\n0 4\n");
   fclose(f);
   assert_int_not_equal(
-      run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' --seconds 1 -o "
+      smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' --seconds 1 -o "
               "'%s' --glb '%s' >/dev/null 2>&1",
               SMG_BUILD_DIR, SMG_BUILD_DIR, path, bvh, glb),
       0);

@@ -15,37 +15,19 @@
 #include <cmocka.h>
 
 #include "bake_clip.h"
+#include "cli_testutil.h"
 #include "runtime/runtime_testutil.h"
 
 static char dir[512];
 
-static int run_cmd(const char* fmt, ...) {
-  char cmd[2048];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(cmd, sizeof cmd, fmt, ap);
-  va_end(ap);
-  int rc = system(cmd);
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-}
-
 static int setup(void** state) {
   (void)state;
-  struct stat st;
-  char blob[1024];
-  snprintf(blob, sizeof blob, "%s/default.smg", SMG_BUILD_DIR);
-  if (stat(blob, &st) != 0) {
-    fprintf(stderr, "test_synth: %s missing: run `make` first\n", blob);
-    return -1;
-  }
-  snprintf(dir, sizeof dir, "%s/tests/runtime/synth-XXXXXX", SMG_BUILD_DIR);
-  if (!mkdtemp(dir)) return -1;
-  return 0;
+  return smgt_scratch_dir("test_synth", "runtime/synth", dir, sizeof dir);
 }
 
 static int teardown(void** state) {
   (void)state;
-  run_cmd("rm -rf '%s'", dir);
+  smgt_run("rm -rf '%s'", dir);
   return 0;
 }
 
@@ -60,7 +42,7 @@ static void test_bvh_round_trip(void** state) {
   fprintf(f, "# a drawn path\n0 0\n0 4\n\n1.5 7  # comment\n5 8\n9 8\n");
   fclose(f);
   float seconds = smgt_quick() ? 2.0f : 6.0f;
-  assert_int_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
+  assert_int_equal(smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                            "--splice 2:punch --transition 6:run --seconds "
                            "%.1f --fps 30 --seed 3 --csv '%s' -o '%s' "
                            ">/dev/null",
@@ -151,33 +133,33 @@ static void test_cli_errors(void** state) {
   const char* q = ">/dev/null 2>&1";
   /* no arguments, unknown option, bad path file, bad constraint, unknown
    * style, missing blob */
-  assert_int_not_equal(run_cmd("'%s/smg-synth' %s", SMG_BUILD_DIR, q), 0);
-  assert_int_not_equal(run_cmd("'%s/smg-synth' --bogus %s", SMG_BUILD_DIR, q),
+  assert_int_not_equal(smgt_run("'%s/smg-synth' %s", SMG_BUILD_DIR, q), 0);
+  assert_int_not_equal(smgt_run("'%s/smg-synth' --bogus %s", SMG_BUILD_DIR, q),
                        0);
-  assert_int_not_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
+  assert_int_not_equal(smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                                "-o '%s' %s",
                                SMG_BUILD_DIR, SMG_BUILD_DIR, path, bvh, q),
                        0);
   f = fopen(path, "w");
   fprintf(f, "0 0\n0 5\n");
   fclose(f);
-  assert_int_not_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
+  assert_int_not_equal(smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                                "--splice x:punch -o '%s' %s",
                                SMG_BUILD_DIR, SMG_BUILD_DIR, path, bvh, q),
                        0);
-  assert_int_not_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
+  assert_int_not_equal(smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                                "--transition 1:fly -o '%s' %s",
                                SMG_BUILD_DIR, SMG_BUILD_DIR, path, bvh, q),
                        0);
-  assert_int_not_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
+  assert_int_not_equal(smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                                "--transition 9:run -o '%s' %s",
                                SMG_BUILD_DIR, SMG_BUILD_DIR, path, bvh, q),
                        0); /* beyond the 5 m path */
-  assert_int_not_equal(run_cmd("'%s/smg-synth' -g '%s/nope.smg' -p '%s' "
+  assert_int_not_equal(smgt_run("'%s/smg-synth' -g '%s/nope.smg' -p '%s' "
                                "-o '%s' %s",
                                SMG_BUILD_DIR, dir, path, bvh, q),
                        0);
-  assert_int_equal(run_cmd("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
+  assert_int_equal(smgt_run("'%s/smg-synth' -g '%s/default.smg' -p '%s' "
                            "--seconds 0.5 -o '%s' %s",
                            SMG_BUILD_DIR, SMG_BUILD_DIR, path, bvh, q),
                    0);

@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "eval_ctx.h"
+#include "eval_run.h"
 #include "eval_feet_geom.h"
 #include "eval_gait.h"
 #include "eval_joints.h"
@@ -705,27 +706,6 @@ typedef struct bh_summary {
   int standing;                         /* the rest-motion target applies */
 } bh_summary;
 
-static size_t read_path(const char* file, double* xz, size_t cap) {
-  FILE* f = fopen(file, "r");
-  char line[256];
-  size_t n = 0;
-  if (!f) return 0;
-  while (fgets(line, sizeof(line), f)) {
-    double x, z;
-    char* hash = strchr(line, '#');
-    if (hash) *hash = '\0';
-    if (sscanf(line, "%lf %lf", &x, &z) != 2) continue;
-    if (n == cap) {
-      n = 0;
-      break;
-    }
-    xz[2 * n] = x;
-    xz[2 * n + 1] = z;
-    ++n;
-  }
-  fclose(f);
-  return n;
-}
 
 static double worse_max(double a, double b) {
   return !isfinite(b) ? (isfinite(a) ? INFINITY : a) : (a > b ? a : b);
@@ -746,7 +726,7 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
   s->rest_toe_cm = s->rest_ankles_m = 0.0;
   s->rest_motion_deg = INFINITY;
   s->smooth_mean_cm = s->tight_max_cm = s->feet_cms = s->pelvis_deg = 0.0;
-  n = read_path("data/paths/straight.txt", path, BH_MAX_POINTS);
+  n = eval_read_path("data/paths/straight.txt", path, BH_MAX_POINTS);
   s->walk_speed = n >= 2 ? steady_speed(bg, path, n, bg->walk, 1) : NAN;
   s->run_speed = n >= 2 && bg->have_run
                      ? steady_speed(bg, path, n, bg->run, 0)
@@ -766,7 +746,7 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
     double share = NAN;
     if (!k_paths[k].held) continue;
     snprintf(file, sizeof(file), "data/paths/%s.txt", k_paths[k].key);
-    n = read_path(file, path, BH_MAX_POINTS);
+    n = eval_read_path(file, path, BH_MAX_POINTS);
     if (n >= 2 && bg->have_run && isfinite(bg->threshold))
       share = style_held(bg, path, n);
     eval_log("behaviour %s %-12s style held %.3f", bg->key, k_paths[k].key,
@@ -791,7 +771,7 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
   for (k = 0; k < BH_PATHS; ++k) {
     char file[256];
     snprintf(file, sizeof(file), "data/paths/%s.txt", k_paths[k].key);
-    n = read_path(file, path, BH_MAX_POINTS);
+    n = eval_read_path(file, path, BH_MAX_POINTS);
     for (st = 0; st < 2; ++st) {
       bh_path_result r;
       if (st == 1 && !bg->have_run) continue;

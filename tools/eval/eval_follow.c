@@ -38,6 +38,7 @@
 #include "eval_feet_geom.h"
 #include "eval_joints.h"
 #include "eval_metrics.h"
+#include "eval_run.h"
 #include "smg_bake.h"
 #include "svg_plot.h"
 
@@ -86,29 +87,6 @@ typedef struct follow_result {
   double* hips;             /* 2 per frame (ground x, z), for figures */
 } follow_result;
 
-/* Reads "x z" lines ('#' comments) into xz; returns the point count, 0 on
- * failure. */
-static size_t read_path(const char* file, double* xz, size_t cap) {
-  FILE* f = fopen(file, "r");
-  char line[256];
-  size_t n = 0;
-  if (!f) return 0;
-  while (fgets(line, sizeof(line), f)) {
-    double x, z;
-    char* hash = strchr(line, '#');
-    if (hash) *hash = '\0';
-    if (sscanf(line, "%lf %lf", &x, &z) != 2) continue;
-    if (n == cap) {
-      n = 0;
-      break;
-    }
-    xz[2 * n] = x;
-    xz[2 * n + 1] = z;
-    ++n;
-  }
-  fclose(f);
-  return n;
-}
 
 /* One run from the path's first point; `style`: the initial style. */
 static void follow_run(smg_graph* g, const eval_joints* joint,
@@ -353,7 +331,7 @@ static void follow_graph(eval_ctx* ctx, smg_graph* g,
     size_t n;
     int s;
     snprintf(file, sizeof(file), "data/paths/%s.txt", p->key);
-    n = read_path(file, path, MAX_POINTS);
+    n = eval_read_path(file, path, MAX_POINTS);
     if (n < 2) {
       eval_md(ctx, "| %s | | cannot read `%s` | | | | | | | | |\n", p->title,
               file);
@@ -444,7 +422,7 @@ static void check_graph(eval_ctx* ctx, smg_graph* g, const char* name) {
     char file[256];
     follow_result r;
     snprintf(file, sizeof(file), "data/paths/%s.txt", p->key);
-    size_t n = read_path(file, path, MAX_POINTS);
+    size_t n = eval_read_path(file, path, MAX_POINTS);
     if (!p->tight) continue;
     if (n < 2) {
       eval_check(ctx, 0, "cannot read %s", file);

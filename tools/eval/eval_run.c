@@ -7,6 +7,7 @@
 #include "eval_run.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -191,4 +192,26 @@ fail:
   if (ch) smg_character_destroy(ch);
   eval_trace_free(out);
   return r;
+}
+
+size_t eval_read_path(const char* file, double* xz, size_t cap) {
+  FILE* f = fopen(file, "r");
+  char line[256];
+  size_t n = 0;
+  if (!f) return 0;
+  while (fgets(line, sizeof(line), f)) {
+    double x, z;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+    if (sscanf(line, "%lf %lf", &x, &z) != 2) continue;
+    if (n == cap) {
+      n = 0;
+      break;
+    }
+    xz[2 * n] = x;
+    xz[2 * n + 1] = z;
+    ++n;
+  }
+  fclose(f);
+  return n;
 }

@@ -67,4 +67,9 @@ static inline const double* eval_joint(const eval_trace* t, size_t i,
   return t->joints + (i * t->joint_count + j) * 3;
 }
 
+/* Reads a path file ("x z" lines, '#' comments, as data/paths/ and
+ * smg-synth use) into xz (2 per point); returns the point count, 0 when
+ * the file cannot be read or has more than cap points. */
+size_t eval_read_path(const char* file, double* xz, size_t cap);
+
 #endif /* EVAL_RUN_H */
