@@ -120,7 +120,6 @@ void smgi_root_motion_place(const smgi_root_motion* rm, smgi_pose* pose,
   st->prev_x = prev.x;
   st->prev_z = prev.z;
   st->prev_h = prev.h;
-  st->at_valid = 0;
   st->drift_turn += fabsf(m.da);
   st->drift_move += sqrtf(m.tx * m.tx + m.tz * m.tz);
 

@@ -229,27 +229,67 @@ static float segment_heading(smgi_steer* st, const smgi_path* p,
   return st->heading;
 }
 
-/* Signed turning of the path ahead (radians per metre, + = left): the
- * sharper of two halves of the next SMGI_STEER_CURVE_AHEAD metres, so a
- * short tight loop is not averaged away. */
-static float curvature_ahead(smgi_steer* st, const smgi_path* p, float s,
-                             uint32_t seg) {
+/* The share of the motion's full speed `full` (m/s) at which the steering
+ * turns as tightly as a path turning `kappa` radians per metre: the turn
+ * the path asks for beyond the motion's own `own_turn` within the turn
+ * limit, and the body's sideways acceleration within what friction gives
+ * (SMGI_STEER_GRIP: the speed round a radius r is at most sqrt(a r)). */
+static float turn_share(const smgi_steer* st, float kappa, float full,
+                        float own_turn) {
+  float want = 1.0f;
+  const float need = fabsf(kappa * full - own_turn);
+  if (need > st->turn_limit) want = st->turn_limit / need;
+  const float k = fabsf(kappa);
+  if (k * full * full > SMGI_STEER_GRIP * SMGI_GRAVITY)
+    want = fminf(want, sqrtf(SMGI_STEER_GRIP * SMGI_GRAVITY / k) / full);
+  return want;
+}
+
+/* The share of the full speed `full` to move at now (1: no slowing) for
+ * the path's turning from arc s on: the sharper of two halves of the next
+ * SMGI_STEER_CURVE_AHEAD metres (a short tight loop is not averaged
+ * away), and every tighter turn further on that the speed, changing by
+ * SMGI_STEER_RATE_ACCEL of itself per second, must already come down
+ * for. *near gets the share for the turn right ahead alone. */
+static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
+                         uint32_t seg, float full, float speed, float* near) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
-  uint32_t s0 = seg, s1, s2;
-  smgi_path_eval(p, s, &s0, &st->at_x, &st->at_z, NULL);
-  st->at_valid = 1;
-  s1 = s0;
-  smgi_path_eval(p, s + half, &s1, &x, &z, NULL);
-  s2 = s1;
-  smgi_path_eval(p, s + 2.0f * half, &s2, &x, &z, NULL);
-  /* one heading per segment: the three points mostly share one or two,
-   * and the last one is often the first of the next step */
-  float h0 = segment_heading(st, p, s0);
-  float h1 = s1 == s0 ? h0 : segment_heading(st, p, s1);
-  float h2 = s2 == s1 ? h1 : segment_heading(st, p, s2);
-  float a = smgi_wrap_angle(h1 - h0), b = smgi_wrap_angle(h2 - h1);
-  return (fabsf(a) > fabsf(b) ? a : b) / half;
+  uint32_t sg = seg;
+  smgi_path_eval(p, s, &sg, &x, &z, NULL);
+  /* how far on the slowest share is reached from the full speed: no
+   * turn beyond that can ask for more slowing now */
+  const float slowest = SMGI_STEER_RATE_MIN * (1.0f - st->slide_ratio);
+  const float reach = speed * (1.0f - slowest) / SMGI_STEER_RATE_ACCEL;
+  float h0 = segment_heading(st, p, sg), prev = 0.0f, want = 1.0f;
+  *near = 1.0f;
+  for (uint32_t i = 1u; i <= SMGI_STEER_AHEAD_SAMPLES; ++i) {
+    const float d = (float)i * half;
+    uint32_t s1 = sg;
+    smgi_path_eval(p, s + d, &s1, &x, &z, NULL);
+    /* one heading per segment: the points mostly share one or two */
+    float h1 = s1 == sg ? h0 : segment_heading(st, p, s1);
+    float k = smgi_wrap_angle(h1 - h0) / half;
+    /* the turn over [d - 2 half, d]: the sharper of its halves */
+    float kk = i >= 2u && fabsf(prev) > fabsf(k) ? prev : k;
+    if (i >= 2u) {
+      /* the turn starts d - 2 half ahead: time to slow down till then */
+      const float lead = d - 2.0f * half;
+      const float room =
+          speed > 1e-3f ? SMGI_STEER_RATE_ACCEL * lead / speed : INFINITY;
+      const float share =
+          turn_share(st, kk, full, i == 2u ? st->own_turn : 0.0f);
+      if (i == 2u) *near = share;
+      /* a turn no share down to the slowest makes is cut, not slowed
+       * for long before: slowing early would not follow it either */
+      if (i == 2u || share >= slowest) want = fminf(want, share + room);
+      if (lead >= reach) break;
+    }
+    prev = k;
+    h0 = h1;
+    sg = s1;
+  }
+  return want;
 }
 
 int smgi_steer_wants_replan(const smgi_steer* s, const smgi_step_in* in) {
@@ -265,7 +305,6 @@ void smgi_steer_replanned(smgi_steer* s) {
 float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
                         const smgi_step_in* in, float dt) {
   const float full = dt * in->fps;
-  s->at_valid = 0;
   if (!s->enabled || in->path->count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
@@ -274,21 +313,21 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
   }
   if (s->mode == SMGI_STEER_FOLLOW) {
     /* slow down where the path turns tighter than the steering can turn
-     * at this speed */
-    float kappa = curvature_ahead(s, in->path, in->progress, in->seg);
+     * at this speed, or than a body can turn at this speed, and ahead of
+     * such a turn */
     float r = s->rate > 0.05f ? s->rate : 0.05f;
-    /* the correction the path asks for at full playback: its turning at
-     * the motion's speed minus the motion's own turning */
-    float need = fabsf(kappa * s->own_speed - s->own_turn) / r;
-    /* the share of the full speed at which the turn limit suffices:
-     * playback no slower than SMGI_STEER_RATE_MIN (slower looks like
+    /* playback no slower than SMGI_STEER_RATE_MIN (slower looks like
      * slow motion, every swing drawn out), the rest by shorter strides,
      * at most the slide ratio of them */
-    float want = 1.0f;
     const float slowest = SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
-    if (need > s->turn_limit)
-      want = smgi_clampf(s->turn_limit / need, slowest, 1.0f);
-    s->saturated = need * slowest > s->turn_limit;
+    float near;
+    float want = share_ahead(s, in->path, in->progress, in->seg,
+                             s->own_speed / r, s->own_speed * s->stride,
+                             &near);
+    want = smgi_clampf(want, slowest, 1.0f);
+    /* short of the turn right here even at the slowest share (not of
+     * one further on, which slowing down in time still makes) */
+    s->saturated = near < slowest;
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
     s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
     s->stride = approach(s->stride, want / rate, SMGI_STEER_RATE_ACCEL * dt);
@@ -457,8 +496,9 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                      &fz, NULL) &&
         (fx - gx) * (fx - gx) + (fz - gz) * (fz - gz) > 1e-4f)
       dir = smgi_atan2f(fx - gx, fz - gz);
-    look = smgi_clampf(s->own_speed * SMGI_STEER_LOOK_TIME, SMGI_STEER_LOOK_MIN,
-                  SMGI_STEER_LOOK_MAX);
+    /* from the speed the character moves at (its strides as shortened) */
+    look = smgi_clampf(s->own_speed * s->stride * SMGI_STEER_LOOK_TIME,
+                       SMGI_STEER_LOOK_MIN, SMGI_STEER_LOOK_MAX);
     point_ahead(p, in->progress + look, in->seg, &tx, &tz);
     if ((tx - gx) * (tx - gx) + (tz - gz) * (tz - gz) > 1e-4f)
       want_turn = smgi_wrap_angle(smgi_atan2f(tx - gx, tz - gz) - dir) /
@@ -490,13 +530,8 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
         want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;
       }
     } else {
-      if (s->at_valid) { /* progress has not moved since */
-        qx = s->at_x;
-        qz = s->at_z;
-      } else {
-        uint32_t sg = in->seg;
-        smgi_path_eval(p, in->progress, &sg, &qx, &qz, NULL);
-      }
+      uint32_t sg = in->seg;
+      smgi_path_eval(p, in->progress, &sg, &qx, &qz, NULL);
       /* the hips sway from side to side with every step: only the offset
        * beyond that is an error to remove */
       float ox = qx - gx, oz = qz - gz, ol = sqrtf(ox * ox + oz * oz);
@@ -510,7 +545,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   /* bounds relative to the motion itself */
   float tb = SMGI_STEER_CLIP_SCALE * fabsf(s->own_turn) +
              fminf(s->turn_limit, s->own_speed / SMGI_STEER_TURN_RADIUS);
-  float sb = s->slide_ratio * s->own_speed;
+  /* the slide against the speed the character moves at: bounded by the
+   * motion's own speed, a runner slowed by shorter strides slid sideways
+   * at up to twice the angle the ratio means */
+  float sb = s->slide_ratio * s->own_speed * s->stride;
   want_turn = smgi_clampf(want_turn, -tb, tb);
   float wl = sqrtf(want_sx * want_sx + want_sz * want_sz);
   if (wl > sb) {

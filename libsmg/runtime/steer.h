@@ -50,10 +50,6 @@ typedef struct smgi_steer {
    * forgotten when the path changes */
   uint32_t heading_seg;   /* SMGI_NONE: none */
   float heading;
-  /* the path point at the character's progress, found by the curvature
-   * ahead and wanted again by the correction in the same step */
-  uint32_t at_valid;      /* set this step */
-  float at_x, at_z;
   /* correction applied since the planned edges were chosen: the plan
    * moves with the character, so beyond a bound it is chosen again */
   float drift_turn;       /* radians */

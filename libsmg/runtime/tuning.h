@@ -184,6 +184,12 @@
 #define SMGI_STEER_LOOK_MIN 0.5f      /* ... in metres, at least */
 #define SMGI_STEER_LOOK_MAX 2.0f      /* ... and at most */
 #define SMGI_STEER_CURVE_AHEAD 1.5f   /* m: path curvature measured over this */
+#define SMGI_STEER_AHEAD_SAMPLES 8u   /* half-spans of it looked ahead at most
+                                         for a turn to slow down for */
+#define SMGI_STEER_GRIP 0.5f          /* sideways acceleration a body takes in
+                                         a turn, in g: a shoe's friction
+                                         on a floor (0.5-0.8) at its low end */
+#define SMGI_GRAVITY 9.81f            /* m/s^2 */
 #define SMGI_STEER_RATE_MIN 0.8f      /* slowest playback for a tight turn
                                          (slower is slow motion; the rest
                                          of the slowing is shorter strides) */

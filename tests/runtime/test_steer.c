@@ -15,7 +15,9 @@
  *  - settings: negative or non-finite limits are refused at create and by
  *    the setter, which then changes nothing (bit-identical poses);
  *  - with steering off the state reports no correction and playback rate
- *    1; the steering on the synthetic default graph follows a corner too.
+ *    1; the steering on the synthetic default graph follows a corner too;
+ *  - a turn too tight for the motion's speed is slowed for before it
+ *    begins (the root's speed over the last metre before a hairpin).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -418,6 +420,90 @@ static void test_default_graph_corner(void** state) {
   smg_graph_destroy(g);
 }
 
+/* A hairpin: 8 m straight, a half circle of radius 0.3 m, 8 m back. */
+static uint32_t hairpin(float* xz) {
+  uint32_t n = 0;
+  xz[2 * n] = 0.0f, xz[2 * n + 1] = 0.0f, ++n;
+  for (int k = 0; k <= 12; ++k) {
+    float a = 3.14159265f * (float)k / 12.0f;
+    xz[2 * n] = 0.3f - 0.3f * cosf(a);
+    xz[2 * n + 1] = 8.0f + 0.3f * sinf(a);
+    ++n;
+  }
+  xz[2 * n] = 0.6f, xz[2 * n + 1] = 0.0f, ++n;
+  return n;
+}
+
+/* Mean root ground speed while the root's z lies in [z0, z1) on the way
+ * out (before the hairpin), from the exported poses. */
+static float speed_before_hairpin(smg_graph* g, uint32_t J, const float* xz,
+                                  uint32_t n, uint32_t flags, float z0,
+                                  float z1) {
+  smg_character_desc d;
+  smg_character* ch = NULL;
+  float root[3], prev[3];
+  float* rot = (float*)malloc(sizeof(float) * 4 * J);
+  double way = 0.0;
+  int steps = 0;
+  assert_non_null(rot);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.flags = flags;
+  assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+  assert_int_equal(smg_character_get_local_pose(ch, prev, rot, J), SMG_OK);
+  for (int i = 0; i < (int)(12.0f / DT); ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    assert_int_equal(smg_character_get_local_pose(ch, root, rot, J), SMG_OK);
+    if (root[2] >= 7.9f) break; /* in the hairpin */
+    if (root[2] >= z0 && root[2] < z1) {
+      way += sqrtf((root[0] - prev[0]) * (root[0] - prev[0]) +
+                   (root[2] - prev[2]) * (root[2] - prev[2]));
+      ++steps;
+    }
+    memcpy(prev, root, sizeof prev);
+  }
+  smg_character_destroy(ch);
+  free(rot);
+  return steps ? (float)(way / (steps * DT)) : 0.0f;
+}
+
+/* A turn tighter than the motion can take at its speed is slowed for
+ * before it begins (the speed comes down at a bounded rate, so it must
+ * start coming down ahead of the turn): over the last metre before a
+ * 0.3 m hairpin the root moves clearly slower than on the straight
+ * before; with steering off it does not (the test can fail). */
+static void test_slows_ahead_of_hairpin(void** state) {
+  (void)state;
+  smg_graph* g = rt_default_graph();
+  smg_graph_info info;
+  float xz[2 * 16];
+  if (!g) {
+    skip();
+    return;
+  }
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
+  uint32_t n = hairpin(xz);
+  for (int off = 0; off < 2; ++off) {
+    uint32_t flags = off ? SMG_CHARACTER_NO_STEERING : 0u;
+    float cruise = speed_before_hairpin(g, info.joint_count, xz, n, flags,
+                                        2.0f, 5.0f);
+    float before = speed_before_hairpin(g, info.joint_count, xz, n, flags,
+                                        6.9f, 7.9f);
+    print_message("%s: %.2f m/s on the straight, %.2f m/s in the last metre "
+                  "before the hairpin\n",
+                  off ? "steering off" : "steering on", cruise, before);
+    assert_true(cruise > 0.5f);
+    if (off)
+      assert_true(before > 0.9f * cruise);
+    else
+      assert_true(before < 0.85f * cruise);
+  }
+  smg_graph_destroy(g);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_corner_and_rest),
@@ -427,6 +513,7 @@ int main(void) {
       cmocka_unit_test(test_switch_off),
       cmocka_unit_test(test_settings),
       cmocka_unit_test(test_default_graph_corner),
+      cmocka_unit_test(test_slows_ahead_of_hairpin),
   };
   return cmocka_run_group_tests(tests, rt_fixture_setup, rt_fixture_teardown);
 }
