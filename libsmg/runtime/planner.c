@@ -12,8 +12,7 @@
  *  - rank_node ranks again with the style yielding to the graph's most
  *    agile one when even the best sequence in the wanted style stays off
  *    the path by more than SMGI_YIELD_ERROR on average beyond what the
- *    steering removes, the steering is short of the turn even slowed, or
- *    the character has drifted SMGI_YIELD_DRIFT off.
+ *    steering removes, or the character has drifted SMGI_YIELD_DRIFT off.
  * The best edge is pushed with its distance error (where its end leaves
  * the character from the path, the paper's threshold test), followed by
  * up to SMGI_SEQ_COMMIT_FRAMES of the best sequence's next edges (fewer
@@ -220,13 +219,14 @@ static uint32_t rank_pass(const job* j, uint32_t node,
 /* Rank the out-edges of `node`; when even the best sequence in the wanted
  * style stays off the path by more than SMGI_YIELD_ERROR on average beyond
  * what the root steering removes (a run asked for where the path turns
- * tighter than a run can be bent), when the steering, slowed as far as it
- * goes, still turns short of the path ahead, or when the character is
- * already more than SMGI_YIELD_DRIFT off the path (the style is failing to
- * follow), rank again letting the style yield to the most agile one -
- * before the character is lost. An error the steering removes is no
- * reason to drop the style: a run bent around a curve is still the run
- * asked for. */
+ * tighter than a run can be bent), or when the character is already more
+ * than SMGI_YIELD_DRIFT off the path (the style is failing to follow),
+ * rank again letting the style yield to the most agile one - before the
+ * character is lost. An error the steering removes is no reason to drop
+ * the style: a run bent around a curve is still the run asked for, and a
+ * runner slows for a sharp turn (steer.c) but keeps running; that the
+ * steering turns short of the path at some point ahead is no reason
+ * either (it cuts a turn too tight for any speed, within the drift). */
 static uint32_t rank_node(const job* j, uint32_t node,
                           smgi_xform2 W, float s, uint32_t seg, cand* c,
                           uint32_t* seq, uint32_t* seq_len) {
@@ -234,7 +234,7 @@ static uint32_t rank_node(const job* j, uint32_t node,
   uint32_t n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 0, &following);
   if (n > 0 && following &&
       (c[0].seq_beyond > SMGI_YIELD_ERROR ||
-       j->in->path_error > SMGI_YIELD_DRIFT || j->steer->saturated) &&
+       j->in->path_error > SMGI_YIELD_DRIFT) &&
       smgi_derived_of(j->in->graph)->agile_style != smgi_style_at(j->in->cons, s)) {
     n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 1, &following);
     for (uint32_t i = 0; i < n; ++i)

@@ -68,7 +68,6 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
   s->stride = 1.0f;
-  s->saturated = 0;
   s->drift_turn = s->drift_move = 0.0f;
   s->heading_seg = SMGI_NONE;
 }
@@ -250,9 +249,9 @@ static float turn_share(const smgi_steer* st, float kappa, float full,
  * SMGI_STEER_CURVE_AHEAD metres (a short tight loop is not averaged
  * away), and every tighter turn further on that the speed, changing by
  * SMGI_STEER_RATE_ACCEL of itself per second, must already come down
- * for. *near gets the share for the turn right ahead alone. */
+ * for. */
 static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
-                         uint32_t seg, float full, float speed, float* near) {
+                         uint32_t seg, float full, float speed) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
   uint32_t sg = seg;
@@ -262,7 +261,6 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
   const float slowest = SMGI_STEER_RATE_MIN * (1.0f - st->slide_ratio);
   const float reach = speed * (1.0f - slowest) / SMGI_STEER_RATE_ACCEL;
   float h0 = segment_heading(st, p, sg), prev = 0.0f, want = 1.0f;
-  *near = 1.0f;
   for (uint32_t i = 1u; i <= SMGI_STEER_AHEAD_SAMPLES; ++i) {
     const float d = (float)i * half;
     uint32_t s1 = sg;
@@ -279,7 +277,6 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
           speed > 1e-3f ? SMGI_STEER_RATE_ACCEL * lead / speed : INFINITY;
       const float share =
           turn_share(st, kk, full, i == 2u ? st->own_turn : 0.0f);
-      if (i == 2u) *near = share;
       /* a turn no share down to the slowest makes is cut, not slowed
        * for long before: slowing early would not follow it either */
       if (i == 2u || share >= slowest) want = fminf(want, share + room);
@@ -320,14 +317,9 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
      * slow motion, every swing drawn out), the rest by shorter strides,
      * at most the slide ratio of them */
     const float slowest = SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
-    float near;
     float want = share_ahead(s, in->path, in->progress, in->seg,
-                             s->own_speed / r, s->own_speed * s->stride,
-                             &near);
+                             s->own_speed / r, s->own_speed * s->stride);
     want = smgi_clampf(want, slowest, 1.0f);
-    /* short of the turn right here even at the slowest share (not of
-     * one further on, which slowing down in time still makes) */
-    s->saturated = near < slowest;
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
     s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
     s->stride = approach(s->stride, want / rate, SMGI_STEER_RATE_ACCEL * dt);
@@ -467,6 +459,17 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   s->prev_h = pose->heading;
 }
 
+/* The share of the slide ratio a character `off` metres from the path may
+ * slide at while following it. Sliding sideways turns the body away from
+ * its travel (at the full ratio of 0.25, 14 degrees); the turning keeps
+ * the body facing its travel and does the following, so the slide grows
+ * with the offset and reaches the full ratio only as far off as the
+ * planner gives up on the style (SMGI_YIELD_DRIFT): the last resort that
+ * keeps a turn the motion cannot make (a curl of the pen) within reach. */
+static float slide_share_at(float off) {
+  return off < SMGI_YIELD_DRIFT ? off / SMGI_YIELD_DRIFT : 1.0f;
+}
+
 void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                       const smgi_step_in* in, float dt) {
   const smg_graph* g = in->graph;
@@ -487,6 +490,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   }
   s->have_prev = 1;
   float want_turn = 0.0f, want_sx = 0.0f, want_sz = 0.0f;
+  float slide_share = 1.0f; /* of the slide ratio allowed */
   const smgi_path* p = in->path;
   if (s->enabled && p->count >= 2u && s->mode != SMGI_STEER_REST) {
     /* heading: the clip's direction of travel towards the pursuit point */
@@ -535,6 +539,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
       /* the hips sway from side to side with every step: only the offset
        * beyond that is an error to remove */
       float ox = qx - gx, oz = qz - gz, ol = sqrtf(ox * ox + oz * oz);
+      slide_share = slide_share_at(ol);
       if (ol > SMGI_STEER_SWAY) {
         float k2 = (ol - SMGI_STEER_SWAY) / (ol * SMGI_STEER_SLIDE_TIME);
         want_sx = ox * k2;
@@ -548,7 +553,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   /* the slide against the speed the character moves at: bounded by the
    * motion's own speed, a runner slowed by shorter strides slid sideways
    * at up to twice the angle the ratio means */
-  float sb = s->slide_ratio * s->own_speed * s->stride;
+  float sb = s->slide_ratio * s->own_speed * s->stride * slide_share;
   want_turn = smgi_clampf(want_turn, -tb, tb);
   float wl = sqrtf(want_sx * want_sx + want_sz * want_sz);
   if (wl > sb) {

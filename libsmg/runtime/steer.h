@@ -38,9 +38,6 @@ typedef struct smgi_steer {
   float turn;             /* heading correction, rad/s */
   float slide[2];         /* translation correction, m/s (x, z) */
   float rate;             /* playback rate: 1 following, < 1 slowing */
-  uint32_t saturated;     /* the turn the path asks for is beyond the limit
-                           * even at the slowest share (the planner lets
-                           * the style yield) */
   float stride;           /* share of the motion's travel kept: < 1 takes
                            * shorter strides for a tight turn (the rest is
                            * slid back along the travel; planted feet keep
@@ -101,7 +98,6 @@ static inline smgi_steer_envelope smgi_steer_envelope_of(const smgi_steer* s) {
   e.slide_ratio = s->slide_ratio;
   e.stop_seconds = s->stop_seconds;
   e.own_speed = s->own_speed;
-  e.saturated = s->saturated;
   return e;
 }
 

@@ -20,7 +20,6 @@ typedef struct smgi_steer_envelope {
   float slide_ratio;   /* translation per metre the motion travels */
   float stop_seconds;  /* braking time at the end */
   float own_speed;     /* the motion's own ground speed, m/s */
-  uint32_t saturated;  /* turning short of the path even at the slowest */
 } smgi_steer_envelope;
 
 /* Turning per metre the steering can add at `speed` m/s: its additive

@@ -162,7 +162,7 @@
 
 /* ---- root steering (steer.c) ---- */
 /* Defaults of the public limits (smg_character_desc). */
-#define SMGI_STEER_TURN_LIMIT 2.0f    /* rad/s of additive heading correction */
+#define SMGI_STEER_TURN_LIMIT 3.0f    /* rad/s of additive heading correction */
 #define SMGI_STEER_SLIDE_RATIO 0.25f  /* translation per metre of motion */
 #define SMGI_STEER_STOP_SECONDS 1.0f  /* braking time at the end */
 /* The method's constants: they are shapes of the control (time constants,
