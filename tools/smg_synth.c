@@ -140,10 +140,12 @@ static void quat_to_zyx(const float* q, double* z, double* y, double* x) {
   double r20 = 2 * (qx * qz - qy * qw), r21 = 2 * (qy * qz + qx * qw);
   double r22 = 1 - 2 * (qx * qx + qy * qy);
   const double deg = 180.0 / 3.14159265358979323846;
-  if (r20 > 0.999999) r20 = 0.999999;
-  if (r20 < -0.999999) r20 = -0.999999;
-  *y = asin(-r20) * deg;
-  if (fabs(r20) < 0.99999) {
+  /* y from atan2, well conditioned at +-90 degrees (asin of a clamped
+   * sine was off by up to a quarter of a degree there: a character
+   * heading along x, y = 90, was written 4 mm off at a metre) */
+  const double cy = sqrt(r00 * r00 + r10 * r10);
+  *y = atan2(-r20, cy) * deg;
+  if (cy > 1e-6) {
     *x = atan2(r21, r22) * deg;
     *z = atan2(r10, r00) * deg;
   } else { /* gimbal lock: put it all in z */
