@@ -155,7 +155,8 @@ smg_result smgb_cover_clips(const smgb_coverage_job* job, uint8_t* covered) {
   /* labels to workers, biggest first onto the least loaded (the split
    * only balances the work: every label is decided alone) */
   for (c = 0; c < job->clip_count; ++c)
-    if (job->clip_first[c] != SMGI_NONE && job->clip_label[c] < job->label_count)
+    if (job->clip_first[c] != SMGI_NONE &&
+        job->clip_label[c] < job->label_count)
       size[job->clip_label[c]] += job->clip_frames[c];
   for (l = 0; l < job->label_count; ++l) {
     uint32_t i = l;

@@ -519,17 +519,19 @@ static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
 /* Big sets: clips whose motion earlier kept clips of their label already
  * cover (bake_coverage.h) get no windows in the search, hence no node, and
  * leave the pool after the graphs are built (bake_pool_compact.h). The
- * radius is the label's median ceiling: a window of a covered clip has a
- * kept window as near as the typical transition the graph accepts. */
+ * radius is the label's transition cut (the sampled percentile cut, no
+ * more than the median ceiling): a window of a covered clip has a kept
+ * window as near as the transitions the graph keeps. */
 static smg_result cover_clips(smgb_bake* b, const smgb_cloud* cloud,
                               const double* heading,
                               const uint32_t* clip_start,
                               const ceilings* ceil_, uint32_t L,
                               uint8_t* vfrom, uint8_t* vinto) {
   smgb_coverage_job job;
-  uint32_t* frames = malloc((b->clip_count ? b->clip_count : 1) * sizeof *frames);
-  uint32_t* label = malloc((b->clip_count ? b->clip_count : 1) * sizeof *label);
-  uint8_t* covered = malloc(b->clip_count ? b->clip_count : 1);
+  size_t nc = b->clip_count ? b->clip_count : 1;
+  uint32_t* frames = malloc(nc * sizeof *frames);
+  uint32_t* label = malloc(nc * sizeof *label);
+  uint8_t* covered = malloc(nc);
   float* radius = malloc((L ? L : 1) * sizeof *radius);
   uint32_t c, l, f;
   smg_result r = SMG_ERROR_OUT_OF_MEMORY;

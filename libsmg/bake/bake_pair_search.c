@@ -67,7 +67,7 @@ typedef struct search {
   uint32_t dims;
   float* frow;                 /* rows x dims (features, rows) */
   float* fcol;                 /* cols x dims */
-  smgb_kd_tree* trees;              /* group_count */
+  smgb_kd_tree* trees;         /* group_count */
   uint32_t groups;
 } search;
 
@@ -365,8 +365,8 @@ static void offer(query* qr, float d, uint32_t j) {
  * the node's cell, built up from the per-dimension offsets `off` of the
  * splits crossed so far (Arya and Mount's incremental distance), a far
  * tighter bound in a dozen dimensions than the last split alone. */
-static void kd_query(const smgb_kd_tree* t, uint32_t node, query* qr, float rd,
-                     float* off) {
+static void kd_query(const smgb_kd_tree* t, uint32_t node, query* qr,
+                     float rd, float* off) {
   const smgb_kd_node* n = &t->nodes[node];
   const smgb_pair_search* job = qr->s->job;
   uint32_t d = qr->s->dims;
