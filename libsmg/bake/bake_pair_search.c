@@ -66,7 +66,8 @@ typedef struct search {
   double W;
   uint32_t dims;
   float* frow;                 /* rows x dims (features, rows) */
-  float* fcol;                 /* cols x dims */
+  float* fcol;                 /* cols x dims (frow itself when shared) */
+  int shared;                  /* rows and cols are one cloud's windows */
   smgb_kd_tree* trees;         /* group_count */
   uint32_t groups;
 } search;
@@ -299,17 +300,24 @@ static int build_features(search* s) {
     order[j] = o;
   }
   basis = malloc((size_t)d * n * sizeof *basis);
+  /* Rows and columns from one cloud (graph searches: the same frames,
+   * only the usable windows differ): one feature array for both, each
+   * window computed once. */
+  s->shared = A->xyz == B->xyz && A->frames == B->frames &&
+              A->weights == B->weights &&
+              job->row_heading == job->col_heading;
   s->frow = malloc((size_t)A->frames * d * sizeof *s->frow);
-  s->fcol = malloc((size_t)B->frames * d * sizeof *s->fcol);
+  s->fcol = s->shared ? s->frow
+                      : malloc((size_t)B->frames * d * sizeof *s->fcol);
   if (!basis || !s->frow || !s->fcol) goto done;
   for (i = 0; i < d; ++i)
     for (j = 0; j < n; ++j) basis[i * n + j] = vec[j * n + order[i]];
-  for (f = 0; f < A->frames + B->frames; ++f) {
+  for (f = 0; f < A->frames + (s->shared ? 0 : B->frames); ++f) {
     int row = f < A->frames;
     uint32_t g = row ? f : f - A->frames;
     const smgb_cloud* c = row ? A : B;
     float* dst = (row ? s->frow : s->fcol) + (size_t)g * d;
-    if (!c->valid[g]) {
+    if (!c->valid[g] && !(s->shared && B->valid[g])) {
       memset(dst, 0, d * sizeof *dst);
       continue;
     }
@@ -559,7 +567,7 @@ static void search_free(search* s) {
   free(s->A.sq);
   free(s->B.sq);
   free(s->frow);
-  free(s->fcol);
+  if (!s->shared) free(s->fcol);
   if (s->trees)
     for (g = 0; g < s->groups; ++g) smgb_kd_free(&s->trees[g]);
   free(s->trees);
@@ -687,6 +695,7 @@ smg_result smgb_pair_features(const smgb_pair_search* job, float** out,
   *out = s.frow;
   *out_dims = s.dims;
   s.frow = NULL;
+  if (s.shared) s.fcol = NULL;
   search_free(&s);
   return SMG_OK;
 }
