@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "bake_kdtree.h"
+#include "bake_options.h"
 #include "bake_pair_search.h"
 #include "bake_threads.h"
 #include "smg_format.h"
@@ -74,10 +75,11 @@ static int decide_label(label_state* s, uint32_t l) {
     for (f = first; f < first + n; ++f) {
       if (!valid[f]) continue;
       ++windows;
-      if (cover && (kept_count == 0 ||
-                    !near_kept(&t, kept, built, kept_count, s->feat, d, f, r2)))
-        cover = 0;
-      if (!cover) break;
+      if (kept_count == 0 ||
+          !near_kept(&t, kept, built, kept_count, s->feat, d, f, r2)) {
+        cover = 0; /* the first window nothing covers decides */
+        break;
+      }
     }
     if (windows == 0) continue; /* no window: nothing to decide */
     if (cover) {
@@ -124,12 +126,12 @@ static void* worker_run(void* arg) {
 
 smg_result smgb_cover_clips(const smgb_coverage_job* job, uint8_t* covered) {
   smgb_pair_search fj;
-  label_state ws[8];
+  label_state ws[SMGB_MAX_THREADS];
   float* feat = NULL;
   uint32_t dims = 0, nt = job->threads ? job->threads : 1u, t, l, c;
   uint32_t* order = NULL;
   uint64_t* size = NULL;
-  uint64_t load[8];
+  uint64_t load[SMGB_MAX_THREADS];
   smg_result r;
   memset(covered, 0, job->clip_count);
   if (job->cloud->frames == 0 || job->label_count == 0) return SMG_OK;
@@ -140,7 +142,7 @@ smg_result smgb_cover_clips(const smgb_coverage_job* job, uint8_t* covered) {
   fj.align = 1;
   r = smgb_pair_features(&fj, &feat, &dims);
   if (r != SMG_OK) return r;
-  if (nt > 8) nt = 8;
+  if (nt > SMGB_MAX_THREADS) nt = SMGB_MAX_THREADS;
   order = malloc(job->label_count * sizeof *order);
   size = calloc(job->label_count, sizeof *size);
   memset(ws, 0, sizeof ws);
