@@ -47,11 +47,18 @@ static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
  * out-edge labelled l, else 1 + min over out-edges of hops[to] (capped at
  * SMGI_HOPS_UNREACHABLE). The sources of every label come from one pass
  * over the edges. `in_first` / `in_from` is the reverse adjacency (CSR),
- * `queue` node_count + 1 scratch (appends write one past the end). */
+ * `queue` node_count + 1 scratch (appends write one past the end), `col`
+ * node_count bytes of scratch.
+ *
+ * Each label's search runs on its own column (`col`, one byte a node) and
+ * is copied into the node-major table afterwards: a BFS touches nodes in
+ * no predictable order, and in the node-major table each touch was a
+ * cache line of its own (a 120k-node graph of 12 styles has a 1.4 MB table,
+ * its column 120 KB). */
 static void compute_hops(const smgi_node* nodes, uint32_t node_count,
                          const smgi_edge* edges, uint32_t label_count,
                          const uint32_t* in_first, const uint32_t* in_from,
-                         uint32_t* queue, uint8_t* hops) {
+                         uint32_t* queue, uint8_t* col, uint8_t* hops) {
   const size_t L = label_count;
   memset(hops, SMGI_HOPS_UNREACHABLE, (size_t)node_count * L);
   for (uint32_t n = 0; n < node_count; ++n) {
@@ -65,23 +72,36 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
   for (uint32_t l = 0; l < label_count; ++l) {
     uint32_t head = 0, tail = 0;
     for (uint32_t n = 0; n < node_count; ++n) {
+      col[n] = hops[n * L + l];
       queue[tail] = n;
-      tail += hops[n * L + l] == 0;
+      tail += col[n] == 0;
     }
     while (head < tail) {
       const uint32_t n = queue[head++];
-      const uint8_t hn = hops[n * L + l];
+      const uint8_t hn = col[n];
       if (hn + 1u >= SMGI_HOPS_UNREACHABLE) continue;
       const uint8_t next = (uint8_t)(hn + 1u);
       for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
         const uint32_t from = in_from[k];
-        uint8_t* hf = &hops[from * L + l];
+        uint8_t* hf = &col[from];
         const uint8_t old = *hf;
         queue[tail] = from;
         tail += old == SMGI_HOPS_UNREACHABLE;
         *hf = old < next ? old : next;
       }
     }
+    for (uint32_t n = 0; n < node_count; ++n) hops[n * L + l] = col[n];
+  }
+}
+
+/* edge_hops (graph_derived.h): each lower edge's from and to rows of
+ * lower_hops, edge by edge. */
+static void build_edge_hops(const smgi_graph_data* d, const uint8_t* hops,
+                            uint8_t* edge_hops) {
+  const size_t S = d->style_count;
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    memcpy(edge_hops + 2u * S * e, hops + S * d->lower_edges[e].from, S);
+    memcpy(edge_hops + 2u * S * e + S, hops + S * d->lower_edges[e].to, S);
   }
 }
 
@@ -722,7 +742,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   const uint32_t LN = d->lower_node_count, UN = d->upper_node_count;
 
   size_t off_lh = 0;
-  size_t off_uh = off_lh + align16((size_t)LN * S);
+  size_t off_eh = off_lh + align16((size_t)LN * S);
+  size_t off_uh = off_eh + align16((size_t)d->lower_edge_count * 2u * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
   size_t off_nn = off_af + align16(sizeof(uint32_t) * (size_t)A);
@@ -742,7 +763,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t maxe = d->lower_edge_count > d->upper_edge_count
                       ? d->lower_edge_count
                       : d->upper_edge_count;
-  size_t scratch_size = sizeof(uint32_t) * (2u * (size_t)maxn + 2u + maxe);
+  size_t scratch_size =
+      sizeof(uint32_t) * (2u * (size_t)maxn + 2u + maxe) + maxn;
   size_t walk_size = sizeof(walk_step) * (size_t)LN;
   size_t turn_size = turn_scratch_size(d);
   if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
@@ -762,6 +784,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   smgi_derived* dv = (smgi_derived*)mem;
   uint8_t* base = mem + block;
   uint8_t* lower_hops = base + off_lh;
+  uint8_t* edge_hops = base + off_eh;
   uint8_t* upper_hops = base + off_uh;
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
   uint32_t* action_first = (uint32_t*)(base + off_af);
@@ -780,12 +803,14 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* in_first = (uint32_t*)scratch;
   uint32_t* in_from = in_first + maxn + 1u;
   uint32_t* queue = in_from + maxe;
+  uint8_t* col = (uint8_t*)(queue + maxn + 1u);
   build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_from);
   compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_from,
-               queue, lower_hops);
+               queue, col, lower_hops);
+  build_edge_hops(d, lower_hops, edge_hops);
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,
-               queue, upper_hops);
+               queue, col, upper_hops);
 
   /* Splice index: SPLC is sorted by lower_frame (validated), so a counting
    * pass gives the CSR offsets. */
@@ -815,6 +840,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   dv->node_trail_edge = trail_edge;
 
   dv->lower_hops = lower_hops;
+  dv->edge_hops = edge_hops;
   dv->upper_hops = upper_hops;
   dv->splice_first = splice_first;
   dv->action_first_edge = action_first;

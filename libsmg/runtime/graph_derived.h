@@ -24,7 +24,14 @@ typedef struct smgi_derived {
    * Drives transition planning: near a transition point the planner
    * prefers edges whose `to` node is fewer hops from the target style. */
   const uint8_t* lower_hops;
-  /* Same for the upper graph and actions. */
+  /* lower_hops' rows again per lower edge, of its from node
+   * (edge_hops[2 * edge * style_count + style]) and then of its to node
+   * (edge_hops[(2 * edge + 1) * style_count + style]): the search's style
+   * term reads both for every edge it weighs, and a node's out-edges are
+   * contiguous, so these rows are too (on a big graph every `to` row in
+   * lower_hops was a cache miss of its own). */
+  const uint8_t* edge_hops;
+  /* Same as lower_hops for the upper graph and actions. */
   const uint8_t* upper_hops;
   /* Splices at lower frame f are splices[splice_first[f] ..
    * splice_first[f + 1]) (SPLC is sorted by lower_frame); frame_count + 1

@@ -82,10 +82,12 @@ static float style_penalty(const smg_graph* g, const smgi_edge* e,
                            uint32_t desired) {
   uint32_t S = g->data.style_count;
   if (desired >= S || e->label == desired) return 0.0f;
-  const uint8_t* hops = smgi_derived_of(g)->lower_hops;
-  if (hops[(size_t)e->from * S + desired] == SMGI_HOPS_UNREACHABLE)
+  /* the hop counts of e's from and to nodes, side by side per edge */
+  const uint8_t* hops = smgi_derived_of(g)->edge_hops +
+                        (size_t)(e - g->data.lower_edges) * 2u * S;
+  if (hops[desired] == SMGI_HOPS_UNREACHABLE)
     return 0.0f; /* cannot get there from here: ignore */
-  uint8_t h = hops[(size_t)e->to * S + desired];
+  uint8_t h = hops[S + desired];
   if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
   return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
 }

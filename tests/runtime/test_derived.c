@@ -366,6 +366,13 @@ static void compare(const char* name, const smgi_graph_data* d,
   const size_t TK = (size_t)LN * K;
   EXPECT_SAME("lower_hops", dv->lower_hops, r->lower_hops, (size_t)LN * S);
   EXPECT_SAME("upper_hops", dv->upper_hops, r->upper_hops, (size_t)UN * A);
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    EXPECT_SAME("edge_hops (from)", dv->edge_hops + 2u * (size_t)S * e,
+                r->lower_hops + (size_t)S * E->from, (size_t)S);
+    EXPECT_SAME("edge_hops (to)", dv->edge_hops + (2u * (size_t)e + 1u) * S,
+                r->lower_hops + (size_t)S * E->to, (size_t)S);
+  }
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
   EXPECT_SAME("action_first_edge", dv->action_first_edge, r->action_first,
