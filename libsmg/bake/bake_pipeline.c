@@ -10,6 +10,8 @@
  *   lower graph    Kovar graph of the locomotion clips, pruned to its
  *                  largest SCC
  *   upper graph    Kovar graph of the action clips, pruned per action
+ *                  (big bakes: then the clips the coverage pass left out
+ *                  of both graphs leave the pool)
  *   simplify       chain merging (both graphs)
  *   splice search  splice candidates + Horn corrections
  *   internodal     transition frames, displacements, arc lengths, blob

@@ -7,8 +7,10 @@
  * writes; bake_pipeline.c runs them in order.
  *
  * The frame POOL holds every clip frame (clips contiguous, each original
- * followed by its mirror) and, at output time, the blended transition frames
- * of the surviving transition edges (two pseudo-clips, lower then upper).
+ * followed by its mirror; in big bakes the covered clips leave it once the
+ * graphs are built, bake_pool_compact.h) and, at output time, the blended
+ * transition frames of the surviving transition edges (two pseudo-clips,
+ * lower then upper).
  * Nodes and edges refer to pool frame indices.
  */
 #ifndef BAKE_STATE_H

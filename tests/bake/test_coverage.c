@@ -4,7 +4,8 @@
  * kept clip's motion are covered, new motion is kept, labels are decided
  * alone and the first clip of each is kept, a radius of 0 covers nothing,
  * the answer does not depend on the thread count; the compacted pool keeps
- * the other clips' frames and every index that refers to them right.
+ * the other clips' frames and every index that refers to them right; and
+ * a whole bake of repeated clips leaves the repeats out of a valid blob.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -16,9 +17,11 @@
 #include <cmocka.h>
 
 #include "bake_coverage.h"
+#include "bake_graph_helpers.h"
 #include "bake_pool.h"
 #include "bake_pool_compact.h"
 #include "bake_state.h"
+#include "smg.h"
 
 #define K 6u
 #define P 5u
@@ -265,6 +268,71 @@ static void test_pool_drop_covered(void** state) {
   smgb_bake_free(&b);
 }
 
+/* A whole bake big enough for the search (and so the pass): copies of a
+ * straight and a turning synthetic walk and of a run, each listed
+ * several times, plus a wave. The copies are covered and leave the blob,
+ * which loads with full validation, keeps both styles and the action, and
+ * is the same for 1 and 2 threads. */
+static void test_bake_leaves_copies_out(void** state) {
+  bg_set s;
+  smg_bake_clip_desc descs[24];
+  smg_bake_desc d;
+  smg_bake_result one, two;
+  smgi_graph_data g;
+  smg_graph* graph = NULL;
+  /* valgrind: just above the size where the search takes over */
+  float seconds = smgt_quick() ? 12.0f : 20.0f;
+  uint32_t i, n = 0, copies = smgt_quick() ? 4u : 6u;
+  (void)state;
+  memset(&s, 0, sizeof s);
+  bg_add(&s, SMGB_SYNTH_WALK, seconds, 0.0f, SMG_BAKE_ROLE_LOWER, "walk");
+  bg_add(&s, SMGB_SYNTH_WALK, seconds, 0.4f, SMG_BAKE_ROLE_LOWER, "walk");
+  bg_add(&s, SMGB_SYNTH_RUN, seconds, 0.0f, SMG_BAKE_ROLE_LOWER, "run");
+  bg_add(&s, SMGB_SYNTH_WAVE, 10.0f, 0.0f, SMG_BAKE_ROLE_UPPER, "wave");
+  for (i = 0; i < copies; ++i) {
+    descs[n++] = s.descs[0];
+    descs[n++] = s.descs[1];
+    descs[n++] = s.descs[2];
+  }
+  descs[n++] = s.descs[3];
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.clips = descs;
+  d.clip_count = n;
+  d.options.struct_size = sizeof d.options;
+  d.options.threads = 1;
+  memset(&one, 0, sizeof one);
+  one.struct_size = sizeof one;
+  if (smg_bake_run(&d, &one) != SMG_OK) fail_msg("%s", one.error);
+  /* mirrored: above the exact grid's size (about 7,000 frames) */
+  assert_true(one.stats.source_frames + one.covered_frame_count >
+              2u * (uint32_t)(30.0f * seconds) * 3u * copies);
+  /* every repeat of a clip (and more) is covered; nothing else is lost */
+  assert_true(one.covered_clip_count >= 2u * 3u * (copies - 1u));
+  assert_int_equal(one.stats.clip_count + one.covered_clip_count, 2u * n);
+  assert_int_equal(one.stats.style_count, 2);
+  assert_int_equal(one.stats.action_count, 2);
+  bg_read(&one, &g);
+  assert_int_equal(g.clip_count, one.stats.clip_count + 2u); /* + blends */
+  for (i = 0; i < g.lower_node_count; ++i)
+    assert_true(g.lower_nodes[i].frame < g.frame_count);
+  assert_int_equal(smg_graph_load_memory(one.blob, one.blob_size, NULL,
+                                         &graph),
+                   SMG_OK);
+  assert_int_equal(smg_graph_destroy(graph), SMG_OK);
+  if (!smgt_quick()) {
+    d.options.threads = 2;
+    memset(&two, 0, sizeof two);
+    two.struct_size = sizeof two;
+    if (smg_bake_run(&d, &two) != SMG_OK) fail_msg("%s", two.error);
+    assert_int_equal(two.blob_size, one.blob_size);
+    assert_memory_equal(two.blob, one.blob, one.blob_size);
+    smg_bake_result_free(&two);
+  }
+  smg_bake_result_free(&one);
+  bg_free(&s);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_copies_covered),
@@ -272,6 +340,7 @@ int main(void) {
       cmocka_unit_test(test_radius_and_threads),
       cmocka_unit_test(test_many_kept),
       cmocka_unit_test(test_pool_drop_covered),
+      cmocka_unit_test(test_bake_leaves_copies_out),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
