@@ -154,6 +154,17 @@ static int frame_stops(const smgi_lower* lower, const smg_graph* g,
   return label >= g->data.style_count || dv->style_can_stop[label];
 }
 
+/* How high the swinging toe of the frame k frames after the playhead is
+ * above the standing one (smgi_settle_lift; 0 when the queue is shorter). */
+static float frame_lift(const smgi_lower* lower, const smg_graph* g,
+                        uint32_t k) {
+  uint32_t entry, offset;
+  if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset))
+    return 0.0f;
+  const smgi_qentry* q = smgi_q_at_c(lower, entry);
+  return smgi_settle_lift(g, g->data.lower_edges[q->edge].first_frame + offset);
+}
+
 /* Frames from the playhead to (seq, offset), or a negative value when the
  * queue no longer holds that entry. */
 static float frames_to(const smgi_lower* lower, const smg_graph* g,
@@ -206,22 +217,19 @@ static float end_stride(const smgi_steer* s, const smgi_lower* lower,
 }
 
 /* How far from the end (dx, dz: where the hips would stand less the end
- * point) a stop `seconds` ahead leaves the character, as the steering
+ * point; (sh, ch) the sine and cosine of the path's last heading) a
+ * stop `seconds` ahead leaves the character, as the steering
  * will show it: the planned motion may stray sideways (a turning clip
  * planned past the end), which the heading and position correction
  * removes on the way there (steer_envelope.h, the reach the planner
  * counts too); a fast style's stop beyond the end is brought back onto
- * it by shorter strides (brake_stride), down to stride_floor of the way
+ * it by shorter strides (brake_stride), down to `floor` (stride_floor) of the way
  * there; a stop short of it stays short. */
-static float stop_miss(const smgi_steer* s, const smgi_step_in* in,
-                       uint32_t style, float dx, float dz, float seconds) {
-  const smgi_path* p = in->path;
-  float sh, ch;
-  smgi_sincosf(smgi_path_heading(p, p->count - 2u), &sh, &ch);
+static float stop_miss(const smgi_steer* s, float floor, float sh,
+                       float ch, float dx, float dz, float seconds) {
   const float way = s->own_speed * seconds;
   float along = dx * sh + dz * ch;
-  if (along > 0.0f)
-    along = fmaxf(along - (1.0f - stride_floor(s, in, style)) * way, 0.0f);
+  if (along > 0.0f) along = fmaxf(along - (1.0f - floor) * way, 0.0f);
   const smgi_steer_envelope env = smgi_steer_envelope_of(s);
   const float reach = smgi_steer_plan_reach(&env, way, s->own_speed);
   const float side = fmaxf(fabsf(dx * ch - dz * sh) - reach, 0.0f);
@@ -254,8 +262,10 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
   if (ahead < limit) return;
   const float brake_way = 0.5f * s->own_speed * s->stride *
                           smgi_derived_of(g)->idle.swing_seconds;
-  float best = INFINITY, x, z;
+  float best = INFINITY, x, z, sh, ch;
   uint32_t best_k = 0, prev = 0;
+  smgi_sincosf(smgi_path_heading(p, p->count - 2u), &sh, &ch);
+  const float floor = stride_floor(s, in, lower->style);
   if (!frame_ground(lower, g, 0, &x, &z, &prev)) return;
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
     uint32_t fl;
@@ -269,9 +279,11 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
      * step, worked out for every frame it can start from (a foot down:
      * a run has no frame with both) */
     const float way = fl ? frame_stand(lower, g, k, &x, &z) : 0.0f;
-    float d = stop_miss(s, in, lower->style, x - ex, z - ez, (float)k / in->fps);
+    float d = stop_miss(s, floor, sh, ch, x - ex, z - ez, (float)k / in->fps);
     if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
     if (!frame_stops(lower, g, k)) d += SMGI_STEER_ONE_FOOT;
+    /* a foot still high in the air lands only after the hips stand */
+    if (fl) d += frame_lift(lower, g, k);
     /* the hips cannot stop from the motion's speed in less than braking
      * evenly over the settling step: from a frame whose settling way is
      * shorter they would stand before the stepping foot lands (a run's

@@ -6,6 +6,9 @@
  *    their floor level), the hips within 0.3 m of the path's end, and on
  *    graphs with standing motion the body never frozen (some joint turns
  *    by at least 1 degree in every 2 s at rest);
+ *  - a stop from a run on an S-curve: slowed to a walk half a second
+ *    before the hips stand, both toes down once they stand, within 0.3 m
+ *    of the end, the longest swing at most 1.6 times the median;
  *  - a start from rest onto a 12 m straight path: the longest swing in
  *    the first 2 s at most 1.5 times the median swing of the walk that
  *    follows, 80 % of that walk's speed within 1.5 s;
