@@ -264,6 +264,7 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
                           smgi_derived_of(g)->idle.swing_seconds;
   float best = INFINITY, x, z, sh, ch;
   uint32_t best_k = 0, prev = 0;
+  int best_good = 0;
   smgi_sincosf(smgi_path_heading(p, p->count - 2u), &sh, &ch);
   const float floor = stride_floor(s, in, lower->style);
   if (!frame_ground(lower, g, 0, &x, &z, &prev)) return;
@@ -293,9 +294,14 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
     if (d < best) {
       best = d;
       best_k = k;
+      best_good = down && frame_stops(lower, g, k);
     }
   }
   if (best_k == 0 || best > SMGI_STEER_STOP_NEAR + SMGI_STEER_NO_FOOT) return;
+  /* no frame to stand on planned yet (a run's flight, the walk still
+   * ahead in the plan): while the end is not passed, follow on and let
+   * the planner bring one */
+  if (!best_good && in->progress < p->length - SMGI_END_EPS) return;
   float frames = (float)best_k - (lower->t - floorf(lower->t));
   if (frames > brake_frames) return;
   uint32_t entry, offset;
