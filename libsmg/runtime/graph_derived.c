@@ -718,6 +718,42 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
 }
 
 /* Which styles have a pose to come to rest on (graph_derived.h). */
+/* Mean speed of style st's lower edges (arc length over their time),
+ * m/s; 0 when it has none. */
+static float style_speed(const smgi_graph_data* d, uint32_t st) {
+  double arc = 0.0, frames = 0.0;
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    if (E->label != st) continue;
+    arc += (double)E->arc_length;
+    frames += (double)E->frame_count;
+  }
+  return frames > 0.0 ? (float)(arc * (double)d->info->frame_rate / frames)
+                      : 0.0f;
+}
+
+/* A style faster than the walk-run transition (SMGI_STOP_FROUDE of the
+ * skeleton's leg length) does not stop in one step, whatever its contact
+ * labels say (a few frames of a run may carry both): a runner slows to a
+ * walk over its last metres first (planner.c). The style it slows to is
+ * the fastest one left that can stop (the least change of speed: a
+ * normal walk before an exhausted one); SMGI_NONE when none can. */
+static void build_stop_style(const smgi_graph_data* d, uint8_t* can_stop,
+                             uint32_t* stop_style, float* stop_speed) {
+  const float fast2 =
+      SMGI_STOP_FROUDE * SMGI_GRAVITY * d->info->leg_length;
+  *stop_style = SMGI_NONE;
+  *stop_speed = 0.0f;
+  for (uint32_t st = 0; st < d->style_count; ++st) {
+    const float v = style_speed(d, st);
+    if (v * v > fast2) can_stop[st] = 0;
+    if (can_stop[st] && (*stop_style == SMGI_NONE || v > *stop_speed)) {
+      *stop_style = st;
+      *stop_speed = v;
+    }
+  }
+}
+
 static void build_can_stop(const smgi_graph_data* d, uint8_t* can_stop) {
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
   memset(can_stop, 0, d->style_count);
@@ -792,6 +828,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
 
   build_edge_mid(d, edge_mid);
   build_can_stop(d, can_stop);
+  build_stop_style(d, can_stop, &dv->stop_style, &dv->stop_speed);
 
   /* BFS scratch: reverse adjacency of either graph and the queue. */
   uint32_t* in_first = (uint32_t*)scratch;

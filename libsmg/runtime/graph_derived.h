@@ -89,8 +89,15 @@ typedef struct smgi_derived {
   /* style_can_stop[style]: 1 when some lower edge of the style has a
    * frame with both feet down, or a frame where support passes straight
    * from one foot to the other - a pose a character can come to rest on
-   * (walks have them, runs with their flight phases do not). */
+   * (walks have them, runs with their flight phases do not) - and whose
+   * speed is below the walk-run transition (SMGI_STOP_FROUDE): a runner
+   * slows to a walk before it stops. */
   const uint8_t* style_can_stop;
+  /* The fastest style that can stop (SMGI_NONE: none) and its mean speed
+   * (m/s): what a character in a style that cannot stop slows to over its
+   * last metres. */
+  uint32_t stop_style;
+  float stop_speed;
   /* The standing motion played at rest (idle.h; count 0: none). */
   smgi_idle idle;
 } smgi_derived;

@@ -66,6 +66,8 @@ typedef struct ref_tables {
   float* trail_dist;
   uint32_t agile_style;
   uint8_t* can_stop;
+  uint32_t stop_style;
+  float stop_speed;
 } ref_tables;
 
 static float ref_fps(const smgi_graph_data* d) {
@@ -268,6 +270,26 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
       if (fl == 3u || (fl && pv && fl != pv)) r->can_stop[E->label] = 1;
     }
   }
+  /* ... unless it is faster than the walk-run transition (Froude number
+   * 0.5 on the leg length); the stop style is the fastest one left */
+  r->stop_style = SMGI_NONE;
+  r->stop_speed = 0.0f;
+  for (uint32_t st = 0; st < S; ++st) {
+    double arc = 0.0, frames = 0.0;
+    for (uint32_t e = 0; e < d->lower_edge_count; ++e)
+      if (d->lower_edges[e].label == st) {
+        arc += d->lower_edges[e].arc_length;
+        frames += d->lower_edges[e].frame_count;
+      }
+    const float v =
+        frames > 0.0 ? (float)(arc * (double)d->info->frame_rate / frames)
+                     : 0.0f;
+    if (v * v > 0.5f * 9.81f * d->info->leg_length) r->can_stop[st] = 0;
+    if (r->can_stop[st] && (r->stop_style == SMGI_NONE || v > r->stop_speed)) {
+      r->stop_style = st;
+      r->stop_speed = v;
+    }
+  }
   float best = -1.0f;
   for (uint32_t st = 0; st < S; ++st) {
     double turn = 0.0, arc = 0.0;
@@ -396,6 +418,8 @@ static void compare(const char* name, const smgi_graph_data* d,
               16u * (size_t)d->lower_edge_count);
   assert_int_equal(dv->agile_style, r->agile_style);
   EXPECT_SAME("style_can_stop", dv->style_can_stop, r->can_stop, (size_t)S);
+  assert_int_equal(dv->stop_style, r->stop_style);
+  assert_true(dv->stop_speed == r->stop_speed);
   for (uint32_t n = 0; n < LN; ++n) {
     for (uint32_t k = 0; k < K; ++k) {
       const size_t i = (size_t)n * K + k;
