@@ -6,7 +6,8 @@
 # standing waves and hand raises) through one manifest of folder patterns
 # (every=N), and prints per size the wall and CPU time, the peak memory,
 # the graphs' node/edge counts and the blob size, then the growth exponent
-# of time against frames (least squares over the sizes, log-log).
+# of time, graph nodes and blob size against the data's frames (least
+# squares over the sizes, log-log).
 #
 # The clips are CC BY-NC-ND: they are unpacked under the build folder and
 # read from there; nothing baked from them is kept (the blobs go to the
@@ -55,10 +56,12 @@ EOF
     tail -5 "$LOG"
     exit 1
   fi
-  # smg-bake's summary: timing table total, clip/frame line, graph lines
+  # smg-bake's summary: timing table total, clip/frame line (frames kept
+  # plus the covered ones: the data's size), graph lines
   awk -v n="1/$N" '
     /^  total / { wall = $2; cpu = $3; peak = $4 }
-    /^  clips / { f = $4; gsub(/,/, "", f) }
+    /^  clips / { c = $4; gsub(/,/, "", c); f += c }
+    /^  covered / { c = $4; gsub(/[(]/, "", c); f += c }
     /^  lower graph: / { for (i = 1; i <= NF; ++i) if ($i == "after") { ln = $(i-3); le = $(i-1) } }
     /^  upper graph: / { for (i = 1; i <= NF; ++i) if ($i == "after") { un = $(i-3); ue = $(i-1) } }
     /^  wrote / { b = $(NF-1); gsub(/[()]/, "", b); blob = b / 1048576 }
@@ -66,18 +69,22 @@ EOF
   ' "$LOG" | tee -a "$OUT/table.txt.$$"
   SKIPPED=$(grep -c "skipped, it cannot be used" "$LOG" || true)
   [ "$SKIPPED" -gt 0 ] && echo "       ($SKIPPED unusable clips skipped, named in $LOG)"
+  COVERED=$(awk '/^  covered / { print $2 }' "$LOG")
+  [ -n "$COVERED" ] && echo "       ($COVERED clips covered by kept ones: not in the graphs or the blob)"
   rm -f "$OUT/scale_$N.smg"
 done
 # growth exponents: slope of log(y) against log(frames)
 awk '
   { x = log($2); n++; sx += x; sxx += x * x
-    yw = log($3); yc = log($4); yb = log($10)
-    sw += yw; sxw += x * yw; sc += yc; sxc += x * yc; sb += yb; sxb += x * yb }
+    yw = log($3); yc = log($4); yb = log($10); yn = log($6 + $8)
+    sw += yw; sxw += x * yw; sc += yc; sxc += x * yc; sb += yb; sxb += x * yb
+    sn += yn; sxn += x * yn }
   END {
     if (n < 2) exit
     d = n * sxx - sx * sx
-    printf "growth exponent over %d sizes: wall %.2f, cpu %.2f, blob %.2f\n", n,
-      (n * sxw - sx * sw) / d, (n * sxc - sx * sc) / d, (n * sxb - sx * sb) / d
+    printf "growth exponent over %d sizes: wall %.2f, cpu %.2f, nodes %.2f, blob %.2f\n", n,
+      (n * sxw - sx * sw) / d, (n * sxc - sx * sc) / d, (n * sxn - sx * sn) / d,
+      (n * sxb - sx * sb) / d
   }' "$OUT/table.txt.$$"
 rm -f "$OUT/table.txt.$$"
 echo "bench-bake-scale: load average $(cut -d' ' -f1-3 /proc/loadavg) at the end"

@@ -20,6 +20,10 @@
  *     is <= 2.5 us per character on the CMU graph on a quiet machine).
  * Graphs: build/default.smg (synthetic, baked by `make`) when present,
  * blobs named on the command line, and the small test fixture graph.
+ * With `--ref BLOB` (make bench-runtime: the CMU graph) every other blob
+ * named is also compared with that one: crowds of 1 to 5000 on both
+ * graphs stepped in alternating frames, medians and their ratio (the big
+ * graph of the scale set, issue 25: target <= 1.3x).
  * Per-frame costs are thread CPU time (clock_gettime THREAD_CPUTIME), so
  * other processes on a shared machine do not inflate them; the edit frame
  * and blob load also print wall time. Figures only; nothing here passes or
@@ -284,17 +288,18 @@ static double bench_crowd(smg_graph* g, int n, uint32_t flags, int frames,
   return m;
 }
 
-/* What root steering costs: two crowds of n, steering on and off, stepped
- * in alternating frames after the same warm-up, so load from other
- * processes falls on both alike (timed one after the other, the two
+/* Two crowds of n - graph ga with character flags fa, graph gb with fb -
+ * stepped in alternating frames after the same warm-up, so load from
+ * other processes falls on both alike (timed one after the other, the two
  * medians moved by 30 % between runs on a shared machine). Medians of the
- * per-character frame time of each, and of the ratio of the frames of
+ * per-character frame time of each, and of the ratio a/b of the frames of
  * each pair. */
-static int bench_steer_pair(smg_graph* g, int n, int frames, double* on,
-                            double* off, double* ratio) {
+static int bench_pair(smg_graph* ga, uint32_t fa, smg_graph* gb, uint32_t fb,
+                      int n, int frames, double* on, double* off,
+                      double* ratio) {
   crowd a, b;
-  int ok_a = crowd_make(g, n, 0u, &a);
-  int ok_b = ok_a && crowd_make(g, n, SMG_CHARACTER_NO_STEERING, &b);
+  int ok_a = crowd_make(ga, n, fa, &a);
+  int ok_b = ok_a && crowd_make(gb, n, fb, &b);
   if (!ok_a || !ok_b) {
     crowd_free(&a);
     if (ok_a) crowd_free(&b);
@@ -327,6 +332,14 @@ static int bench_steer_pair(smg_graph* g, int n, int frames, double* on,
   crowd_free(&a);
   crowd_free(&b);
   return 1;
+}
+
+/* What root steering costs: n characters with it on against n with it
+ * off on the same graph. */
+static int bench_steer_pair(smg_graph* g, int n, int frames, double* on,
+                            double* off, double* ratio) {
+  return bench_pair(g, 0u, g, SMG_CHARACTER_NO_STEERING, n, frames, on, off,
+                    ratio);
 }
 
 /* Single character, each frame timed on its own. */
@@ -498,10 +511,16 @@ static void run_graph(const char* name, const void* blob, size_t size) {
   printf("edit frame (set_path 10^5 points + step + pose): median %.1f us, "
          "p99 %.1f us wall, %.1f us CPU (target p99 <= 1000 us)\n",
          med, p99, cpu99);
-  printf("blob load from memory (full checksum): median %.1f us; "
-         "without checksum %.1f us (target <= 1000 us)\n",
-         bench_load(blob, size, 100, 0),
-         bench_load(blob, size, 100, SMG_GRAPH_SKIP_CHECKSUM));
+  {
+    /* a big graph (hundreds of MB) loads in a tenth of a second or more:
+     * fewer repetitions */
+    const int reps = size > ((size_t)64 << 20) ? 11 : 100;
+    printf("blob load from memory (full checksum): median %.1f us; "
+           "without checksum %.1f us (target <= 1000 us; big graphs <= "
+           "100000 us)\n",
+           bench_load(blob, size, reps, 0),
+           bench_load(blob, size, reps, SMG_GRAPH_SKIP_CHECKSUM));
+  }
   /* the default desc, its default path buffer included; the share
    * without the path from a 16-point buffer (12 bytes a point, 16-byte
    * aligned: exact) */
@@ -520,6 +539,38 @@ static void run_graph(const char* name, const void* blob, size_t size) {
   smg_graph_destroy(g);
 }
 
+/* Step+pose per character on graph `name` against the reference graph,
+ * crowds of both stepped in alternating frames (bench_pair): medians and
+ * the median ratio per crowd size. */
+static void compare_graphs(const char* name, const void* blob, size_t size,
+                           const char* ref_name, const void* ref_blob,
+                           size_t ref_size) {
+  smg_graph *g = NULL, *ref = NULL;
+  if (smg_graph_load_memory(blob, size, NULL, &g) != SMG_OK ||
+      smg_graph_load_memory(ref_blob, ref_size, NULL, &ref) != SMG_OK) {
+    printf("%s vs %s: cannot load\n", name, ref_name);
+    if (g) smg_graph_destroy(g);
+    return;
+  }
+  printf("\n== %s vs %s (reference): step+pose per character, crowds on "
+         "both graphs in alternating frames (target <= 1.3x) ==\n",
+         name, ref_name);
+  const int counts[4] = {1, 100, 1000, 5000};
+  const int frames[4] = {3000, 600, 120, 60};
+  for (int i = 0; i < 4; ++i) {
+    double a, b, ratio;
+    if (!bench_pair(g, 0u, ref, 0u, counts[i], frames[i], &a, &b, &ratio)) {
+      printf("crowd of %d: create failed\n", counts[i]);
+      continue;
+    }
+    printf("%4d characters: %.3f us on this graph, %.3f us on the "
+           "reference, ratio %.2fx\n",
+           counts[i], a, b, ratio);
+  }
+  smg_graph_destroy(g);
+  smg_graph_destroy(ref);
+}
+
 int main(int argc, char** argv) {
   printf("libsmg runtime benchmark (one core, dt = 1/60 s, medians of "
          "thread CPU time unless marked wall; crowds timed after %d steps "
@@ -535,8 +586,13 @@ int main(int argc, char** argv) {
   } else {
     printf("(%s not found: run `make` to bake it)\n", path);
   }
-  /* further blobs named on the command line, e.g. a CMU bake */
+  /* further blobs named on the command line, e.g. a CMU bake; the one
+   * after --ref is also the reference the others are compared with */
+  const char* ref_name = NULL;
   for (int i = 1; i < argc; ++i) {
+    if (!strcmp(argv[i], "--ref") && i + 1 < argc) {
+      ref_name = argv[++i];
+    }
     blob = read_file(argv[i], &size);
     if (!blob) {
       printf("(%s not readable, skipped)\n", argv[i]);
@@ -551,5 +607,18 @@ int main(int argc, char** argv) {
     run_graph("test fixture graph", fb, fsize);
     smgi_blob_free(fb, NULL);
   }
+  size_t ref_size = 0;
+  void* ref_blob = ref_name ? read_file(ref_name, &ref_size) : NULL;
+  for (int i = 1; ref_blob && i < argc; ++i) {
+    if (!strcmp(argv[i], "--ref")) {
+      ++i;
+      continue;
+    }
+    blob = read_file(argv[i], &size);
+    if (!blob) continue;
+    compare_graphs(argv[i], blob, size, ref_name, ref_blob, ref_size);
+    free(blob);
+  }
+  free(ref_blob);
   return 0;
 }

@@ -213,6 +213,12 @@ typedef struct smg_bake_result {
   uint64_t stage_peak_bytes[SMG_BAKE_MAX_STAGES];
   double total_cpu_seconds;
   uint64_t peak_bytes;
+  /* Added with the coverage pass (big sets, docs/baker.md): clips left out
+   * because kept clips of their label already cover their motion, and
+   * their frames (stats.clip_count and stats.source_frames count the
+   * clips and frames kept). */
+  uint32_t covered_clip_count;
+  uint32_t covered_frame_count;
 } smg_bake_result;
 
 /* Bake. `out` must have struct_size set; it is reset first. On failure out

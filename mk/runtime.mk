@@ -8,7 +8,10 @@
 #                         characters per 60 Hz frame (part of `make bench`);
 #                         measures build/default.smg, build/cmu.smg when a
 #                         CMU bake is there (make demo-cmu makes one), and
-#                         the test fixture
+#                         the test fixture; with the Bandai Namco scale set
+#                         in ../shared also the big graph baked from all of
+#                         it (bench/big_graph_blob.sh, mk/big_graph.mk),
+#                         compared with the CMU graph in the same run
 #   make synth-example    smg-synth on the synthetic default blob
 #   make synth-compare SYNTH_BASE=REV
 #                         smg-synth's BVH and CSV, byte for byte, against
@@ -39,8 +42,10 @@ $(BENCH_RUNTIME): bench/bench_runtime.c $(LIBSMG_A) $(LIB_HDR) tests/fixture_gra
 	$(CC) $(CFLAGS_TOOL) -O2 -Itests -DSMG_BUILD_DIR='"$(BUILD)"' $< -o $@ $(LIBSMG_A) -lpthread $(LDLIBS_M)
 
 .PHONY: bench-runtime synth-example synth-compare
-bench-runtime: $(BENCH_RUNTIME)
-	$(BENCH_RUNTIME) $(wildcard $(BUILD)/cmu.smg)
+bench-runtime: $(BENCH_RUNTIME) $(BUILD)/smg-bake
+	@big=$$($(BIG_GRAPH_BLOB_SH)); \
+	echo $(BENCH_RUNTIME) $(if $(wildcard $(BUILD)/cmu.smg),--ref $(BUILD)/cmu.smg) $$big; \
+	$(BENCH_RUNTIME) $(if $(wildcard $(BUILD)/cmu.smg),--ref $(BUILD)/cmu.smg) $$big
 
 synth-example: $(SMG_SYNTH)
 	@mkdir -p $(BUILD)/synth

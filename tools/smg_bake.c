@@ -553,6 +553,11 @@ int main(int argc, char** argv) {
     if (res.skipped_clip_count)
       fprintf(stderr, "\n  %u unusable clips skipped (named above)\n",
               res.skipped_clip_count);
+    if (res.covered_clip_count)
+      fprintf(stderr,
+              "\n  covered %u clips (%u frames): left out, kept clips of "
+              "their labels already hold their motion\n",
+              res.covered_clip_count, res.covered_frame_count);
     fprintf(stderr,
             "\n  clips %u, frames %u + %u blended\n"
             "  lower graph: %u nodes / %u edges before simplification, "

@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_coverage.h"
 #include "bake_graph_build.h"
 #include "bake_pointcloud.h"
 #include "bake_scc.h"
@@ -515,6 +516,63 @@ static smg_result sampled_ceilings(smgb_bake* b, const build_ctx* ctx,
   return r;
 }
 
+/* Big sets: clips whose motion earlier kept clips of their label already
+ * cover (bake_coverage.h) get no windows in the search, hence no node, and
+ * leave the pool after the graphs are built (bake_pool_compact.h). The
+ * radius is the label's transition cut (the sampled percentile cut, no
+ * more than the median ceiling): a window of a covered clip has a kept
+ * window as near as the transitions the graph keeps. */
+static smg_result cover_clips(smgb_bake* b, const smgb_cloud* cloud,
+                              const double* heading,
+                              const uint32_t* clip_start,
+                              const ceilings* ceil_, uint32_t L,
+                              uint8_t* vfrom, uint8_t* vinto) {
+  smgb_coverage_job job;
+  size_t nc = b->clip_count ? b->clip_count : 1;
+  uint32_t* frames = malloc(nc * sizeof *frames);
+  uint32_t* label = malloc(nc * sizeof *label);
+  uint8_t* covered = malloc(nc);
+  float* radius = malloc((L ? L : 1) * sizeof *radius);
+  uint32_t c, l, f;
+  smg_result r = SMG_ERROR_OUT_OF_MEMORY;
+  if (!frames || !label || !covered || !radius) goto done;
+  for (c = 0; c < b->clip_count; ++c) {
+    frames[c] = b->clips[c].count;
+    label[c] = b->clips[c].label;
+  }
+  for (l = 0; l < L; ++l) {
+    float m = ceil_->median[l * L + l];
+    if (ceil_->cut[l] < m) m = ceil_->cut[l];
+    radius[l] = m < INFINITY ? m : 0.0f;
+  }
+  memset(&job, 0, sizeof job);
+  job.cloud = cloud;
+  job.heading = heading;
+  job.window = b->opt.window;
+  job.clip_count = b->clip_count;
+  job.clip_first = clip_start;
+  job.clip_frames = frames;
+  job.clip_label = label;
+  job.label_count = L;
+  job.radius = radius;
+  job.threads = b->opt.threads;
+  r = smgb_cover_clips(&job, covered);
+  if (r != SMG_OK) goto done;
+  for (c = 0; c < b->clip_count; ++c) {
+    if (clip_start[c] == SMGI_NONE) continue;
+    b->clips[c].covered = covered[c];
+    if (!covered[c]) continue;
+    for (f = 0; f < b->clips[c].count; ++f)
+      vfrom[clip_start[c] + f] = vinto[clip_start[c] + f] = 0;
+  }
+done:
+  free(frames);
+  free(label);
+  free(covered);
+  free(radius);
+  return r;
+}
+
 /* mark[f] = label + 1 for every pool frame lying on an original edge
  * inside the largest strongly connected component of its label. */
 static smg_result mark_cores(const smgb_bake* b, const smgb_graph* g,
@@ -833,6 +891,8 @@ smg_result smgb_build_graph(smgb_bake* b, uint32_t role) {
     r = smgb_grid_minima(&grid, &mins, &min_count);
   } else {
     r = sampled_ceilings(b, &ctx, &cloud, clip_start, &ceil_, L);
+    if (r == SMG_OK)
+      r = cover_clips(b, &cloud, heading, clip_start, &ceil_, L, vfrom, vinto);
     if (r == SMG_OK) r = smgb_pair_search_minima(&job, &mins, &min_count);
   }
 

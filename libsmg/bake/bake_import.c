@@ -22,6 +22,7 @@
 #include "bake_import_util.h"
 #include "bake_pool.h"
 #include "bake_retarget.h"
+#include "bake_threads.h"
 
 static const char* base_name(const char* path) {
   const char* s = strrchr(path, '/');
@@ -233,10 +234,76 @@ static smg_result check_desc(smgb_bake* b, const clip_job* job) {
   return r;
 }
 
+/* A BVH file parsed ahead (parse_ahead). */
+typedef struct parsed {
+  int done;                    /* parsed: r, err and clip are its result */
+  smg_result r;
+  smgb_error err;
+  smgb_clip clip;
+} parsed;
+
+/* Clips taken per batch of parse_ahead. */
+#define IMPORT_BATCH 64u
+
+typedef struct parse_worker {
+  const smg_bake_desc* desc;
+  parsed* out;
+  uint32_t i0, n, t, nt;
+} parse_worker;
+
+static void* parse_run(void* arg) {
+  const parse_worker* w = arg;
+  uint32_t u;
+  for (u = w->t; u < w->n; u += w->nt) {
+    const smg_bake_clip_desc* d = &w->desc->clips[w->i0 + u];
+    parsed* p = &w->out[u];
+    char path[2048];
+    if (!d->path) continue;
+    join_data_dir(w->desc, d->path, path, sizeof path);
+    if (!smgb_has_ext(path, ".bvh")) continue;
+    p->err.message[0] = '\0';
+    p->r = smgb_bvh_load(path, d->unit_scale, d->skip_first_frame, &p->clip,
+                         &p->err);
+    p->done = 1;
+  }
+  return NULL;
+}
+
+/* The BVH files of clips [i0, i0 + n) parsed in parallel: parsing is most
+ * of the import's work and each file's is its own. The clips are then
+ * taken in order as before (read_clip uses the parse), so what is kept
+ * and reported does not depend on the thread count. Other files (assimp)
+ * are read in order. */
+static void parse_ahead(const smgb_bake* b, const smg_bake_desc* desc,
+                        uint32_t i0, uint32_t n, parsed* out) {
+  parse_worker w[SMGB_MAX_THREADS];
+  uint32_t t, nt = b->opt.threads < 1u ? 1u : b->opt.threads;
+  if (nt > SMGB_MAX_THREADS) nt = SMGB_MAX_THREADS;
+  memset(out, 0, n * sizeof *out);
+  for (t = 0; t < nt; ++t) {
+    w[t].desc = desc;
+    w[t].out = out;
+    w[t].i0 = i0;
+    w[t].n = n;
+    w[t].t = t;
+    w[t].nt = nt;
+  }
+  smgb_run_workers(w, sizeof w[0], nt, parse_run);
+}
+
+/* Frees what a batch parsed and no clip took. */
+static void drop_parsed(parsed* pre) {
+  uint32_t u;
+  for (u = 0; u < IMPORT_BATCH; ++u)
+    if (pre[u].done) smgb_clip_free(&pre[u].clip);
+  memset(pre, 0, IMPORT_BATCH * sizeof *pre);
+}
+
 /* The clip from its file (BVH, else glTF/GLB/FBX/... through assimp) or
- * from memory, cropped to its frame range. */
+ * from memory, cropped to its frame range. `pre`: its file parsed ahead
+ * (NULL or not done: parse it now). */
 static smg_result read_clip(smgb_bake* b, const smg_bake_desc* desc,
-                            clip_job* job) {
+                            clip_job* job, parsed* pre) {
   const smg_bake_clip_desc* d = job->d;
   smg_result r;
   if (d->path) {
@@ -246,10 +313,15 @@ static smg_result read_clip(smgb_bake* b, const smg_bake_desc* desc,
     snprintf(job->name, sizeof job->name, "%.63s",
              d->name ? d->name : base_name(job->path));
     job->source = job->path;
-    if (smgb_has_ext(job->path, ".bvh"))
+    if (smgb_has_ext(job->path, ".bvh") && pre && pre->done) {
+      r = pre->r;
+      err = pre->err;
+      job->clip = pre->clip; /* taken over */
+      memset(pre, 0, sizeof *pre);
+    } else if (smgb_has_ext(job->path, ".bvh")) {
       r = smgb_bvh_load(job->path, d->unit_scale, d->skip_first_frame,
                         &job->clip, &err);
-    else
+    } else
       r = smgb_assimp_load(job->path, d->unit_scale, d->animation_index,
                            &job->clip, &err);
     if (r != SMG_OK) {
@@ -372,7 +444,7 @@ static smg_result add_to_pool(smgb_bake* b, const clip_job* job,
               SMGB_MAX_LABELS);
     return SMG_ERROR_CAPACITY;
   }
-  r = smgb_pool_add_clip(b, rs, job->name, label, flags, SMGI_NONE);
+  r = smgb_pool_append_clip(b, rs, job->name, label, flags, SMGI_NONE);
   if (r != SMG_OK ||
       !(d->mirror == SMG_BAKE_MIRROR_YES ||
         (d->mirror == SMG_BAKE_MIRROR_DEFAULT && !b->opt.no_mirror)))
@@ -383,8 +455,8 @@ static smg_result add_to_pool(smgb_bake* b, const clip_job* job,
   if (r != SMG_OK)
     smgb_fail(&b->report, "%s: mirroring failed", job->at);
   else
-    r = smgb_pool_add_clip(b, &mir, mname, label, flags | SMGI_CLIP_MIRROR,
-                           src);
+    r = smgb_pool_append_clip(b, &mir, mname, label,
+                              flags | SMGI_CLIP_MIRROR, src);
   b->bake_flags |= 1u;
   smgb_clip_free(&mir);
   return r;
@@ -393,7 +465,7 @@ static smg_result add_to_pool(smgb_bake* b, const clip_job* job,
 /* Clip `i` of `desc` into the pool. *fatal is set when the failure leaves
  * nothing later clips could be put on (the blob's skeleton, memory). */
 static smg_result import_clip(smgb_bake* b, const smg_bake_desc* desc,
-                              uint32_t i, int* fatal) {
+                              uint32_t i, parsed* pre, int* fatal) {
   clip_job job;
   smgb_clip rs;
   smg_result r;
@@ -402,7 +474,7 @@ static smg_result import_clip(smgb_bake* b, const smg_bake_desc* desc,
   job.d = &desc->clips[i];
   where(job.d, i, job.at, sizeof job.at);
   r = check_desc(b, &job);
-  if (r == SMG_OK) r = read_clip(b, desc, &job);
+  if (r == SMG_OK) r = read_clip(b, desc, &job, pre);
   if (r == SMG_OK && b->J == 0) {
     r = fix_skeleton(b, &job);
     if (r != SMG_OK) *fatal = 1;
@@ -444,9 +516,19 @@ smg_result smgb_import_clips(smgb_bake* b, const smg_bake_desc* desc) {
   smg_result r = load_target(b, desc), first = SMG_OK;
   int fatal = r != SMG_OK, have_lower = 0;
   uint32_t i;
+  /* without memory for it, every file is parsed in order */
+  parsed* pre = calloc(IMPORT_BATCH, sizeof *pre);
   for (i = 0; i < desc->clip_count && !fatal; ++i) {
     uint32_t mark = smgb_report_mark(&b->report);
-    r = import_clip(b, desc, i, &fatal);
+    if (pre && i % IMPORT_BATCH == 0) {
+      drop_parsed(pre);
+      parse_ahead(b, desc, i,
+                  desc->clip_count - i < IMPORT_BATCH ? desc->clip_count - i
+                                                      : IMPORT_BATCH,
+                  pre);
+    }
+    r = import_clip(b, desc, i, pre ? &pre[i % IMPORT_BATCH] : NULL,
+                    &fatal);
     if (r == SMG_OK)
       have_lower |= desc->clips[i].role == SMG_BAKE_ROLE_LOWER;
     else if (!fatal && (desc->clips[i].flags & SMG_BAKE_CLIP_SKIP_UNUSABLE))
@@ -455,6 +537,10 @@ smg_result smgb_import_clips(smgb_bake* b, const smg_bake_desc* desc) {
       first = r;
     smgb_progress(&b->report, (float)(i + 1) / (float)desc->clip_count);
   }
+  if (pre) drop_parsed(pre);
+  free(pre);
+  /* FK, ground frames, contacts and phase of every clip, in parallel */
+  smgb_pool_derive_clips(b, 0, b->opt.threads);
   if (first == SMG_OK && fatal) first = r;
   if (first == SMG_OK && !have_lower) {
     smgb_fail(&b->report, "no lower-body (locomotion) clip given");

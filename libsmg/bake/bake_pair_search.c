@@ -39,12 +39,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_kdtree.h"
 #include "bake_threads.h"
 #include "smg_format.h"
 
 #define SMGB_PAIR_DIMS 12u
 #define SMGB_PAIR_MAX_K 64u
-#define LEAF_SIZE 8u
 #define CACHE_BITS 16u
 /* Approximate nearest neighbours: a far cell is searched only if it could
  * hold a window twice as near as the current k-th (squared: 4). The start
@@ -60,28 +60,15 @@ typedef struct sums {
   double *sq, *x, *z;
 } sums;
 
-typedef struct kd_node {
-  uint32_t lo, hi;             /* range of idx[] (leaf) */
-  uint32_t left, right;        /* children, 0 = leaf */
-  uint32_t dim;
-  float split;
-} kd_node;
-
-typedef struct kd_tree {
-  kd_node* nodes;
-  uint32_t count, cap;
-  uint32_t* idx;               /* column windows of the group */
-  uint32_t n;
-} kd_tree;
-
 typedef struct search {
   const smgb_pair_search* job;
   sums A, B;
   double W;
   uint32_t dims;
   float* frow;                 /* rows x dims (features, rows) */
-  float* fcol;                 /* cols x dims */
-  kd_tree* trees;              /* group_count */
+  float* fcol;                 /* cols x dims (frow itself when shared) */
+  int shared;                  /* rows and cols are one cloud's windows */
+  smgb_kd_tree* trees;         /* group_count */
   uint32_t groups;
 } search;
 
@@ -313,17 +300,24 @@ static int build_features(search* s) {
     order[j] = o;
   }
   basis = malloc((size_t)d * n * sizeof *basis);
+  /* Rows and columns from one cloud (graph searches: the same frames,
+   * only the usable windows differ): one feature array for both, each
+   * window computed once. */
+  s->shared = A->xyz == B->xyz && A->frames == B->frames &&
+              A->weights == B->weights &&
+              job->row_heading == job->col_heading;
   s->frow = malloc((size_t)A->frames * d * sizeof *s->frow);
-  s->fcol = malloc((size_t)B->frames * d * sizeof *s->fcol);
+  s->fcol = s->shared ? s->frow
+                      : malloc((size_t)B->frames * d * sizeof *s->fcol);
   if (!basis || !s->frow || !s->fcol) goto done;
   for (i = 0; i < d; ++i)
     for (j = 0; j < n; ++j) basis[i * n + j] = vec[j * n + order[i]];
-  for (f = 0; f < A->frames + B->frames; ++f) {
+  for (f = 0; f < A->frames + (s->shared ? 0 : B->frames); ++f) {
     int row = f < A->frames;
     uint32_t g = row ? f : f - A->frames;
     const smgb_cloud* c = row ? A : B;
     float* dst = (row ? s->frow : s->fcol) + (size_t)g * d;
-    if (!c->valid[g]) {
+    if (!c->valid[g] && !(s->shared && B->valid[g])) {
       memset(dst, 0, d * sizeof *dst);
       continue;
     }
@@ -347,96 +341,7 @@ done:
   return ok;
 }
 
-/* ---- kd-tree -------------------------------------------------------------- */
-
-static uint32_t kd_push(kd_tree* t) {
-  if (t->count == t->cap) {
-    uint32_t cap = t->cap ? t->cap * 2u : 64u;
-    kd_node* n = realloc(t->nodes, cap * sizeof *n);
-    if (!n) return UINT32_MAX;
-    t->nodes = n;
-    t->cap = cap;
-  }
-  memset(&t->nodes[t->count], 0, sizeof t->nodes[0]);
-  return t->count++;
-}
-
-/* Order of two windows along a dimension; ties by index, so that the tree
- * does not depend on the sort's path. */
-static int kd_less(const float* fc, uint32_t d, uint32_t dim, uint32_t a,
-                   uint32_t b) {
-  float va = fc[(size_t)a * d + dim], vb = fc[(size_t)b * d + dim];
-  return va < vb || (va == vb && a < b);
-}
-
-/* Partition idx[lo, hi) so that the element at `nth` is in its sorted
- * place (quickselect). */
-static void kd_select(const float* fc, uint32_t d, uint32_t dim,
-                      uint32_t* idx, uint32_t lo, uint32_t hi, uint32_t nth) {
-  while (hi - lo > 1) {
-    uint32_t mid = lo + (hi - lo) / 2, piv, i, store, tmp;
-    /* median of three as the pivot */
-    uint32_t a = idx[lo], b = idx[mid], c = idx[hi - 1];
-    uint32_t m = kd_less(fc, d, dim, a, b)
-                     ? (kd_less(fc, d, dim, b, c) ? mid
-                        : kd_less(fc, d, dim, a, c) ? hi - 1 : lo)
-                     : (kd_less(fc, d, dim, a, c) ? lo
-                        : kd_less(fc, d, dim, b, c) ? hi - 1 : mid);
-    piv = idx[m];
-    idx[m] = idx[hi - 1];
-    idx[hi - 1] = piv;
-    store = lo;
-    for (i = lo; i + 1 < hi; ++i)
-      if (kd_less(fc, d, dim, idx[i], piv)) {
-        tmp = idx[i];
-        idx[i] = idx[store];
-        idx[store++] = tmp;
-      }
-    idx[hi - 1] = idx[store];
-    idx[store] = piv;
-    if (store == nth) return;
-    if (nth < store)
-      hi = store;
-    else
-      lo = store + 1;
-  }
-}
-
-static uint32_t kd_build(kd_tree* t, const float* fc, uint32_t d, uint32_t lo,
-                         uint32_t hi, int* ok) {
-  uint32_t node = kd_push(t), i, dim, best = 0, mid;
-  float spread = -1.0f;
-  if (node == UINT32_MAX) {
-    *ok = 0;
-    return 0;
-  }
-  t->nodes[node].lo = lo;
-  t->nodes[node].hi = hi;
-  if (hi - lo <= LEAF_SIZE) return node;
-  for (dim = 0; dim < d; ++dim) {
-    float mn = INFINITY, mx = -INFINITY;
-    for (i = lo; i < hi; ++i) {
-      float v = fc[(size_t)t->idx[i] * d + dim];
-      if (v < mn) mn = v;
-      if (v > mx) mx = v;
-    }
-    if (mx - mn > spread) {
-      spread = mx - mn;
-      best = dim;
-    }
-  }
-  mid = lo + (hi - lo) / 2;
-  kd_select(fc, d, best, t->idx, lo, hi, mid);
-  t->nodes[node].dim = best;
-  t->nodes[node].split = fc[(size_t)t->idx[mid] * d + best];
-  {
-    uint32_t l = kd_build(t, fc, d, lo, mid, ok);
-    uint32_t r = *ok ? kd_build(t, fc, d, mid, hi, ok) : 0;
-    t->nodes[node].left = l;
-    t->nodes[node].right = r;
-  }
-  return node;
-}
+/* ---- nearest windows ---------------------------------------------------- */
 
 typedef struct query {
   const search* s;
@@ -468,9 +373,9 @@ static void offer(query* qr, float d, uint32_t j) {
  * the node's cell, built up from the per-dimension offsets `off` of the
  * splits crossed so far (Arya and Mount's incremental distance), a far
  * tighter bound in a dozen dimensions than the last split alone. */
-static void kd_query(const kd_tree* t, uint32_t node, query* qr, float rd,
-                     float* off) {
-  const kd_node* n = &t->nodes[node];
+static void kd_query(const smgb_kd_tree* t, uint32_t node, query* qr,
+                     float rd, float* off) {
+  const smgb_kd_node* n = &t->nodes[node];
   const smgb_pair_search* job = qr->s->job;
   uint32_t d = qr->s->dims;
   if (!n->left) {
@@ -662,12 +567,9 @@ static void search_free(search* s) {
   free(s->A.sq);
   free(s->B.sq);
   free(s->frow);
-  free(s->fcol);
+  if (!s->shared) free(s->fcol);
   if (s->trees)
-    for (g = 0; g < s->groups; ++g) {
-      free(s->trees[g].nodes);
-      free(s->trees[g].idx);
-    }
+    for (g = 0; g < s->groups; ++g) smgb_kd_free(&s->trees[g]);
   free(s->trees);
 }
 
@@ -694,10 +596,7 @@ static int build_trees(search* s) {
       s->trees[gr].idx[s->trees[gr].n++] = f;
   }
   for (g = 0; g < s->groups; ++g) {
-    int ok = 1;
-    if (s->trees[g].n == 0) continue;
-    kd_build(&s->trees[g], s->fcol, s->dims, 0, s->trees[g].n, &ok);
-    if (!ok) return 0;
+    if (!smgb_kd_build(&s->trees[g], s->fcol, s->dims)) return 0;
   }
   return 1;
 }
@@ -771,4 +670,32 @@ smg_result smgb_pair_search_minima(const smgb_pair_search* job,
   }
   search_free(&s);
   return res;
+}
+
+smg_result smgb_pair_features(const smgb_pair_search* job, float** out,
+                              uint32_t* out_dims) {
+  search s;
+  uint32_t p;
+  double wsum = 0.0;
+  *out = NULL;
+  *out_dims = 0;
+  if (job->rows->frames == 0 || job->cols->frames == 0 || job->window == 0 ||
+      job->rows->points != job->cols->points || job->rows->points == 0)
+    return SMG_ERROR_INVALID_ARGUMENT;
+  memset(&s, 0, sizeof s);
+  s.job = job;
+  for (p = 0; p < job->rows->points; ++p) wsum += job->rows->weights[p];
+  s.W = wsum * job->window;
+  if (!(s.W > 0.0)) return SMG_ERROR_INVALID_ARGUMENT;
+  if (!window_sums(job->rows, job->window, &s.A) ||
+      !window_sums(job->cols, job->window, &s.B) || !build_features(&s)) {
+    search_free(&s);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  *out = s.frow;
+  *out_dims = s.dims;
+  s.frow = NULL;
+  if (s.shared) s.fcol = NULL;
+  search_free(&s);
+  return SMG_OK;
 }

@@ -58,4 +58,14 @@ typedef struct smgb_pair_search {
 smg_result smgb_pair_search_minima(const smgb_pair_search* job,
                                    smgb_minimum** out, uint32_t* out_count);
 
+/* The pose features the search's kd-trees hold: *out gets `*dims` floats
+ * per window of job->rows (zeros where the window is not valid), on the
+ * principal axes of job->cols' windows. A window's features are its
+ * point cloud sampled at 3 of its k steps (in the window's own floor frame
+ * when align = 1), each point scaled by sqrt(w_p), so the squared feature
+ * distance of two windows is about 3 / k of their windowed distance D
+ * (less by what the dropped axes hold). */
+smg_result smgb_pair_features(const smgb_pair_search* job, float** out,
+                              uint32_t* dims);
+
 #endif /* BAKE_PAIR_SEARCH_H */

@@ -10,6 +10,8 @@
  *   lower graph    Kovar graph of the locomotion clips, pruned to its
  *                  largest SCC
  *   upper graph    Kovar graph of the action clips, pruned per action
+ *                  (big bakes: then the clips the coverage pass left out
+ *                  of both graphs leave the pool)
  *   simplify       chain merging (both graphs)
  *   splice search  splice candidates + Horn corrections
  *   internodal     transition frames, displacements, arc lengths, blob
@@ -30,6 +32,7 @@
 #include "bake_graph_build.h"
 #include "bake_import.h"
 #include "bake_pipeline.h"
+#include "bake_pool_compact.h"
 #include "bake_options.h"
 #include "bake_output.h"
 #include "bake_scc.h"
@@ -170,6 +173,8 @@ static void fill_stats(const smgb_bake* b, smg_bake_result* out) {
   for (c = 0; c < SMGB_MAX_LABELS; ++c)
     out->upper_phase_fallbacks += (uint32_t)(b->upper_phase_free >> c & 1u);
   out->skipped_clip_count = b->skipped_clips;
+  out->covered_clip_count = b->covered_clips;
+  out->covered_frame_count = b->covered_frames;
 }
 
 /* Every problem of the bake into the result: the first error as its one
@@ -211,6 +216,10 @@ smg_result smgb_pipeline_run(const smg_bake_desc* desc,
   stage_begin(b, &c, "upper graph");
   if ((r = upper_graph(b)) != SMG_OK) goto done;
   stage_end(b, &c, out);
+
+  /* covered clips (big sets) have no node: their frames go before the
+   * transitions' blend frames are appended */
+  smgb_pool_drop_covered(b);
 
   stage_begin(b, &c, "simplify");
   if ((r = simplify(b)) != SMG_OK) goto done;

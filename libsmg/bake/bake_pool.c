@@ -11,6 +11,8 @@
 #include "bake_contacts.h"
 #include "bake_pool.h"
 #include "bake_math.h"
+#include "bake_options.h"
+#include "bake_threads.h"
 
 smg_result smgb_pool_reserve(smgb_bake* b, uint32_t frames) {
   uint32_t need = b->frame_count + frames, cap;
@@ -84,9 +86,9 @@ smgb_pool_clip* smgb_pool_new_clip(smgb_bake* b, const char* name,
   return c;
 }
 
-smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
-                              const char* name, uint32_t label,
-                              uint32_t flags, uint32_t source_clip) {
+smg_result smgb_pool_append_clip(smgb_bake* b, const smgb_clip* clip,
+                                 const char* name, uint32_t label,
+                                 uint32_t flags, uint32_t source_clip) {
   smgb_pool_clip* c;
   uint32_t f, index;
   smg_result r;
@@ -109,9 +111,49 @@ smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
     fr->phase = -1.0f;
   }
   b->frame_count += clip->frame_count;
-  smgb_pool_derive(b, c->first, c->count);
-  smgb_contacts_clip(b, index);
   return SMG_OK;
+}
+
+smg_result smgb_pool_add_clip(smgb_bake* b, const smgb_clip* clip,
+                              const char* name, uint32_t label,
+                              uint32_t flags, uint32_t source_clip) {
+  smg_result r = smgb_pool_append_clip(b, clip, name, label, flags,
+                                       source_clip);
+  if (r == SMG_OK) {
+    uint32_t index = b->clip_count - 1u;
+    smgb_pool_derive(b, b->clips[index].first, b->clips[index].count);
+    smgb_contacts_clip(b, index);
+  }
+  return r;
+}
+
+typedef struct derive_worker {
+  smgb_bake* b;
+  uint32_t first_clip, t, n;
+} derive_worker;
+
+static void* derive_run(void* arg) {
+  const derive_worker* w = arg;
+  uint32_t c;
+  for (c = w->first_clip + w->t; c < w->b->clip_count; c += w->n) {
+    smgb_pool_derive(w->b, w->b->clips[c].first, w->b->clips[c].count);
+    smgb_contacts_clip(w->b, c);
+  }
+  return NULL;
+}
+
+void smgb_pool_derive_clips(smgb_bake* b, uint32_t first_clip,
+                            uint32_t threads) {
+  derive_worker w[SMGB_MAX_THREADS];
+  uint32_t t, n = threads < 1u ? 1u : threads;
+  if (n > SMGB_MAX_THREADS) n = SMGB_MAX_THREADS;
+  for (t = 0; t < n; ++t) {
+    w[t].b = b;
+    w[t].first_clip = first_clip;
+    w[t].t = t;
+    w[t].n = n;
+  }
+  smgb_run_workers(w, sizeof w[0], n, derive_run);
 }
 
 uint32_t smgb_pool_clip_of(const smgb_bake* b, uint32_t frame) {

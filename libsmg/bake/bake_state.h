@@ -7,8 +7,10 @@
  * writes; bake_pipeline.c runs them in order.
  *
  * The frame POOL holds every clip frame (clips contiguous, each original
- * followed by its mirror) and, at output time, the blended transition frames
- * of the surviving transition edges (two pseudo-clips, lower then upper).
+ * followed by its mirror; in big bakes the covered clips leave it once the
+ * graphs are built, bake_pool_compact.h) and, at output time, the blended
+ * transition frames of the surviving transition edges (two pseudo-clips,
+ * lower then upper).
  * Nodes and edges refer to pool frame indices.
  */
 #ifndef BAKE_STATE_H
@@ -32,6 +34,9 @@ typedef struct smgb_pool_clip {
   uint32_t label;              /* style or action index */
   uint32_t flags;              /* SMGI_CLIP_* */
   uint32_t source_clip;        /* mirror: the clip it mirrors, else self */
+  uint32_t covered;            /* 1: kept clips of its label already cover
+                                  its motion (bake_coverage.h); it gets no
+                                  node and leaves the pool before the blob */
 } smgb_pool_clip;
 
 typedef struct smgb_splice {
@@ -80,6 +85,8 @@ typedef struct smgb_bake {
 
   uint32_t bake_flags;
   uint32_t skipped_clips;      /* unusable clips left out (bake_import.c) */
+  uint32_t covered_clips;      /* clips the coverage pass left out */
+  uint32_t covered_frames;     /* and their frames */
 } smgb_bake;
 
 /* An empty bake: default options (smgb_options_resolve fills them), no

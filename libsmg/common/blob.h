@@ -16,6 +16,18 @@
  * words in eight lanes; see checksum.c and docs/blob-format.md). */
 uint64_t smgi_blob_checksum(const void* data, size_t size);
 
+/* The same checksum in pieces, so that a reader can check records while
+ * their bytes are still in the cache: begin, then blocks of whole 64-byte
+ * blocks in order, then end with the last size % 64 bytes and the total
+ * size. Gives exactly smgi_blob_checksum's value. */
+typedef struct smgi_wh64 {
+  uint64_t lane[8];
+} smgi_wh64;
+void smgi_wh64_begin(smgi_wh64* h);
+void smgi_wh64_blocks(smgi_wh64* h, const void* data, size_t size);
+uint64_t smgi_wh64_end(smgi_wh64* h, const void* tail, size_t tail_size,
+                       size_t total_size);
+
 /* Serialise `graph` into one freshly allocated, 16-byte aligned buffer
  * (through `allocator`, NULL = malloc). Same input -> byte-identical output
  * (padding is zeroed). The writer validates what it writes with the same

@@ -47,11 +47,18 @@ static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
  * out-edge labelled l, else 1 + min over out-edges of hops[to] (capped at
  * SMGI_HOPS_UNREACHABLE). The sources of every label come from one pass
  * over the edges. `in_first` / `in_from` is the reverse adjacency (CSR),
- * `queue` node_count + 1 scratch (appends write one past the end). */
+ * `queue` node_count + 1 scratch (appends write one past the end), `col`
+ * node_count bytes of scratch.
+ *
+ * Each label's search runs on its own column (`col`, one byte a node) and
+ * is copied into the node-major table afterwards: a BFS touches nodes in
+ * no predictable order, and in the node-major table each touch was a
+ * cache line of its own (a 120k-node graph of 12 styles has a 1.4 MB table,
+ * its column 120 KB). */
 static void compute_hops(const smgi_node* nodes, uint32_t node_count,
                          const smgi_edge* edges, uint32_t label_count,
                          const uint32_t* in_first, const uint32_t* in_from,
-                         uint32_t* queue, uint8_t* hops) {
+                         uint32_t* queue, uint8_t* col, uint8_t* hops) {
   const size_t L = label_count;
   memset(hops, SMGI_HOPS_UNREACHABLE, (size_t)node_count * L);
   for (uint32_t n = 0; n < node_count; ++n) {
@@ -65,23 +72,36 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
   for (uint32_t l = 0; l < label_count; ++l) {
     uint32_t head = 0, tail = 0;
     for (uint32_t n = 0; n < node_count; ++n) {
+      col[n] = hops[n * L + l];
       queue[tail] = n;
-      tail += hops[n * L + l] == 0;
+      tail += col[n] == 0;
     }
     while (head < tail) {
       const uint32_t n = queue[head++];
-      const uint8_t hn = hops[n * L + l];
+      const uint8_t hn = col[n];
       if (hn + 1u >= SMGI_HOPS_UNREACHABLE) continue;
       const uint8_t next = (uint8_t)(hn + 1u);
       for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
         const uint32_t from = in_from[k];
-        uint8_t* hf = &hops[from * L + l];
+        uint8_t* hf = &col[from];
         const uint8_t old = *hf;
         queue[tail] = from;
         tail += old == SMGI_HOPS_UNREACHABLE;
         *hf = old < next ? old : next;
       }
     }
+    for (uint32_t n = 0; n < node_count; ++n) hops[n * L + l] = col[n];
+  }
+}
+
+/* edge_hops (graph_derived.h): each lower edge's from and to rows of
+ * lower_hops, edge by edge. */
+static void build_edge_hops(const smgi_graph_data* d, const uint8_t* hops,
+                            uint8_t* edge_hops) {
+  const size_t S = d->style_count;
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    memcpy(edge_hops + 2u * S * e, hops + S * d->lower_edges[e].from, S);
+    memcpy(edge_hops + 2u * S * e + S, hops + S * d->lower_edges[e].to, S);
   }
 }
 
@@ -102,28 +122,32 @@ static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
   in_first[0] = 0;
 }
 
-/* natural[n]: the out-edge continuing node n's original motion, else its
- * cheapest edge, else SMGI_NONE. */
-static void find_natural(const smgi_graph_data* d, uint32_t* natural) {
+/* nx[n].natural: the out-edge continuing node n's original motion, else
+ * its cheapest edge, else SMGI_NONE; with the node's edge range. */
+static void find_natural(const smgi_graph_data* d, smgi_node_next* nx) {
   for (uint32_t n = 0; n < d->lower_node_count; ++n) {
     const smgi_node* node = &d->lower_nodes[n];
-    natural[n] = SMGI_NONE;
+    uint32_t* natural = &nx[n].natural;
+    nx[n].first_edge = node->first_edge;
+    nx[n].edge_count = node->edge_count;
+    nx[n].unused[0] = nx[n].unused[1] = nx[n].unused[2] = 0;
+    *natural = SMGI_NONE;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
       const smgi_edge* e = &d->lower_edges[node->first_edge + k];
       if (e->first_frame == node->frame &&
           !(e->flags & SMGI_EDGE_TRANSITION)) {
-        natural[n] = node->first_edge + k;
+        *natural = node->first_edge + k;
         break;
       }
     }
-    if (natural[n] == SMGI_NONE && node->edge_count > 0) {
+    if (*natural == SMGI_NONE && node->edge_count > 0) {
       /* no original motion continues here: the cheapest edge stands in */
       uint32_t best = node->first_edge;
       for (uint32_t k = 1; k < node->edge_count; ++k)
         if (d->lower_edges[node->first_edge + k].cost <
             d->lower_edges[best].cost)
           best = node->first_edge + k;
-      natural[n] = best;
+      *natural = best;
     }
   }
 }
@@ -168,19 +192,18 @@ static void put_sample(float* o, float x, float z, float h, float arc) {
  * (the first two edges of every walk are exact, later ones drift by a few
  * ulps of the rotation: <= 3.4e-6 m over the 2 s walks of a CMU graph).
  * The SSE2 and plain versions do the same operations lane by lane. */
-static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
-                        walk_step* ws, float* trail, float* trail_frames,
-                        uint32_t* trail_edge) {
+static void build_walks(const smgi_graph_data* d, smgi_node_next* nx,
+                        walk_step* ws) {
   const uint32_t LN = d->lower_node_count, K = SMGI_TRAIL_SAMPLES;
   const float fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0f;
   const float step = SMGI_TRAIL_STEP_SECONDS * fps;
   for (uint32_t m = 0; m < LN; ++m) {
     walk_step* w = &ws[m];
-    if (natural[m] == SMGI_NONE) {
+    if (nx[m].natural == SMGI_NONE) {
       w->next = NULL;
       continue;
     }
-    const smgi_edge* E = &d->lower_edges[natural[m]];
+    const smgi_edge* E = &d->lower_edges[nx[m].natural];
     float c, s;
     smgi_sincosf(E->displacement[2], &s, &c);
     w->a[0] = E->displacement[0];
@@ -234,15 +257,14 @@ static void build_walks(const smgi_graph_data* d, const uint32_t* natural,
         from = w;
         cur = w->next;
       }
-      const size_t i = (size_t)n * K + k;
 #if SMGI_DERIVED_SSE
       _mm_storeu_ps(xz, acc);
-      put_sample(trail + 4u * i, xz[0], xz[1], h, arc);
+      put_sample(nx[n].trail + 4u * k, xz[0], xz[1], h, arc);
 #else
-      put_sample(trail + 4u * i, x, z, h, arc);
+      put_sample(nx[n].trail + 4u * k, x, z, h, arc);
 #endif
-      trail_frames[i] = frames;
-      trail_edge[i] = natural[from - ws];
+      nx[n].trail_frames[k] = frames;
+      nx[n].trail_edge[k] = nx[from - ws].natural;
     }
   }
 }
@@ -579,7 +601,7 @@ static uint32_t short_edge_levels(const smgi_graph_data* d, uint32_t* level,
 }
 
 static void build_turn(const smgi_graph_data* d, void* scratch,
-                       float* node_turn) {
+                       smgi_node_next* nx) {
   const uint32_t LN = d->lower_node_count;
   const uint32_t T = turn_horizon(d);
   const turn_rings rg = turn_rings_of(d);
@@ -652,8 +674,8 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   for (uint32_t n = 0; n < LN; ++n) {
     const float* r =
         hist + (size_t)n * row + 2u * (TURN_SLACK + (T & rg.mask));
-    node_turn[2u * n] = r[0];
-    node_turn[2u * n + 1u] = r[1];
+    nx[n].turn[0] = r[0];
+    nx[n].turn[1] = r[1];
   }
 }
 
@@ -696,6 +718,42 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
 }
 
 /* Which styles have a pose to come to rest on (graph_derived.h). */
+/* Mean speed of style st's lower edges (arc length over their time),
+ * m/s; 0 when it has none. */
+static float style_speed(const smgi_graph_data* d, uint32_t st) {
+  double arc = 0.0, frames = 0.0;
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    if (E->label != st) continue;
+    arc += (double)E->arc_length;
+    frames += (double)E->frame_count;
+  }
+  return frames > 0.0 ? (float)(arc * (double)d->info->frame_rate / frames)
+                      : 0.0f;
+}
+
+/* A style faster than the walk-run transition (SMGI_STOP_FROUDE of the
+ * skeleton's leg length) does not stop in one step, whatever its contact
+ * labels say (a few frames of a run may carry both): a runner slows to a
+ * walk over its last metres first (planner.c). The style it slows to is
+ * the fastest one left that can stop (the least change of speed: a
+ * normal walk before an exhausted one); SMGI_NONE when none can. */
+static void build_stop_style(const smgi_graph_data* d, uint8_t* can_stop,
+                             uint32_t* stop_style, float* stop_speed) {
+  const float fast2 =
+      SMGI_STOP_FROUDE * SMGI_GRAVITY * d->info->leg_length;
+  *stop_style = SMGI_NONE;
+  *stop_speed = 0.0f;
+  for (uint32_t st = 0; st < d->style_count; ++st) {
+    const float v = style_speed(d, st);
+    if (v * v > fast2) can_stop[st] = 0;
+    if (can_stop[st] && (*stop_style == SMGI_NONE || v > *stop_speed)) {
+      *stop_style = st;
+      *stop_speed = v;
+    }
+  }
+}
+
 static void build_can_stop(const smgi_graph_data* d, uint8_t* can_stop) {
   const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
   memset(can_stop, 0, d->style_count);
@@ -721,35 +779,33 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   const uint32_t S = d->style_count, A = d->action_count;
   const uint32_t LN = d->lower_node_count, UN = d->upper_node_count;
 
-  size_t off_lh = 0;
-  size_t off_uh = off_lh + align16((size_t)LN * S);
+  /* node_next first: 64-byte records at the block's (64-aligned) start */
+  size_t off_nx = 0;
+  size_t off_lh = off_nx + sizeof(smgi_node_next) * (size_t)LN;
+  size_t off_eh = off_lh + align16((size_t)LN * S);
+  size_t off_uh = off_eh + align16((size_t)d->lower_edge_count * 2u * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
-  size_t off_nn = off_af + align16(sizeof(uint32_t) * (size_t)A);
-  const size_t TK = (size_t)LN * SMGI_TRAIL_SAMPLES;
-  size_t off_tr = off_nn + align16(sizeof(uint32_t) * (size_t)LN);
-  size_t off_tf = off_tr + align16(sizeof(float) * 4u * TK);
-  size_t off_te = off_tf + align16(sizeof(float) * TK);
-  size_t off_nt = off_te + align16(sizeof(uint32_t) * TK);
-  size_t off_em = off_nt + align16(sizeof(float) * 2u * (size_t)LN);
+  size_t off_em = off_af + align16(sizeof(uint32_t) * (size_t)A);
   size_t off_cs =
       off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
   size_t total = off_cs + align16((size_t)S);
-  size_t block = align16(sizeof(smgi_derived));
+  size_t block = (sizeof(smgi_derived) + 63u) & ~(size_t)63u;
 
   /* One scratch block for the phases below, sized for the largest. */
   uint32_t maxn = LN > UN ? LN : UN;
   uint32_t maxe = d->lower_edge_count > d->upper_edge_count
                       ? d->lower_edge_count
                       : d->upper_edge_count;
-  size_t scratch_size = sizeof(uint32_t) * (2u * (size_t)maxn + 2u + maxe);
+  size_t scratch_size =
+      sizeof(uint32_t) * (2u * (size_t)maxn + 2u + maxe) + maxn;
   size_t walk_size = sizeof(walk_step) * (size_t)LN;
   size_t turn_size = turn_scratch_size(d);
   if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
   if (walk_size > scratch_size) scratch_size = walk_size;
   if (turn_size > scratch_size) scratch_size = turn_size;
 
-  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 16);
+  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 64);
   if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
   void* scratch = smgi_alloc(&g->allocator, scratch_size, 16);
   if (!scratch) {
@@ -762,30 +818,30 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   smgi_derived* dv = (smgi_derived*)mem;
   uint8_t* base = mem + block;
   uint8_t* lower_hops = base + off_lh;
+  uint8_t* edge_hops = base + off_eh;
   uint8_t* upper_hops = base + off_uh;
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
   uint32_t* action_first = (uint32_t*)(base + off_af);
-  uint32_t* natural = (uint32_t*)(base + off_nn);
-  float* trail = (float*)(base + off_tr);
-  float* trail_frames = (float*)(base + off_tf);
-  uint32_t* trail_edge = (uint32_t*)(base + off_te);
-  float* node_turn = (float*)(base + off_nt);
+  smgi_node_next* nx = (smgi_node_next*)(base + off_nx);
   float* edge_mid = (float*)(base + off_em);
   uint8_t* can_stop = base + off_cs;
 
   build_edge_mid(d, edge_mid);
   build_can_stop(d, can_stop);
+  build_stop_style(d, can_stop, &dv->stop_style, &dv->stop_speed);
 
   /* BFS scratch: reverse adjacency of either graph and the queue. */
   uint32_t* in_first = (uint32_t*)scratch;
   uint32_t* in_from = in_first + maxn + 1u;
   uint32_t* queue = in_from + maxe;
+  uint8_t* col = (uint8_t*)(queue + maxn + 1u);
   build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_from);
   compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_from,
-               queue, lower_hops);
+               queue, col, lower_hops);
+  build_edge_hops(d, lower_hops, edge_hops);
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,
-               queue, upper_hops);
+               queue, col, upper_hops);
 
   /* Splice index: SPLC is sorted by lower_frame (validated), so a counting
    * pass gives the CSR offsets. */
@@ -802,19 +858,16 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
     if (l < A) action_first[l] = e - 1u;
   }
 
-  find_natural(d, natural);
-  build_walks(d, natural, (walk_step*)scratch, trail, trail_frames,
-              trail_edge);
-  build_turn(d, scratch, node_turn);
+  find_natural(d, nx);
+  build_walks(d, nx, (walk_step*)scratch);
+  build_turn(d, scratch, nx);
   smgi_free(&g->allocator, scratch);
 
-  dv->node_turn = node_turn;
   dv->edge_mid = edge_mid;
-  dv->node_trail = trail;
-  dv->node_trail_frames = trail_frames;
-  dv->node_trail_edge = trail_edge;
+  dv->node_next = nx;
 
   dv->lower_hops = lower_hops;
+  dv->edge_hops = edge_hops;
   dv->upper_hops = upper_hops;
   dv->splice_first = splice_first;
   dv->action_first_edge = action_first;
@@ -829,7 +882,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
       double turn = 0.0, arc = 0.0;
       for (uint32_t n = 0; n < LN; ++n) {
         if (d->lower_nodes[n].label != st) continue;
-        const float* tr = trail + 4u * (size_t)n * SMGI_TRAIL_SAMPLES;
+        const float* tr = nx[n].trail;
         float h = 0.0f;
         for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES; ++k) {
           turn += fabs((double)smgi_wrap_angle(tr[4u * k + 2u] - h));
@@ -844,7 +897,6 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
       }
     }
   }
-  dv->natural_next = natural;
   dv->style_can_stop = can_stop;
   smgi_idle_choose(g, &dv->idle);
   g->derived = dv;

@@ -17,6 +17,39 @@
 
 #define SMGI_HOPS_UNREACHABLE 255u
 
+/* What the sequence search reads of lower node n, in one 128-byte record
+ * aligned to 64 bytes (two cache lines): on a big graph (100k+ nodes) each
+ * of these was a table of its own and a cache miss of its own for every
+ * node the search reached.
+ *  - first_edge, edge_count: the node's out-edges, as in LNOD;
+ *  - natural: the out-edge continuing the node's original motion
+ *    (first_frame == the node's frame, not a transition), else its
+ *    cheapest, else SMGI_NONE;
+ *  - trail[4 k .. 4 k + 3]: the natural continuation sampled every
+ *    SMGI_TRAIL_STEP_SECONDS (at the first edge end past each step): dx,
+ *    dz, dheading in the node's ground frame and the arc length;
+ *    trail_frames[k] the frames elapsed there (equal to the previous
+ *    sample's when the continuation ended) and trail_edge[k] the edge
+ *    playing then. The search values what follows its last choice from
+ *    this in O(1) per sample;
+ *  - turn[0], turn[1]: the largest heading change to the left (+) and to
+ *    the right (magnitude) that any edge sequence from the node reaches
+ *    within SMGI_TURN_SECONDS - whether a turn is possible soon, beyond
+ *    what the planner searches (a straight walking loop whose exits to
+ *    turning clips are far away looks as good as any other until then). */
+typedef struct smgi_node_next {
+  float trail[4u * SMGI_TRAIL_SAMPLES];
+  float trail_frames[SMGI_TRAIL_SAMPLES];
+  uint32_t trail_edge[SMGI_TRAIL_SAMPLES];
+  float turn[2];
+  uint32_t natural;
+  uint32_t first_edge, edge_count;
+  uint32_t unused[3]; /* zero: pads the record to 128 bytes */
+} smgi_node_next;
+/* two cache lines exactly (SMGI_TRAIL_SAMPLES is 4) */
+typedef char smgi_node_next_is_128_bytes[sizeof(smgi_node_next) == 128u ? 1
+                                                                         : -1];
+
 typedef struct smgi_derived {
   /* lower_hops[node * style_count + style]: number of edges to traverse
    * from `node` before an out-edge labelled `style` is available (0: the
@@ -24,7 +57,14 @@ typedef struct smgi_derived {
    * Drives transition planning: near a transition point the planner
    * prefers edges whose `to` node is fewer hops from the target style. */
   const uint8_t* lower_hops;
-  /* Same for the upper graph and actions. */
+  /* lower_hops' rows again per lower edge, of its from node
+   * (edge_hops[2 * edge * style_count + style]) and then of its to node
+   * (edge_hops[(2 * edge + 1) * style_count + style]): the search's style
+   * term reads both for every edge it weighs, and a node's out-edges are
+   * contiguous, so these rows are too (on a big graph every `to` row in
+   * lower_hops was a cache miss of its own). */
+  const uint8_t* edge_hops;
+  /* Same as lower_hops for the upper graph and actions. */
   const uint8_t* upper_hops;
   /* Splices at lower frame f are splices[splice_first[f] ..
    * splice_first[f + 1]) (SPLC is sorted by lower_frame); frame_count + 1
@@ -33,26 +73,9 @@ typedef struct smgi_derived {
   /* First upper edge labelled with each action (SMGI_NONE if none): the
    * entry used when a splice must happen but no candidate was found. */
   const uint32_t* action_first_edge;
-  /* natural_next[node]: the out-edge continuing the node's original
-   * motion (first_frame == the node's frame, not a transition), or
-   * SMGI_NONE. */
-  const uint32_t* natural_next;
-  /* node_trail[(node * SMGI_TRAIL_SAMPLES + k) * 4]: the natural
-   * continuation sampled every SMGI_TRAIL_STEP_SECONDS (at the first edge
-   * end past each step): dx, dz, dheading in the node's ground frame and
-   * the arc length; node_trail_frames the frames elapsed there (equal to
-   * the previous sample's when the continuation ended) and
-   * node_trail_edge the edge playing then. The planner's sequence search
-   * values what follows its last choice from this in O(1) per sample. */
-  const float* node_trail;
-  const float* node_trail_frames;
-  const uint32_t* node_trail_edge;
-  /* node_turn[2 * node]: the largest heading change to the left (+) and
-   * to the right (magnitude) that any edge sequence from the node reaches
-   * within SMGI_TURN_SECONDS - whether a turn is possible soon, beyond
-   * what the planner searches (a straight walking loop whose exits to
-   * turning clips are far away looks as good as any other until then). */
-  const float* node_turn;
+  /* node_next[node]: what the planner's sequence search reads of a lower
+   * node, in one record (below). */
+  const struct smgi_node_next* node_next;
   /* edge_mid[4 * edge] for lower edges of 4+ frames: the root's ground
    * transform at frame frame_count / 2 relative to the edge's start (x, z,
    * heading; 4th unused), i.e. inverse(ground(from.frame)) * ground(mid).
@@ -66,8 +89,15 @@ typedef struct smgi_derived {
   /* style_can_stop[style]: 1 when some lower edge of the style has a
    * frame with both feet down, or a frame where support passes straight
    * from one foot to the other - a pose a character can come to rest on
-   * (walks have them, runs with their flight phases do not). */
+   * (walks have them, runs with their flight phases do not) - and whose
+   * speed is below the walk-run transition (SMGI_STOP_FROUDE): a runner
+   * slows to a walk before it stops. */
   const uint8_t* style_can_stop;
+  /* The fastest style that can stop (SMGI_NONE: none) and its mean speed
+   * (m/s): what a character in a style that cannot stop slows to over its
+   * last metres. */
+  uint32_t stop_style;
+  float stop_speed;
   /* The standing motion played at rest (idle.h; count 0: none). */
   smgi_idle idle;
 } smgi_derived;

@@ -82,10 +82,12 @@ static float style_penalty(const smg_graph* g, const smgi_edge* e,
                            uint32_t desired) {
   uint32_t S = g->data.style_count;
   if (desired >= S || e->label == desired) return 0.0f;
-  const uint8_t* hops = smgi_derived_of(g)->lower_hops;
-  if (hops[(size_t)e->from * S + desired] == SMGI_HOPS_UNREACHABLE)
+  /* the hop counts of e's from and to nodes, side by side per edge */
+  const uint8_t* hops = smgi_derived_of(g)->edge_hops +
+                        (size_t)(e - g->data.lower_edges) * 2u * S;
+  if (hops[desired] == SMGI_HOPS_UNREACHABLE)
     return 0.0f; /* cannot get there from here: ignore */
-  uint8_t h = hops[(size_t)e->to * S + desired];
+  uint8_t h = hops[S + desired];
   if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
   return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
 }
@@ -277,10 +279,10 @@ static float seq_value(const smgi_seq_ctx* c, const smgi_seq_state* st) {
  * walk) stands for the rest of the window, style included. */
 float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
   const smg_graph* g = c->g;
-  const smgi_derived* dv = smgi_derived_of(g);
-  const float* tr = dv->node_trail + 4u * (size_t)st.node * SMGI_TRAIL_SAMPLES;
-  const float* tf = dv->node_trail_frames + (size_t)st.node * SMGI_TRAIL_SAMPLES;
-  const uint32_t* te = dv->node_trail_edge + (size_t)st.node * SMGI_TRAIL_SAMPLES;
+  const smgi_node_next* nx = &smgi_derived_of(g)->node_next[st.node];
+  const float* tr = nx->trail;
+  const float* tf = nx->trail_frames;
+  const uint32_t* te = nx->trail_edge;
   const float f0 = st.f, u0 = st.u;
   float pf = 0.0f, pu = 0.0f, px = st.W.x, pz = st.W.z;
   /* beyond the window: can the motion turn towards the path soon? The
@@ -296,7 +298,7 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     float ax = qx - st.W.x, az = qz - st.W.z;
     if (ax * ax + az * az > 1e-4f) {
       float need = smgi_wrap_angle(fast_atan2(ax, az) - st.W.h);
-      const float* cap = dv->node_turn + 2u * st.node;
+      const float* cap = nx->turn;
       float rest = fabsf(need) - (need > 0.0f ? cap[0] : cap[1]);
       if (rest > 0.0f) st.pen += SMGI_TURN_WEIGHT * rest;
     }
@@ -343,12 +345,11 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
  * when the graph or the budget ends first). */
 void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
                     uint32_t depth, float* best) {
-  const smg_graph* g = c->g;
-  const smgi_derived* dv = smgi_derived_of(g);
+  const smgi_node_next* next = smgi_derived_of(c->g)->node_next;
   for (uint32_t d = 0; d < SMGI_SEQ_MAX_DEPTH && depth < SMGI_SEQ_PATH_CAP; ++d) {
-    const smgi_node* n = &g->data.lower_nodes[st.node];
+    /* the node's out-edges, from the record the leaf reads too */
+    const smgi_node_next* n = &next[st.node];
     if (st.f >= c->T || n->edge_count == 0 || c->budget == 0) break;
-    uint32_t nat = dv->natural_next[st.node];
     if (n->edge_count > 1u) {
       if (branches == 0) break;
       /* children cheapest first: good bounds early prune the most */
@@ -379,7 +380,6 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
         c->path[depth] = kid_edge[i];
         smgi_seq_dfs(c, kids[i], branches - 1u, depth + 1u, best);
       }
-      (void)nat;
       return;
     }
     /* a single exit: no choice */

@@ -98,6 +98,27 @@ static void make_cand(const job* j, smgi_xform2 W, float s,
   }
 }
 
+/* Coming to rest at the end in a style that does not stop in one step
+ * (a run, graph_derived.h): for the last metres the graph's stop style
+ * (its fastest walk) is wanted instead, as a runner slows to a walk
+ * before stopping - from where that walk, braking over the steering's
+ * stop_seconds plus SMGI_STEER_SETTLE_SECONDS, reaches the end. Where the
+ * graph needs more of the run to reach a walk than that, the run brakes
+ * itself with shorter strides (steer.c, brake_stride). */
+static void slow_to_stop(const job* j, smgi_seq_ctx* sc, float s) {
+  const smgi_derived* dv = smgi_derived_of(j->in->graph);
+  const smgi_steer_envelope* st = j->steer;
+  if (!st->enabled || j->in->path->count < 2u ||
+      dv->stop_style == SMGI_NONE || dv->style_can_stop[sc->style0])
+    return;
+  const float way = dv->stop_speed *
+                        (st->stop_seconds + SMGI_STEER_SETTLE_SECONDS) +
+                    SMGI_STEER_STOP_NEAR;
+  if (j->in->path->length - s >= way) return;
+  sc->style0 = dv->stop_style;
+  sc->style_end = INFINITY;
+}
+
 /* Score all out-edges of `node` from (W, s, seg), sorted best first
  * (ties by edge index, so the order is deterministic). */
 static uint32_t rank_pass(const job* j, uint32_t node,
@@ -111,12 +132,8 @@ static uint32_t rank_pass(const job* j, uint32_t node,
   smgi_seq_ctx sc;
   smgi_seq_init(&sc, j->in, j->steer, W, s, seg);
   sc.best_len = 0;
-  /* coming to rest at the end in a style with no pose to rest on (a
-   * run): the graph's most agile style (walking) is wanted for the last
-   * metres (steer.c) */
-  sc.yield = yield || (smgi_steer_settling(j->steer, j->in->path->count,
-                                           j->in->path->length, s) &&
-                       !smgi_derived_of(g)->style_can_stop[sc.style0]);
+  sc.yield = yield;
+  slow_to_stop(j, &sc, s);
   *following = sc.following && !sc.lost;
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg, 0.0f};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];

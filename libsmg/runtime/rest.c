@@ -82,6 +82,16 @@ static float path_turn(const smgi_rest_io* io) {
   return smgi_wrap_angle(smgi_atan2f(x, z) - io->pose->heading);
 }
 
+/* The floor foot f stands on at the stop: the lowest its toe has stood
+ * (the foot IK's stand_y, the same floor smgi_rest_feet puts the feet
+ * on), else its toe's height as shown (`shown`). A run's stop frame can
+ * hold both feet in the air: the standing motion laid on their heights
+ * stood 3 cm above the floor. */
+static float stop_floor(const smgi_rest_io* io, uint32_t f, float shown) {
+  const float stand = io->ik->feet[f].stand_y;
+  return stand < INFINITY ? stand : shown;
+}
+
 static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
   const smgi_idle* idle = &smgi_derived_of(io->in->graph)->idle;
   const smgi_info* info = io->in->graph->data.info;
@@ -109,8 +119,8 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
     for (uint32_t f = 0; f < 2u; ++f)
       if (ground->on && !isnan(ground->foot_y[f])) under[f] = ground->foot_y[f];
     if (tl < J && tr < J)
-      r->rise = fminf(io->pose->wpos[3u * tl + 1u] - under[0],
-                      io->pose->wpos[3u * tr + 1u] - under[1]) -
+      r->rise = fminf(stop_floor(io, 0u, io->pose->wpos[3u * tl + 1u] - under[0]),
+                      stop_floor(io, 1u, io->pose->wpos[3u * tr + 1u] - under[1])) -
                 idle->floor;
     else
       r->rise = 0.0f;

@@ -82,3 +82,11 @@ void smgi_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
   *dz = sp.end[1] - r2[1];
 }
 
+
+float smgi_settle_lift(const smg_graph* g, uint32_t frame) {
+  const smgi_info* info = g->data.info;
+  float l[3], r[3];
+  smgi_frame_joint(g, frame, info->left_leg[3], l);
+  smgi_frame_joint(g, frame, info->right_leg[3], r);
+  return fabsf(l[1] - r[1]);
+}

@@ -34,4 +34,9 @@ void smgi_settle_plan(const smg_graph* g, const float (*toe)[2], float gx,
 void smgi_settle_shift(const smg_graph* g, uint32_t frame, float* dx,
                        float* dz);
 
+/* How high the higher toe of pool frame `frame` is above the lower one
+ * (m): the foot the settling step must still bring down when a stop is
+ * made on that frame (a run's swinging foot, 15-50 cm up). */
+float smgi_settle_lift(const smg_graph* g, uint32_t frame);
+
 #endif /* SMG_SETTLE_H */

@@ -139,6 +139,31 @@ static float frame_stand(const smgi_lower* lower, const smg_graph* g,
   return sqrtf(dx * dx + dz * dz);
 }
 
+/* Whether the frame k frames after the playhead belongs to a style that
+ * stops in one step, or the graph has none (graph_derived.h): a run's
+ * frame with both feet down is a worse place to stop than a walk's. */
+static int frame_stops(const smgi_lower* lower, const smg_graph* g,
+                       uint32_t k) {
+  const smgi_derived* dv = smgi_derived_of(g);
+  uint32_t entry, offset;
+  if (dv->stop_style == SMGI_NONE ||
+      !smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset))
+    return 1;
+  const uint32_t label = g->data.lower_edges[smgi_q_at_c(lower, entry)->edge].label;
+  return label >= g->data.style_count || dv->style_can_stop[label];
+}
+
+/* How high the swinging toe of the frame k frames after the playhead is
+ * above the standing one (smgi_settle_lift; 0 when the queue is shorter). */
+static float frame_lift(const smgi_lower* lower, const smg_graph* g,
+                        uint32_t k) {
+  uint32_t entry, offset;
+  if (!smgi_q_locate(lower, g->data.lower_edges, k, &entry, &offset))
+    return 0.0f;
+  const smgi_qentry* q = smgi_q_at_c(lower, entry);
+  return smgi_settle_lift(g, g->data.lower_edges[q->edge].first_frame + offset);
+}
+
 /* Frames from the playhead to (seq, offset), or a negative value when the
  * queue no longer holds that entry. */
 static float frames_to(const smgi_lower* lower, const smg_graph* g,
@@ -151,6 +176,63 @@ static float frames_to(const smgi_lower* lower, const smg_graph* g,
     f += (float)edges[q->edge].frame_count;
   }
   return -1.0f;
+}
+
+/* The shortest share of its strides a braking motion keeps
+ * (brake_stride): 1 for a style that stops in one step (a walk's last
+ * step is its own, graph_derived.h); a faster one (a run) shortens its
+ * last strides down to the graph's stop speed (its fastest walk), as a
+ * runner does, never below SMGI_STEER_STRIDE_STOP (the legs would
+ * cycle on the spot). Without any style that stops, the steering's
+ * own bound for tight turns. */
+static float stride_floor(const smgi_steer* s, const smgi_step_in* in,
+                          uint32_t style) {
+  const smgi_derived* dv = smgi_derived_of(in->graph);
+  if (style < in->graph->data.style_count && dv->style_can_stop[style])
+    return 1.0f;
+  if (dv->stop_style == SMGI_NONE || !(s->own_speed > dv->stop_speed))
+    return 1.0f - s->slide_ratio;
+  return fmaxf(dv->stop_speed / s->own_speed, SMGI_STEER_STRIDE_STOP);
+}
+
+/* A fast style (a run) slows over its last metres to the graph's stop
+ * speed: at d metres from the end the hips move at most
+ * sqrt(v_stop^2 + 2 a d), a = SMGI_STEER_STOP_DECEL g, by shorter
+ * strides, not slower playback (stride_floor bounds them). The share of
+ * the motion's strides that keeps to it; 1 for a style that stops in one
+ * step. */
+static float end_stride(const smgi_steer* s, const smgi_lower* lower,
+                        const smgi_step_in* in) {
+  const float floor = stride_floor(s, in, lower->style);
+  if (floor >= 1.0f || !(s->own_speed > 0.0f)) return 1.0f;
+  const smgi_derived* dv = smgi_derived_of(in->graph);
+  const float v_stop = dv->stop_style != SMGI_NONE
+                           ? dv->stop_speed
+                           : floor * s->own_speed;
+  const float d = fmaxf(in->path->length - in->progress, 0.0f);
+  const float cap = sqrtf(v_stop * v_stop +
+                          2.0f * SMGI_STEER_STOP_DECEL * SMGI_GRAVITY * d);
+  return smgi_clampf(cap / s->own_speed, floor, 1.0f);
+}
+
+/* How far from the end (dx, dz: where the hips would stand less the end
+ * point; (sh, ch) the sine and cosine of the path's last heading) a
+ * stop `seconds` ahead leaves the character, as the steering
+ * will show it: the planned motion may stray sideways (a turning clip
+ * planned past the end), which the heading and position correction
+ * removes on the way there (steer_envelope.h, the reach the planner
+ * counts too); a fast style's stop beyond the end is brought back onto
+ * it by shorter strides (brake_stride), down to `floor` (stride_floor) of the way
+ * there; a stop short of it stays short. */
+static float stop_miss(const smgi_steer* s, float floor, float sh,
+                       float ch, float dx, float dz, float seconds) {
+  const float way = s->own_speed * seconds;
+  float along = dx * sh + dz * ch;
+  if (along > 0.0f) along = fmaxf(along - (1.0f - floor) * way, 0.0f);
+  const smgi_steer_envelope env = smgi_steer_envelope_of(s);
+  const float reach = smgi_steer_plan_reach(&env, way, s->own_speed);
+  const float side = fmaxf(fabsf(dx * ch - dz * sh) - reach, 0.0f);
+  return sqrtf(along * along + side * side);
 }
 
 /* Near the end: choose the queued frame to come to rest on and start
@@ -179,8 +261,11 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
   if (ahead < limit) return;
   const float brake_way = 0.5f * s->own_speed * s->stride *
                           smgi_derived_of(g)->idle.swing_seconds;
-  float best = INFINITY, x, z;
+  float best = INFINITY, x, z, sh, ch;
   uint32_t best_k = 0, prev = 0;
+  int best_good = 0;
+  smgi_sincosf(smgi_path_heading(p, p->count - 2u), &sh, &ch);
+  const float floor = stride_floor(s, in, lower->style);
   if (!frame_ground(lower, g, 0, &x, &z, &prev)) return;
   for (uint32_t k = 1; k <= ahead && k <= limit; ++k) {
     uint32_t fl;
@@ -194,8 +279,11 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
      * step, worked out for every frame it can start from (a foot down:
      * a run has no frame with both) */
     const float way = fl ? frame_stand(lower, g, k, &x, &z) : 0.0f;
-    float d = sqrtf((x - ex) * (x - ex) + (z - ez) * (z - ez));
+    float d = stop_miss(s, floor, sh, ch, x - ex, z - ez, (float)k / in->fps);
     if (!down) d += fl ? SMGI_STEER_ONE_FOOT : SMGI_STEER_NO_FOOT;
+    if (!frame_stops(lower, g, k)) d += SMGI_STEER_ONE_FOOT;
+    /* a foot still high in the air lands only after the hips stand */
+    if (fl) d += frame_lift(lower, g, k);
     /* the hips cannot stop from the motion's speed in less than braking
      * evenly over the settling step: from a frame whose settling way is
      * shorter they would stand before the stepping foot lands (a run's
@@ -205,9 +293,14 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
     if (d < best) {
       best = d;
       best_k = k;
+      best_good = down && frame_stops(lower, g, k);
     }
   }
   if (best_k == 0 || best > SMGI_STEER_STOP_NEAR + SMGI_STEER_NO_FOOT) return;
+  /* no frame to stand on planned yet (a run's flight, the walk still
+   * ahead in the plan): while the end is not passed, follow on and let
+   * the planner bring one */
+  if (!best_good && in->progress < p->length - SMGI_END_EPS) return;
   float frames = (float)best_k - (lower->t - floorf(lower->t));
   if (frames > brake_frames) return;
   uint32_t entry, offset;
@@ -216,6 +309,30 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
   s->stop_seq = smgi_q_at_c(lower, entry)->seq;
   s->stop_offset = offset;
   s->mode = SMGI_STEER_BRAKE;
+}
+
+/* Distance matching: the share of its travel the motion keeps so that
+ * the hips come to stand on the end rather than where the stop frame,
+ * `left` frames ahead, and its settling step would put them (a stop frame
+ * beyond the end is chosen for it, stop_miss): the last strides shorten,
+ * as a runner's do, down to stride_floor (the planted feet keep their
+ * anchors, so the steps shorten). Measured along the path's last
+ * direction, again every step, from where the character is. */
+static float brake_stride(const smgi_steer* s, const smgi_lower* lower,
+                          const smgi_step_in* in, float left) {
+  const smgi_path* p = in->path;
+  const uint32_t k = (uint32_t)(lower->t - floorf(lower->t) + left + 0.5f);
+  float x, z;
+  if (!s->have_prev || !frame_ground(lower, in->graph, k, &x, &z, NULL))
+    return 1.0f;
+  frame_stand(lower, in->graph, k, &x, &z);
+  float sh, ch;
+  smgi_sincosf(smgi_path_heading(p, p->count - 2u), &sh, &ch);
+  const float motion = (x - s->prev_x) * sh + (z - s->prev_z) * ch;
+  const float wanted = (p->xz[2u * (p->count - 1u)] - s->prev_x) * sh +
+                       (p->xz[2u * (p->count - 1u) + 1u] - s->prev_z) * ch;
+  if (motion < SMGI_STEER_SWAY) return 1.0f;
+  return smgi_clampf(wanted / motion, stride_floor(s, in, lower->style), 1.0f);
 }
 
 /* The heading of path segment seg, remembered for the next call. */
@@ -322,7 +439,8 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     want = smgi_clampf(want, slowest, 1.0f);
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
     s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
-    s->stride = approach(s->stride, want / rate, SMGI_STEER_RATE_ACCEL * dt);
+    s->stride = approach(s->stride, fminf(want / rate, end_stride(s, lower, in)),
+                         SMGI_STEER_RATE_ACCEL * dt);
     consider_stop(s, lower, in);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
   }
@@ -330,14 +448,17 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     s->rate = 0.0f;
     return 0.0f;
   }
-  /* braking: constant deceleration that ends on the stop frame, strides
-   * back to full (the frame was chosen where the motion puts it) */
-  s->stride = approach(s->stride, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
+  /* braking: constant deceleration that ends on the stop frame, the
+   * strides as short as land the hips on the end */
   float left = frames_to(lower, in->graph, s->stop_seq, s->stop_offset);
   if (left < 0.0f) { /* re-planned away: follow again */
     s->mode = SMGI_STEER_FOLLOW;
     return full * s->rate;
   }
+  s->stride = approach(s->stride,
+                       fminf(brake_stride(s, lower, in, left),
+                             end_stride(s, lower, in)),
+                       SMGI_STEER_RATE_ACCEL * dt);
   float r = s->rate > SMGI_STEER_REST_RATE ? s->rate : SMGI_STEER_REST_RATE;
   float decel = left > 1e-3f ? in->fps * r * r / (2.0f * left) : INFINITY;
   float r1 = r - decel * dt;

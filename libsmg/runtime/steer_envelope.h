@@ -80,20 +80,4 @@ static inline void smgi_steer_plan_view(const smgi_steer_envelope* s,
   *a = smgi_steer_discount(*a, 0.5f * k * u);
 }
 
-/* Whether planning from arc s belongs to coming to rest at the end of a
- * path `path_length` long (`path_count` points): the end lies within what
- * the current speed covers in the braking time plus
- * SMGI_STEER_SETTLE_SECONDS. Where the wanted style has no pose to rest on
- * (derived style_can_stop: a run), the planner then wants the graph's most
- * agile style (walking, in any graph that has it), whose frames with both
- * feet down make a stop. */
-static inline int smgi_steer_settling(const smgi_steer_envelope* s,
-                                      uint32_t path_count, float path_length,
-                                      float arc) {
-  if (!s->enabled || path_count < 2u) return 0;
-  return path_length - arc <
-         s->own_speed * (s->stop_seconds + SMGI_STEER_SETTLE_SECONDS) +
-             SMGI_STEER_STOP_NEAR;
-}
-
 #endif /* SMG_STEER_ENVELOPE_H */

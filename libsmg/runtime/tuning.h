@@ -75,6 +75,12 @@
 #define SMGI_TRAIL_SAMPLES 4u    /* samples of a node's natural future */
 #define SMGI_TRAIL_STEP_SECONDS 0.5f
 #define SMGI_TURN_SECONDS 3.0f   /* horizon of node_turn */
+#define SMGI_STOP_FROUDE 0.5f    /* a style stops in one step only below
+                                    the walk-run transition: its mean
+                                    speed v with v^2 / (g * leg length)
+                                    under this (people change gait near
+                                    0.5; 2.0 m/s for a 0.8 m leg) */
+#define SMGI_GRAVITY 9.81f       /* m/s^2 */
 
 /* ---- progress along the path (step.c) ---- */
 #define SMGI_END_NEAR 1.0f /* metres from the last point that count as
@@ -213,11 +219,15 @@
                                          planned entries is composed before
                                          it is written into them (bounds
                                          its rounding; steer.c) */
-#define SMGI_STEER_SETTLE_SECONDS 1.5f /* s of motion before braking in
-                                          which a stop wants the agile
-                                          style */
+#define SMGI_STEER_SETTLE_SECONDS 1.5f /* s of walking before braking in
+                                          which a run's stop wants the
+                                          graph's stop style (planner.c) */
 #define SMGI_STEER_STOP_SCAN 1.0f     /* s of frames beyond the braking
                                          distance searched for a stop */
+#define SMGI_STEER_STRIDE_STOP 0.4f  /* share of its strides a run keeps
+                                         at least while braking to a stop */
+#define SMGI_STEER_STOP_DECEL 0.25f /* of gravity: a run's deceleration
+                                         over its last metres (2.5 m/s^2) */
 #define SMGI_STEER_HORIZON 1.0f       /* s planned ahead while steering
                                          follows, away from the end */
 

@@ -133,6 +133,62 @@ static void test_checksum_detects_flips(void** state) {
   assert_true(smgi_blob_checksum(b, 64) != smgi_blob_checksum(b, 65));
 }
 
+/* The checksum in pieces (begin, whole 64-byte blocks in any grouping,
+ * end with the tail) is the one-shot checksum, for every length around
+ * the block and word boundaries. */
+static void test_checksum_in_pieces(void** state) {
+  unsigned char b[300];
+  (void)state;
+  for (int i = 0; i < 300; ++i) b[i] = (unsigned char)(i * 53 + 29);
+  for (size_t n = 0; n <= 300; ++n) {
+    const size_t whole = n & ~(size_t)63u;
+    for (size_t cut = 0; cut <= whole; cut += 64) {
+      smgi_wh64 h;
+      smgi_wh64_begin(&h);
+      smgi_wh64_blocks(&h, b, cut);
+      smgi_wh64_blocks(&h, b + cut, whole - cut);
+      assert_true(smgi_wh64_end(&h, b + whole, n - whole, n) ==
+                  smgi_blob_checksum(b, n));
+    }
+  }
+}
+
+/* POSE and FRMI are checked as the checksum pass reaches them, section
+ * by section; the reason is still that of the first bad frame, POSE
+ * before FRMI within a frame, with or without the checksum. */
+static void test_first_bad_frame_is_reported(void** state) {
+  fx* f = (fx*)*state;
+  const float nan = NAN;
+  /* (pose frame, frame-info frame, expected text) */
+  const struct {
+    uint32_t pose, frmi;
+    const char* needle;
+  } cases[] = {{7, 3, "FRMI[3].phase"},
+               {3, 7, "POSE[3] root"},
+               {5, 5, "POSE[5] root"},
+               {150, 149, "FRMI[149].phase"}};
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+    unsigned char* c = test_aligned_copy(f->blob, f->size);
+    const smgi_blob_section* ps = test_section(c, SMGI_SEC_POSE);
+    smgi_frame* fr = (smgi_frame*)test_section_data(c, SMGI_SEC_FRMI);
+    smgi_graph_data v;
+    char err[256];
+    memcpy(c + ps->offset + (uint64_t)cases[i].pose * ps->record_size + 4,
+           &nan, 4);
+    fr[cases[i].frmi].phase = nan;
+    test_reseal(c);
+    for (int skip = 0; skip < 2; ++skip) {
+      smg_result r = smgi_blob_read(c, f->size,
+                                    skip ? SMG_GRAPH_SKIP_CHECKSUM : 0u, &v,
+                                    err, sizeof err);
+      assert_int_equal(r, SMG_ERROR_BLOB_VALUE);
+      if (!strstr(err, cases[i].needle))
+        fail_msg("expected '%s', got '%s'", cases[i].needle, err);
+    }
+    free(c);
+  }
+}
+
 /* Blob contents equal the arrays they were written from, and writing the
  * read view again gives the same bytes. */
 static void test_round_trip(void** state) {
@@ -969,6 +1025,9 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_checksum_known_values),
       cmocka_unit_test(test_checksum_detects_flips),
+      cmocka_unit_test(test_checksum_in_pieces),
+      cmocka_unit_test_setup_teardown(test_first_bad_frame_is_reported, setup,
+                                      teardown),
       cmocka_unit_test_setup_teardown(test_write_is_deterministic_and_aligned,
                                       setup, teardown),
       cmocka_unit_test_setup_teardown(test_round_trip, setup, teardown),

@@ -66,6 +66,8 @@ typedef struct ref_tables {
   float* trail_dist;
   uint32_t agile_style;
   uint8_t* can_stop;
+  uint32_t stop_style;
+  float stop_speed;
 } ref_tables;
 
 static float ref_fps(const smgi_graph_data* d) {
@@ -268,6 +270,26 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
       if (fl == 3u || (fl && pv && fl != pv)) r->can_stop[E->label] = 1;
     }
   }
+  /* ... unless it is faster than the walk-run transition (Froude number
+   * 0.5 on the leg length); the stop style is the fastest one left */
+  r->stop_style = SMGI_NONE;
+  r->stop_speed = 0.0f;
+  for (uint32_t st = 0; st < S; ++st) {
+    double arc = 0.0, frames = 0.0;
+    for (uint32_t e = 0; e < d->lower_edge_count; ++e)
+      if (d->lower_edges[e].label == st) {
+        arc += d->lower_edges[e].arc_length;
+        frames += d->lower_edges[e].frame_count;
+      }
+    const float v =
+        frames > 0.0 ? (float)(arc * (double)d->info->frame_rate / frames)
+                     : 0.0f;
+    if (v * v > 0.5f * 9.81f * d->info->leg_length) r->can_stop[st] = 0;
+    if (r->can_stop[st] && (r->stop_style == SMGI_NONE || v > r->stop_speed)) {
+      r->stop_style = st;
+      r->stop_speed = v;
+    }
+  }
   float best = -1.0f;
   for (uint32_t st = 0; st < S; ++st) {
     double turn = 0.0, arc = 0.0;
@@ -363,26 +385,45 @@ static void compare(const char* name, const smgi_graph_data* d,
   const uint32_t F = d->frame_count, S = d->style_count, A = d->action_count;
   const uint32_t LN = d->lower_node_count, UN = d->upper_node_count;
   const uint32_t K = SMGI_TRAIL_SAMPLES;
-  const size_t TK = (size_t)LN * K;
   EXPECT_SAME("lower_hops", dv->lower_hops, r->lower_hops, (size_t)LN * S);
   EXPECT_SAME("upper_hops", dv->upper_hops, r->upper_hops, (size_t)UN * A);
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_edge* E = &d->lower_edges[e];
+    EXPECT_SAME("edge_hops (from)", dv->edge_hops + 2u * (size_t)S * e,
+                r->lower_hops + (size_t)S * E->from, (size_t)S);
+    EXPECT_SAME("edge_hops (to)", dv->edge_hops + (2u * (size_t)e + 1u) * S,
+                r->lower_hops + (size_t)S * E->to, (size_t)S);
+  }
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
   EXPECT_SAME("action_first_edge", dv->action_first_edge, r->action_first,
               4u * (size_t)A);
-  EXPECT_SAME("natural_next", dv->natural_next, r->natural, 4u * (size_t)LN);
-  EXPECT_SAME("node_trail_frames", dv->node_trail_frames, r->trail_frames,
-              4u * TK);
-  EXPECT_SAME("node_trail_edge", dv->node_trail_edge, r->trail_edge, 4u * TK);
-  EXPECT_SAME("node_turn", dv->node_turn, r->turn, 8u * (size_t)LN);
+  for (uint32_t n = 0; n < LN; ++n) {
+    const smgi_node_next* x = &dv->node_next[n];
+    const uint32_t unused[3] = {0, 0, 0};
+    EXPECT_SAME("node_next.first_edge", &x->first_edge,
+                &d->lower_nodes[n].first_edge, 4u);
+    EXPECT_SAME("node_next.edge_count", &x->edge_count,
+                &d->lower_nodes[n].edge_count, 4u);
+    EXPECT_SAME("node_next.unused", x->unused, unused, sizeof unused);
+    EXPECT_SAME("node_next.natural", &x->natural, r->natural + n, 4u);
+    EXPECT_SAME("node_next.trail_frames", x->trail_frames,
+                r->trail_frames + (size_t)n * K, 4u * K);
+    EXPECT_SAME("node_next.trail_edge", x->trail_edge,
+                r->trail_edge + (size_t)n * K, 4u * K);
+    EXPECT_SAME("node_next.turn", x->turn, r->turn + 2u * (size_t)n, 8u);
+  }
+  assert_true(((uintptr_t)dv->node_next & 63u) == 0);
   EXPECT_SAME("edge_mid", dv->edge_mid, r->edge_mid,
               16u * (size_t)d->lower_edge_count);
   assert_int_equal(dv->agile_style, r->agile_style);
   EXPECT_SAME("style_can_stop", dv->style_can_stop, r->can_stop, (size_t)S);
+  assert_int_equal(dv->stop_style, r->stop_style);
+  assert_true(dv->stop_speed == r->stop_speed);
   for (uint32_t n = 0; n < LN; ++n) {
     for (uint32_t k = 0; k < K; ++k) {
       const size_t i = (size_t)n * K + k;
-      check_sample(name, "node_trail", n, dv->node_trail + 4u * i,
+      check_sample(name, "node_next.trail", n, dv->node_next[n].trail + 4u * k,
                    r->trail + 4u * i, r->trail_hops[i], r->trail_dist[i], st);
     }
   }
@@ -400,11 +441,8 @@ static void report(const char* name, const dev_stats* st) {
 static void compare_builds(const char* name, const smgi_graph_data* d,
                            const smgi_derived* a, const smgi_derived* b) {
   const size_t LN = d->lower_node_count;
-  const size_t TK = LN * SMGI_TRAIL_SAMPLES;
-  EXPECT_SAME("node_trail (SSE2 vs plain)", a->node_trail, b->node_trail,
-              16u * TK);
-  EXPECT_SAME("node_turn (SSE2 vs plain)", a->node_turn, b->node_turn,
-              8u * LN);
+  EXPECT_SAME("node_next (SSE2 vs plain)", a->node_next, b->node_next,
+              sizeof(smgi_node_next) * LN);
 }
 
 /* A loaded graph: its own tables, and the plain-C build of the same data. */

@@ -1,8 +1,12 @@
-/* smg_gd_character_internal.h - the SmgCharacter instance, shared by its
- * lifetime and frame code (smg_gd_character.c) and its script-facing
- * methods (smg_gd_character_methods.c). Joint-to-bone matching lives in
- * smg_gd_bone_map.c, the replayable path and constraints in
- * smg_gd_path_mirror.c. */
+/* smg_gd_character_internal.h - the SmgCharacter instance, shared by the
+ * files of the class, each using only those below it:
+ *   smg_gd_character_class.c    registration, create/destroy, notifications
+ *   smg_gd_character_methods.c  the methods, properties and signals scripts see
+ *   smg_gd_character_frame.c    one frame: step, move, pose, signals
+ *   smg_gd_character_scene.c    ground probes, root motion, events
+ *   smg_gd_character.c          the libsmg character's lifetime
+ * Joint-to-bone matching lives in smg_gd_bone_map.c, the replayable path and
+ * constraints in smg_gd_path_mirror.c. */
 #ifndef SMG_GD_CHARACTER_INTERNAL_H
 #define SMG_GD_CHARACTER_INTERNAL_H
 
@@ -56,6 +60,10 @@ typedef struct smg_gd_character {
 	uint64_t modifier_frame; /* last frame an SmgSkeletonModifier posed us */
 } smg_gd_character;
 
+/* Destroys the libsmg character, then releases its graph and bone map. */
+void smg_gd_character_teardown(smg_gd_character *self);
+/* The node's transform in its parent's space. */
+gd_transform3d smg_gd_character_xform(smg_gd_character *self);
 /* Make `ch` match the current graph: nothing to do, rebuild after a reload
  * (replaying the mirror), or tear down when the graph went away. false: no
  * character. */
