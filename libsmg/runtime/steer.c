@@ -580,17 +580,6 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   s->prev_h = pose->heading;
 }
 
-/* The share of the slide ratio a character `off` metres from the path may
- * slide at while following it. Sliding sideways turns the body away from
- * its travel (at the full ratio of 0.25, 14 degrees); the turning keeps
- * the body facing its travel and does the following, so the slide grows
- * with the offset and reaches the full ratio only as far off as the
- * planner gives up on the style (SMGI_YIELD_DRIFT): the last resort that
- * keeps a turn the motion cannot make (a curl of the pen) within reach. */
-static float slide_share_at(float off) {
-  return off < SMGI_YIELD_DRIFT ? off / SMGI_YIELD_DRIFT : 1.0f;
-}
-
 void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                       const smgi_step_in* in, float dt) {
   const smg_graph* g = in->graph;
@@ -611,7 +600,12 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   }
   s->have_prev = 1;
   float want_turn = 0.0f, want_sx = 0.0f, want_sz = 0.0f;
-  float slide_share = 1.0f; /* of the slide ratio allowed */
+  /* the speed the slide ratio is taken of: while following, the speed the
+   * character moves at, its strides as shortened for a turn (of the
+   * motion's own, a runner slowed by shorter strides slid sideways at up
+   * to twice the angle the ratio means); braking onto the end point, the
+   * motion's own (the stop's strides are shortened to land on it) */
+  float slide_speed = s->own_speed;
   const smgi_path* p = in->path;
   if (s->enabled && p->count >= 2u && s->mode != SMGI_STEER_REST) {
     /* heading: the clip's direction of travel towards the pursuit point */
@@ -660,7 +654,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
       /* the hips sway from side to side with every step: only the offset
        * beyond that is an error to remove */
       float ox = qx - gx, oz = qz - gz, ol = sqrtf(ox * ox + oz * oz);
-      slide_share = slide_share_at(ol);
+      slide_speed = s->own_speed * s->stride;
       if (ol > SMGI_STEER_SWAY) {
         float k2 = (ol - SMGI_STEER_SWAY) / (ol * SMGI_STEER_SLIDE_TIME);
         want_sx = ox * k2;
@@ -671,10 +665,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   /* bounds relative to the motion itself */
   float tb = SMGI_STEER_CLIP_SCALE * fabsf(s->own_turn) +
              fminf(s->turn_limit, s->own_speed / SMGI_STEER_TURN_RADIUS);
-  /* the slide against the speed the character moves at: bounded by the
-   * motion's own speed, a runner slowed by shorter strides slid sideways
-   * at up to twice the angle the ratio means */
-  float sb = s->slide_ratio * s->own_speed * s->stride * slide_share;
+  float sb = s->slide_ratio * slide_speed;
   want_turn = smgi_clampf(want_turn, -tb, tb);
   float wl = sqrtf(want_sx * want_sx + want_sz * want_sz);
   if (wl > sb) {

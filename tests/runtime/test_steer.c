@@ -586,10 +586,11 @@ static float facing_p95(smg_graph* g, uint32_t J, const float* xz,
 }
 
 /* A run around a 2 m U-turn faces where it goes: the steering turns the
- * body with its travel and slides it sideways only as a last resort
- * (pelvis facing against travel, 95th percentile, within 10 degrees, as
- * issue 24 asks; the steering that slid a slowed runner sideways at the
- * ratio of the motion's own speed, with a 2 rad/s turn, gave 13.7). */
+ * body with its travel and slides it sideways only by the ratio of the
+ * speed it moves at (pelvis facing against travel, 95th percentile,
+ * within 10 degrees, as issue 24 asks; the steering that slid a slowed
+ * runner sideways at the ratio of the motion's own speed, with a 2 rad/s
+ * turn, gave 13.7). */
 static void test_run_faces_travel(void** state) {
   (void)state;
   smg_graph* g = rt_default_graph();
