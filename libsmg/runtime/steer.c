@@ -105,6 +105,28 @@ static void point_ahead(const smgi_path* p, float s, uint32_t seg,
   }
 }
 
+/* The point the heading is turned towards: `look` metres past progress s
+ * (point_ahead), or, for a character at (x, z) past the path's end (no
+ * stop found yet), the end point itself: the planner then wants motion
+ * that turns back to the end (plan_search.c), and a pursuit point ahead
+ * of the end had the steering turn against it at its limit, the planted
+ * feet skating under the two. */
+static void pursuit_point(const smgi_path* p, float s, float look,
+                          uint32_t seg, float x, float z, float* tx,
+                          float* tz) {
+  if (s >= p->length - SMGI_END_EPS) {
+    const float* e = &p->xz[2u * (p->count - 1u)];
+    float sh, ch;
+    smgi_sincosf(smgi_path_heading(p, p->count - 2u), &sh, &ch);
+    if ((x - e[0]) * sh + (z - e[1]) * ch > 0.0f) {
+      *tx = e[0];
+      *tz = e[1];
+      return;
+    }
+  }
+  point_ahead(p, s + look, seg, tx, tz);
+}
+
 /* Ground position of the frame k frames after the playhead (0 when the
  * queue is shorter). */
 static int frame_ground(const smgi_lower* lower, const smg_graph* g,
@@ -618,7 +640,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     /* from the speed the character moves at (its strides as shortened) */
     look = smgi_clampf(s->own_speed * s->stride * SMGI_STEER_LOOK_TIME,
                        SMGI_STEER_LOOK_MIN, SMGI_STEER_LOOK_MAX);
-    point_ahead(p, in->progress + look, in->seg, &tx, &tz);
+    pursuit_point(p, in->progress, look, in->seg, gx, gz, &tx, &tz);
     if ((tx - gx) * (tx - gx) + (tz - gz) * (tz - gz) > 1e-4f)
       want_turn = smgi_wrap_angle(smgi_atan2f(tx - gx, tz - gz) - dir) /
                   SMGI_STEER_HEADING_TIME;
