@@ -779,7 +779,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   const uint32_t S = d->style_count, A = d->action_count;
   const uint32_t LN = d->lower_node_count, UN = d->upper_node_count;
 
-  /* node_next first: 64-byte records at the block's (64-aligned) start */
+  /* node_next first: 64-byte aligned records at the tables' start */
   size_t off_nx = 0;
   size_t off_lh = off_nx + sizeof(smgi_node_next) * (size_t)LN;
   size_t off_eh = off_lh + align16((size_t)LN * S);
@@ -790,7 +790,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_cs =
       off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
   size_t total = off_cs + align16((size_t)S);
-  size_t block = (sizeof(smgi_derived) + 63u) & ~(size_t)63u;
+  size_t block = align16(sizeof(smgi_derived));
 
   /* One scratch block for the phases below, sized for the largest. */
   uint32_t maxn = LN > UN ? LN : UN;
@@ -805,7 +805,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   if (walk_size > scratch_size) scratch_size = walk_size;
   if (turn_size > scratch_size) scratch_size = turn_size;
 
-  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 64);
+  /* 16-byte aligned like every other block the runtime asks for (the
+   * hooks' common case); the tables start at the next multiple of 64 */
+  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total + 48u, 16);
   if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
   void* scratch = smgi_alloc(&g->allocator, scratch_size, 16);
   if (!scratch) {
@@ -816,7 +818,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
    * counts start from zero (a memset of the whole block cost ~10 us). */
   memset(mem, 0, block);
   smgi_derived* dv = (smgi_derived*)mem;
-  uint8_t* base = mem + block;
+  uint8_t* base =
+      mem + block + ((64u - ((uintptr_t)(mem + block) & 63u)) & 63u);
   uint8_t* lower_hops = base + off_lh;
   uint8_t* edge_hops = base + off_eh;
   uint8_t* upper_hops = base + off_uh;
