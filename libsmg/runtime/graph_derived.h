@@ -83,8 +83,9 @@ typedef struct smgi_derived {
    * instead of composing two transforms from two pose records. */
   const float* edge_mid;
   /* The style whose motion turns most tightly (heading change per metre of
-   * its nodes' natural continuations, node_trail): where a character that got far
-   * off its path goes to get back (CMU runs, for one, barely turn). */
+   * its nodes' natural continuations, node_next.trail): where a character
+   * that got far off its path goes to get back (CMU runs, for one, barely
+   * turn). */
   uint32_t agile_style;
   /* style_can_stop[style]: 1 when some lower edge of the style has a
    * frame with both feet down, or a frame where support passes straight

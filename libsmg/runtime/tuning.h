@@ -74,7 +74,7 @@
 /* ---- derived tables (graph_derived.c) ---- */
 #define SMGI_TRAIL_SAMPLES 4u    /* samples of a node's natural future */
 #define SMGI_TRAIL_STEP_SECONDS 0.5f
-#define SMGI_TURN_SECONDS 3.0f   /* horizon of node_turn */
+#define SMGI_TURN_SECONDS 3.0f   /* horizon of node_next.turn */
 
 /* ---- progress along the path (step.c) ---- */
 #define SMGI_END_NEAR 1.0f /* metres from the last point that count as
