@@ -18,7 +18,8 @@
 #define SMGI_HOPS_UNREACHABLE 255u
 
 /* What the sequence search reads of lower node n, in one 128-byte record
- * aligned to 64 bytes (two cache lines): on a big graph (100k+ nodes) each
+ * aligned to 64 bytes (two cache lines): on a big graph (tens of
+ * thousands of nodes, tables far larger than the caches) each
  * of these was a table of its own and a cache miss of its own for every
  * node the search reached.
  *  - first_edge, edge_count: the node's out-edges, as in LNOD;
