@@ -1,8 +1,9 @@
 /*
  * bench_big_graph.c - `make bench-big-graph`: does a character behave on a
- * big graph (the Bandai Namco scale set: six performer styles, 100k+
- * nodes) as it does on the small ones? Not part of `make test`: the graph
- * is baked from clips that are too big for CI and may not be kept.
+ * big graph (the Bandai Namco scale set: six performer styles, tens of
+ * thousands of nodes) as it does on the small ones? Not part of `make
+ * test`: the graph is baked from clips that are too big for CI and may
+ * not be kept.
  *
  *   bench_big_graph BLOB [STYLE_A STYLE_B]   (default walk:active,
  *                                             walk:exhausted)
@@ -18,14 +19,15 @@
  *    within 0.3 m of the end) and planted toes <= 20 cm/s;
  *  - a style change on a straight line: STYLE_A, then STYLE_B from the
  *    middle of a 24 m line. Where the motion changed is found from the
- *    hips alone: two calibration runs (the whole line in A, the whole
- *    line in B) give each style's gait signature (hips ground speed and
- *    hips height, 1 s windows, away from start and end); in the switching
- *    run each window is given the nearer signature (in units of the
- *    calibration spread), and the change is the hips' arc length where
- *    the last run of A windows ends. Target: within 1 m of the requested
- *    point. If the two styles' signatures overlap, the check says so and
- *    fails instead of guessing.
+ *    hips alone: a gait signature per 1 s window (hips ground speed,
+ *    height, bounce and sway), in units of its spread in two calibration
+ *    runs (the whole line in A, the whole line in B); the change is the
+ *    best single step (least squares) through the switching run's
+ *    signature. It counts only if it points from A's signature towards
+ *    B's and is at least 2 spreads and twice the best step through either
+ *    calibration run (which has no change); otherwise the check says the
+ *    styles were not told apart and fails instead of guessing. Target:
+ *    within 1 m of the requested point.
  *
  * Prints figures and PASS/FAIL per check; exits 1 when a check fails.
  */
@@ -234,23 +236,36 @@ static int check_paths(smg_graph* g, const eval_joints* j, uint32_t style,
 
 /* ---- the style change --------------------------------------------------- */
 
-/* Per-frame gait signature over a SIG_WINDOW window centred on frame i:
- * hips ground speed (m/s) and mean hips height above the run's floor
- * (the lower toe's 5th percentile height). */
+/* A gait signature per frame, over a SIG_WINDOW window centred on it:
+ * hips ground speed (m/s), mean hips height above the run's floor (the
+ * lower toe's 5th percentile height), and the hips' bounce (spread of
+ * their height) and sway (spread of their sideways position, x on the
+ * line) within the window (m). Performers differ in some of these and
+ * not others; each is weighed in units of its spread in the calibration
+ * runs. */
+enum { SIG_SPEED, SIG_HEIGHT, SIG_BOUNCE, SIG_SWAY, SIG_DIM };
+static const char* const k_sig_names[SIG_DIM] = {"speed m/s", "hips m",
+                                                  "bounce m", "sway m"};
+
 static void signature(const run_geom* r, size_t i, double floor_y,
-                      double* speed, double* height) {
+                      double* out) {
   const size_t h = (size_t)(SIG_WINDOW * RATE / 2.0);
   const size_t a = i >= h ? i - h : 0;
   const size_t b = i + h < r->frames ? i + h : r->frames - 1;
-  double travelled = 0.0, y = 0.0;
+  const double n = (double)(b - a + 1);
+  double travelled = 0.0, y = 0.0, yy = 0.0, x = 0.0, xx = 0.0;
   for (size_t k = a; k <= b; ++k) {
-    if (k > a)
-      travelled += hypot(r->hips[3 * k] - r->hips[3 * k - 3],
-                         r->hips[3 * k + 2] - r->hips[3 * k - 1]);
-    y += r->hips[3 * k + 1];
+    const double* p = r->hips + 3 * k;
+    if (k > a) travelled += hypot(p[0] - p[-3], p[2] - p[-1]);
+    y += p[1];
+    yy += p[1] * p[1];
+    x += p[0];
+    xx += p[0] * p[0];
   }
-  *speed = b > a ? travelled * RATE / (double)(b - a) : 0.0;
-  *height = y / (double)(b - a + 1) - floor_y;
+  out[SIG_SPEED] = b > a ? travelled * RATE / (double)(b - a) : 0.0;
+  out[SIG_HEIGHT] = y / n - floor_y;
+  out[SIG_BOUNCE] = sqrt(fmax(yy / n - (y / n) * (y / n), 0.0));
+  out[SIG_SWAY] = sqrt(fmax(xx / n - (x / n) * (x / n), 0.0));
 }
 
 static double run_floor(const run_geom* r) {
@@ -264,13 +279,13 @@ static double run_floor(const run_geom* r) {
  * length is the hips' z). */
 typedef struct sig_series {
   size_t n;
-  double *arc, *speed, *height;
+  double* arc;
+  double* v; /* SIG_DIM per window */
 } sig_series;
 
 static void series_free(sig_series* s) {
   free(s->arc);
-  free(s->speed);
-  free(s->height);
+  free(s->v);
   memset(s, 0, sizeof *s);
 }
 
@@ -278,9 +293,8 @@ static int series_of(const run_geom* r, sig_series* s) {
   const double fl = run_floor(r);
   memset(s, 0, sizeof *s);
   s->arc = (double*)malloc(r->frames * sizeof(double));
-  s->speed = (double*)malloc(r->frames * sizeof(double));
-  s->height = (double*)malloc(r->frames * sizeof(double));
-  if (!s->arc || !s->speed || !s->height) {
+  s->v = (double*)malloc(r->frames * SIG_DIM * sizeof(double));
+  if (!s->arc || !s->v) {
     series_free(s);
     return 0;
   }
@@ -288,63 +302,67 @@ static int series_of(const run_geom* r, sig_series* s) {
     const double arc = r->hips[3 * i + 2];
     if (arc < SIG_MARGIN || arc > SWITCH_LENGTH - SIG_MARGIN) continue;
     s->arc[s->n] = arc;
-    signature(r, i, fl, &s->speed[s->n], &s->height[s->n]);
+    signature(r, i, fl, s->v + SIG_DIM * s->n);
     ++s->n;
   }
   return s->n >= 2;
 }
 
-static void mean_sd(const double* v, size_t n, double* mean, double* sd) {
-  double m = 0.0, q = 0.0;
-  for (size_t i = 0; i < n; ++i) m += v[i];
-  m /= (double)n;
-  for (size_t i = 0; i < n; ++i) q += (v[i] - m) * (v[i] - m);
-  *mean = m;
-  *sd = sqrt(q / (double)n);
+/* Mean and spread of each feature over a series. */
+static void series_stats(const sig_series* s, double* mean, double* sd) {
+  for (int d = 0; d < SIG_DIM; ++d) {
+    double m = 0.0, q = 0.0;
+    for (size_t i = 0; i < s->n; ++i) m += s->v[SIG_DIM * i + d];
+    m /= (double)s->n;
+    for (size_t i = 0; i < s->n; ++i)
+      q += (s->v[SIG_DIM * i + d] - m) * (s->v[SIG_DIM * i + d] - m);
+    mean[d] = m;
+    sd[d] = sqrt(q / (double)s->n);
+  }
 }
 
-/* The best single step through a series (least squares, both features in
- * units us, uh, at least a metre of windows on each side): where it is
- * (arc length halfway between the windows either side) and how far the
- * mean moves (dspeed, dheight in m/s and m). Returns its size in spreads;
- * 0 when the series is too short to split. */
-static double step_fit(const sig_series* s, double us, double uh,
-                       double* at, double* dspeed, double* dheight) {
-  double ts = 0, th = 0, best = INFINITY, ps = 0, ph = 0;
+/* The best single step through a series (least squares over all
+ * features in units u, at least a metre of windows on each side): where
+ * it is (arc length halfway between the windows either side) and how far
+ * the mean moves (delta, per feature). Returns its size in units; 0 when
+ * the series is too short to split. */
+static double step_fit(const sig_series* s, const double* u, double* at,
+                       double* delta) {
+  double total[SIG_DIM] = {0}, pre[SIG_DIM] = {0}, best = INFINITY;
   size_t k_best = 0;
-  for (size_t i = 0; i < s->n; ++i) {
-    ts += s->speed[i] / us;
-    th += s->height[i] / uh;
-  }
-  /* SSE of a split = const - (sum_pre^2 / n_pre + sum_post^2 / n_post) */
+  for (size_t i = 0; i < s->n; ++i)
+    for (int d = 0; d < SIG_DIM; ++d) total[d] += s->v[SIG_DIM * i + d] / u[d];
+  /* SSE of a split = const - (|sum_pre|^2 / n_pre + |sum_post|^2 / n_post) */
   for (size_t k = 1; k < s->n; ++k) {
-    ps += s->speed[k - 1] / us;
-    ph += s->height[k - 1] / uh;
+    double a2 = 0.0, b2 = 0.0;
+    for (int d = 0; d < SIG_DIM; ++d) {
+      pre[d] += s->v[SIG_DIM * (k - 1) + d] / u[d];
+      a2 += pre[d] * pre[d];
+      b2 += (total[d] - pre[d]) * (total[d] - pre[d]);
+    }
     if (s->arc[k - 1] - s->arc[0] < 1.0 || s->arc[s->n - 1] - s->arc[k] < 1.0)
       continue;
-    const double a = (double)k, b = (double)(s->n - k);
-    const double v = -((ps * ps + ph * ph) / a +
-                       ((ts - ps) * (ts - ps) + (th - ph) * (th - ph)) / b);
+    const double v = -(a2 / (double)k + b2 / (double)(s->n - k));
     if (v < best) {
       best = v;
       k_best = k;
     }
   }
   if (k_best == 0) return 0.0;
-  double pre_s = 0, pre_h = 0, post_s = 0, post_h = 0;
-  for (size_t i = 0; i < s->n; ++i) {
-    if (i < k_best) {
-      pre_s += s->speed[i];
-      pre_h += s->height[i];
-    } else {
-      post_s += s->speed[i];
-      post_h += s->height[i];
+  double size = 0.0;
+  for (int d = 0; d < SIG_DIM; ++d) {
+    double a = 0.0, b = 0.0;
+    for (size_t i = 0; i < s->n; ++i) {
+      if (i < k_best)
+        a += s->v[SIG_DIM * i + d];
+      else
+        b += s->v[SIG_DIM * i + d];
     }
+    delta[d] = b / (double)(s->n - k_best) - a / (double)k_best;
+    size += (delta[d] / u[d]) * (delta[d] / u[d]);
   }
-  *dspeed = post_s / (double)(s->n - k_best) - pre_s / (double)k_best;
-  *dheight = post_h / (double)(s->n - k_best) - pre_h / (double)k_best;
   *at = 0.5 * (s->arc[k_best - 1] + s->arc[k_best]);
-  return hypot(*dspeed / us, *dheight / uh);
+  return sqrt(size);
 }
 
 /* The change is where the best step through the switching run's gait
@@ -376,28 +394,30 @@ static int check_switch(smg_graph* g, const eval_joints* j, uint32_t a,
     for (int k = 0; k < 3; ++k) series_free(&s[k]);
     return 1;
   }
-  double ma[2], sa[2], mb[2], sb[2];
-  mean_sd(s[0].speed, s[0].n, &ma[0], &sa[0]);
-  mean_sd(s[0].height, s[0].n, &ma[1], &sa[1]);
-  mean_sd(s[1].speed, s[1].n, &mb[0], &sb[0]);
-  mean_sd(s[1].height, s[1].n, &mb[1], &sb[1]);
-  const double us = fmax(0.5 * (sa[0] + sb[0]), 1e-3);
-  const double uh = fmax(0.5 * (sa[1] + sb[1]), 1e-3);
-  printf("signatures (1 s windows, whole line in one style): %s %.2f m/s "
-         "(sd %.2f), hips %.3f m (sd %.3f); %s %.2f m/s (sd %.2f), hips "
-         "%.3f m (sd %.3f)\n",
-         na, ma[0], sa[0], ma[1], sa[1], nb, mb[0], sb[0], mb[1], sb[1]);
-  double at[3], ds[3], dh[3], size[3];
-  for (int k = 0; k < 3; ++k)
-    size[k] = step_fit(&s[k], us, uh, &at[k], &ds[k], &dh[k]);
+  double ma[SIG_DIM], sa[SIG_DIM], mb[SIG_DIM], sb[SIG_DIM], u[SIG_DIM];
+  series_stats(&s[0], ma, sa);
+  series_stats(&s[1], mb, sb);
+  printf("signatures (1 s windows, whole line in one style; mean, sd):");
+  for (int d = 0; d < SIG_DIM; ++d) {
+    u[d] = fmax(0.5 * (sa[d] + sb[d]), 1e-3);
+    printf(" %s %.3f (%.3f) / %.3f (%.3f);", k_sig_names[d], ma[d], sa[d],
+           mb[d], sb[d]);
+  }
+  printf(" %s / %s\n", na, nb);
+  double at[3], delta[3][SIG_DIM], size[3];
+  for (int k = 0; k < 3; ++k) size[k] = step_fit(&s[k], u, &at[k], delta[k]);
   for (int k = 0; k < 3; ++k) series_free(&s[k]);
   const double control = fmax(size[0], size[1]);
   /* towards B: the step has a positive component along B - A */
-  const double towards = ds[2] / us * (mb[0] - ma[0]) / us +
-                         dh[2] / uh * (mb[1] - ma[1]) / uh;
-  printf("best step: switching run %.1f spreads (%+.2f m/s, %+.3f m) at "
-         "%.2f m; without a change %.1f (%s) and %.1f (%s)\n",
-         size[2], ds[2], dh[2], at[2], size[0], na, size[1], nb);
+  double towards = 0.0;
+  for (int d = 0; d < SIG_DIM; ++d)
+    towards += delta[2][d] / u[d] * (mb[d] - ma[d]) / u[d];
+  printf("best step: switching run %.1f spreads (speed %+.2f m/s, hips "
+         "%+.3f m, bounce %+.3f m, sway %+.3f m) at %.2f m; without a "
+         "change %.1f (%s) and %.1f (%s)\n",
+         size[2], delta[2][SIG_SPEED], delta[2][SIG_HEIGHT],
+         delta[2][SIG_BOUNCE], delta[2][SIG_SWAY], at[2], size[0], na,
+         size[1], nb);
   if (!(size[2] >= SIG_SEPARATION && size[2] >= 2.0 * control &&
         towards > 0.0)) {
     printf("no change from %s towards %s told apart by the hips  FAIL\n", na,

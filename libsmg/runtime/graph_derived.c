@@ -7,10 +7,10 @@
  * about a millisecond, so the three tables that cost most are built with
  * care (tests/runtime/test_derived.c keeps the plain versions as oracles
  * and checks every table against them):
- *  - node_turn, a dynamic programme over 3 s of frames x every edge, runs
+ *  - node_next.turn, a dynamic programme over 3 s of frames x every edge, runs
  *    eight frames at a time in both directions at once, over rings of the
  *    last few frames (build_turn);
- *  - node_trail comes from one walk per node that carries the cosine and
+ *  - node_next.trail comes from one walk per node that carries the cosine and
  *    sine of its heading instead of calling sincosf per edge (build_walks;
  *    x and z agree with composing transforms edge by edge to float
  *    rounding, everything else is bit for bit the same);
@@ -26,7 +26,7 @@
 #include "alloc.h"
 #include "rmath.h"
 
-/* node_turn's blocks and the walks use SSE2 where it is part of the ABI
+/* node_next.turn's blocks and the walks use SSE2 where it is part of the ABI
  * (x86-64); plain loops compute the same lanes elsewhere (or with
  * -DSMGI_DERIVED_SSE=0, which is how the test covers them). */
 #ifndef SMGI_DERIVED_SSE
@@ -177,7 +177,7 @@ static void put_sample(float* o, float x, float z, float h, float arc) {
   o[3] = arc;
 }
 
-/* node_trail: every lower node's natural continuation, followed for
+/* node_next.trail: every lower node's natural continuation, followed for
  * SMGI_TRAIL_SAMPLES * SMGI_TRAIL_STEP_SECONDS and sampled every
  * SMGI_TRAIL_STEP_SECONDS at the first edge end past the step (at most
  * 1024 edges per sample).
@@ -269,7 +269,7 @@ static void build_walks(const smgi_graph_data* d, smgi_node_next* nx,
   }
 }
 
-/* ---- node_turn ------------------------------------------------------------
+/* ---- node_next.turn -------------------------------------------------------
  * best[t][n] = the largest cumulative heading change (in one direction)
  * reached within t frames from n, 0 included (not turning yet):
  *   best[0][n] = 0,
@@ -277,7 +277,7 @@ static void build_walks(const smgi_graph_data* d, smgi_node_next* nx,
  *                 fc(e) <= t ? dh(e) + best[t - fc(e)][to(e)]
  *                            : dh(e) * t / fc(e))
  * (an edge longer than the time left counts in proportion), for the left
- * (dh = +dheading) and right (dh = -dheading) directions; node_turn is
+ * (dh = +dheading) and right (dh = -dheading) directions; node_next.turn is
  * best[T][n]. T is 90 frames at 30 Hz and a CMU graph has ~1500 edges, so
  * the programme is ~270k edge steps: the code below computes the very same
  * float operations (max is exact and, starting from +0 and keeping the
@@ -779,7 +779,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   const uint32_t S = d->style_count, A = d->action_count;
   const uint32_t LN = d->lower_node_count, UN = d->upper_node_count;
 
-  /* node_next first: 64-byte records at the block's (64-aligned) start */
+  /* node_next first: 64-byte aligned records at the tables' start */
   size_t off_nx = 0;
   size_t off_lh = off_nx + sizeof(smgi_node_next) * (size_t)LN;
   size_t off_eh = off_lh + align16((size_t)LN * S);
@@ -790,7 +790,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_cs =
       off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
   size_t total = off_cs + align16((size_t)S);
-  size_t block = (sizeof(smgi_derived) + 63u) & ~(size_t)63u;
+  size_t block = align16(sizeof(smgi_derived));
 
   /* One scratch block for the phases below, sized for the largest. */
   uint32_t maxn = LN > UN ? LN : UN;
@@ -805,7 +805,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   if (walk_size > scratch_size) scratch_size = walk_size;
   if (turn_size > scratch_size) scratch_size = turn_size;
 
-  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total, 64);
+  /* 16-byte aligned like every other block the runtime asks for (the
+   * hooks' common case); the tables start at the next multiple of 64 */
+  uint8_t* mem = (uint8_t*)smgi_alloc(&g->allocator, block + total + 48u, 16);
   if (!mem) return SMG_ERROR_OUT_OF_MEMORY;
   void* scratch = smgi_alloc(&g->allocator, scratch_size, 16);
   if (!scratch) {
@@ -816,7 +818,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
    * counts start from zero (a memset of the whole block cost ~10 us). */
   memset(mem, 0, block);
   smgi_derived* dv = (smgi_derived*)mem;
-  uint8_t* base = mem + block;
+  uint8_t* base =
+      mem + block + ((64u - ((uintptr_t)(mem + block) & 63u)) & 63u);
   uint8_t* lower_hops = base + off_lh;
   uint8_t* edge_hops = base + off_eh;
   uint8_t* upper_hops = base + off_uh;

@@ -18,7 +18,8 @@
 #define SMGI_HOPS_UNREACHABLE 255u
 
 /* What the sequence search reads of lower node n, in one 128-byte record
- * aligned to 64 bytes (two cache lines): on a big graph (100k+ nodes) each
+ * aligned to 64 bytes (two cache lines): on a big graph (tens of
+ * thousands of nodes, tables far larger than the caches) each
  * of these was a table of its own and a cache miss of its own for every
  * node the search reached.
  *  - first_edge, edge_count: the node's out-edges, as in LNOD;
@@ -83,8 +84,9 @@ typedef struct smgi_derived {
    * instead of composing two transforms from two pose records. */
   const float* edge_mid;
   /* The style whose motion turns most tightly (heading change per metre of
-   * its nodes' natural continuations, node_trail): where a character that got far
-   * off its path goes to get back (CMU runs, for one, barely turn). */
+   * its nodes' natural continuations, node_next.trail): where a character
+   * that got far off its path goes to get back (CMU runs, for one, barely
+   * turn). */
   uint32_t agile_style;
   /* style_can_stop[style]: 1 when some lower edge of the style has a
    * frame with both feet down, or a frame where support passes straight

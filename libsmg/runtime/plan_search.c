@@ -275,7 +275,7 @@ static float seq_value(const smgi_seq_ctx* c, const smgi_seq_state* st) {
 }
 
 /* Value of a sequence that stops choosing at `st`: the node's natural
- * continuation (derived node_trail, a few samples looked up, no edge
+ * continuation (derived node_next.trail, a few samples looked up, no edge
  * walk) stands for the rest of the window, style included. */
 float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
   const smg_graph* g = c->g;
@@ -287,7 +287,7 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
   float pf = 0.0f, pu = 0.0f, px = st.W.x, pz = st.W.z;
   /* beyond the window: can the motion turn towards the path soon? The
    * heading still missing once the node's best reachable turn (derived
-   * node_turn) is spent costs like a heading error */
+   * node_next.turn) is spent costs like a heading error */
   if (c->following) {
     const smgi_path* p = c->track;
     float sr = c->s0 + st.u, rx, rz, qx, qz;

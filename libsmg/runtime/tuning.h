@@ -74,7 +74,7 @@
 /* ---- derived tables (graph_derived.c) ---- */
 #define SMGI_TRAIL_SAMPLES 4u    /* samples of a node's natural future */
 #define SMGI_TRAIL_STEP_SECONDS 0.5f
-#define SMGI_TURN_SECONDS 3.0f   /* horizon of node_turn */
+#define SMGI_TURN_SECONDS 3.0f   /* horizon of node_next.turn */
 #define SMGI_STOP_FROUDE 0.5f    /* a style stops in one step only below
                                     the walk-run transition: its mean
                                     speed v with v^2 / (g * leg length)
