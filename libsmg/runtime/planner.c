@@ -32,6 +32,7 @@
 #include "planner.h"
 
 #include "plan_search.h"
+#include "stop_match.h"
 
 /* The planner's job: its own state, the timeline it extends and its
  * inputs (planner.h). */
@@ -118,6 +119,44 @@ static void slow_to_stop(const job* j, smgi_seq_ctx* sc, float s) {
   if (j->in->path->length - s >= way) return;
   sc->style0 = dv->stop_style;
   sc->style_end = INFINITY;
+}
+
+static void tail_state(const job* j, uint32_t* node, smgi_xform2* W,
+                       float* s, uint32_t* seg);
+static void push(const job* j, smgi_xform2 W, float s, const cand* c,
+                 uint32_t rank, uint32_t count);
+
+/* Stopping motion from the data (stop_match.h): once the plan ends within
+ * the graph's longest stop plus the horizon of the end, a route into a
+ * stop whose rest lands on the end is planned instead of the search's
+ * choice, and its rest marked for the steering, which plays it to rest.
+ * Graphs without stops never get here (their stop is the IK's). Returns
+ * 1 if it planned one. */
+static int plan_data_stop(const job* j, uint32_t node, smgi_xform2 W,
+                          float s, uint32_t seg) {
+  const smg_graph* g = j->in->graph;
+  if (smgi_derived_of(g)->stop_count == 0 || !j->steer->enabled ||
+      j->in->path->count < 2u || j->lower->stop_seq != SMGI_NONE)
+    return 0;
+  const float way = j->in->path->length - s;
+  if (way < 0.0f || way > smgi_stop_longest(g) +
+                              j->steer->own_speed * j->pl->horizon)
+    return 0;
+  smgi_stop_route r;
+  if (!smgi_stop_match(g, j->in->path, node, W, s, &r) ||
+      j->lower->count + r.count > SMGI_QUEUE_CAP)
+    return 0;
+  float u = 0.0f;
+  for (uint32_t k = 0; k < r.count; ++k) {
+    cand x;
+    if (k > 0) tail_state(j, &node, &W, &s, &seg);
+    make_cand(j, W, s, seg, u, r.edges[k], &x);
+    push(j, W, s, &x, 0, 1);
+    u += g->data.lower_edges[r.edges[k]].arc_length;
+  }
+  j->lower->stop_seq = smgi_q_at(j->lower, j->lower->count - 1u)->seq;
+  j->lower->stop_offset = r.rest_offset;
+  return 1;
 }
 
 /* Score all out-edges of `node` from (W, s, seg), sorted best first
@@ -404,6 +443,7 @@ static void plan(const job* j, uint32_t budget, float step_frames) {
     smgi_xform2 W;
     float s;
     tail_state(j, &node, &W, &s, &seg);
+    if (plan_data_stop(j, node, W, s, seg)) continue;
     uint32_t seq[SMGI_SEQ_PATH_CAP], seq_len = 0;
     uint32_t n = rank_node(j, node, W, s, seg, c, seq, &seq_len);
     if (n == 0) return; /* dead end: playback holds the last frame */
@@ -449,11 +489,13 @@ static void replan(const job* j) {
     uint32_t n = rank_node(j, from, h.W, j->in->progress, j->in->seg, c, NULL, NULL);
     j->lower->count = 0;
     j->lower->frames = 0;
+    j->lower->stop_seq = SMGI_NONE;
     j->pl->backtracks = 0;
     smgi_lag_reset(&j->lower->lag);
     push(j, h.W, j->in->progress, &c[0], 0, n);
     return;
   }
+  j->lower->stop_seq = SMGI_NONE; /* the stop, if any, is chosen again */
   j->lower->count = 1; /* keep only the edge that is playing */
   smgi_lag_reset(&j->lower->lag); /* nothing beyond the next two is left */
   j->lower->frames =
@@ -504,6 +546,7 @@ static smg_result plan_start(const job* j, uint32_t* rng, float x, float z,
   j->lower->count = 0;
   j->lower->frames = 0;
   j->lower->t = 0.0f;
+  j->lower->stop_seq = SMGI_NONE;
   smgi_lag_reset(&j->lower->lag);
   push(j, W, j->in->progress, &c[0], 0, n);
   j->lower->node = node;
