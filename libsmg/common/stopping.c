@@ -14,7 +14,9 @@
  * the more of them it has, the better the remaining travel matches the
  * path). It rests SMGI_STAND_SPAN after the standing stretch begins
  * (the speeds there are over windows that still reach into the motion).
- * A start is the mirror image after a rest.
+ * A start is the mirror image after a rest, its segment beginning with
+ * the whole standing stretch (the runtime enters it anywhere there and
+ * stands on until it moves off).
  */
 #include "stopping.h"
 
@@ -134,7 +136,7 @@ uint32_t smgi_stopping_find(const smgi_frame* frames, uint32_t frame_count,
         while (j < p && speed_at(&v, j) < SMGI_STOP_CRUISE * top) ++j;
         if (top >= moving) {
           g.rest = b - settle;
-          g.first = g.rest >= a + settle ? g.rest - settle : a;
+          g.first = a; /* all of the standing before it */
           g.last = j;
           g.kind = SMGI_STOP_KIND_START;
           g.speed = top;

@@ -32,7 +32,7 @@
 
 typedef struct smgi_stop_seg {
   uint32_t first;  /* pool frame: a stop begins at locomotion speed, a start
-                      on its last standing frames */
+                      with the standing stretch it sets off from */
   uint32_t rest;   /* pool frame where the hips stand (a stop's end, a
                       start's last frame before moving off) */
   uint32_t last;   /* pool frame: a stop's last still frame, a start's

@@ -793,7 +793,8 @@ static smg_result build_stops(smg_graph* g, smgi_derived* dv) {
     if (segs[k].kind == SMGI_STOP_KIND_STOP)
       left += (size_t)(segs[k].rest - segs[k].first) + 1u;
   const size_t off_first = align16(sizeof(smgi_stop_seg) * (size_t)n);
-  const size_t off_left = off_first + align16(sizeof(uint32_t) * (size_t)n);
+  const size_t off_entry = off_first + align16(sizeof(uint32_t) * (size_t)n);
+  const size_t off_left = off_entry + align16(sizeof(uint32_t) * (size_t)n);
   uint8_t* mem = (uint8_t*)smgi_alloc(
       &g->allocator, off_left + sizeof(float) * (left + 1u), 16);
   if (!mem) {
@@ -825,6 +826,28 @@ static smg_result build_stops(smg_graph* g, smgi_derived* dv) {
     }
     at += len + 1u;
   }
+  /* each start's last standing node: nodes by frame against the
+   * segments (in order of their first frames) */
+  uint32_t* entry = (uint32_t*)(mem + off_entry);
+  for (uint32_t k = 0; k < n; ++k) entry[k] = SMGI_NONE;
+  for (uint32_t v = 0; v < d->lower_node_count; ++v) {
+    const uint32_t f = d->lower_nodes[v].frame;
+    if (d->lower_nodes[v].edge_count == 0) continue;
+    uint32_t lo = 0, hi = n;
+    while (lo < hi) {
+      const uint32_t mid = lo + (hi - lo) / 2u;
+      if (s[mid].first <= f) lo = mid + 1u;
+      else hi = mid;
+    }
+    for (uint32_t k = lo; k > 0 && lo - k < 4u; --k) {
+      const smgi_stop_seg* q = &s[k - 1u];
+      if (q->kind != SMGI_STOP_KIND_START || f > q->rest) continue;
+      if (entry[k - 1u] == SMGI_NONE ||
+          d->lower_nodes[entry[k - 1u]].frame < f)
+        entry[k - 1u] = v;
+    }
+  }
+  dv->start_entry = entry;
   dv->stops = s;
   dv->stop_count = n;
   dv->stop_left = table;

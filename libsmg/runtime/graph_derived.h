@@ -112,6 +112,11 @@ typedef struct smgi_derived {
   uint32_t start_count; /* of them, starts */
   const float* stop_left;
   const uint32_t* stop_left_first;
+  /* start_entry[k] for start k: its last node standing before it moves
+   * off (the latest node with out-edges whose frame lies in [first,
+   * rest]), where a character at rest enters it; SMGI_NONE for stops and
+   * starts without one. */
+  const uint32_t* start_entry;
   void* stop_block; /* owns the three tables */
 } smgi_derived;
 

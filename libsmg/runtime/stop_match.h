@@ -6,6 +6,8 @@
  * shipping engines choose where to begin a stop animation. The route runs
  * on through the stop's own frames to its rest; the steering then plays
  * it at normal rate to the rest (steer.c) and the rest stage takes over.
+ * Likewise, where the plan stands still in such data with path ahead,
+ * a route into a start (smgi_start_match) sets it off as the data does.
  * Bounded work (SMGI_STOP_ROUTE_BUDGET edges looked at), no allocation.
  */
 #ifndef SMG_STOP_MATCH_H
@@ -42,5 +44,29 @@ float smgi_stop_longest(const smg_graph* g);
 int smgi_stop_match(const smg_graph* g, const smgi_path* path,
                     uint32_t node, smgi_xform2 W, float s,
                     smgi_stop_route* out);
+
+/* Whether pool frame f stands still in a stop or start of the data (a
+ * stop's frames from its rest on, a start's before it moves off). */
+int smgi_stop_still(const smg_graph* g, uint32_t f);
+
+/* From `node` placed at W, `s` metres along `path`, standing still: the
+ * route into a start (stopping.h) that moves off soonest, run on through
+ * its frames until it is back at locomotion speed, among those that set
+ * off within SMGI_START_TURN of the path's direction; 0 if none. The
+ * route's rest_offset is unused (0). */
+#define SMGI_START_TURN 0.7854f /* rad (45 deg): the steering turns the
+                                   rest on the way */
+int smgi_start_match(const smg_graph* g, const smgi_path* path,
+                     uint32_t seg, uint32_t node, smgi_xform2 W,
+                     smgi_stop_route* out);
+
+/* At rest, standing where W places the ground: the start whose last
+ * standing node (graph_derived.h, start_entry) moves off soonest along
+ * the path, entered there with that node's frame placed at W (standing
+ * frames are one pose; the rest stage covers the change of stance), run
+ * on until it is back at speed; 0 if none sets off within
+ * SMGI_START_TURN of the path's direction. */
+int smgi_start_jump(const smg_graph* g, const smgi_path* path, uint32_t seg,
+                    smgi_xform2 W, smgi_stop_route* out);
 
 #endif /* SMG_STOP_MATCH_H */

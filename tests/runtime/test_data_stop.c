@@ -274,10 +274,115 @@ static void test_stop(void** state) {
   bg_free(&set);
 }
 
+/* ---- the start ---- */
+
+typedef struct start_measure {
+  float swing_ratio; /* longest swing in the first 2 s / steady median */
+  float reach_80;    /* s until 80 % of the steady speed */
+  float steady;      /* m/s */
+  float profile;     /* m/s: most the hips' speed over the first second
+                        of moving differs from the start clip's */
+  float planted;     /* cm/s: foot sliding in the 3 s from the path's
+                        change */
+} start_measure;
+
+static void measure_start(smg_graph* g, const smgb_clip* start_clip,
+                          start_measure* m) {
+  scene s;
+  scene_start(g, &s);
+  scene_path(&s, 8.0f);
+  scene_run(&s, 12.0f);
+  const uint32_t p0 = g_run.n;
+  scene_path(&s, 12.0f);
+  scene_run(&s, 9.0f);
+  smg_character_destroy(s.ch);
+  const rg_run* r = &g_run;
+  const uint32_t hw = (uint32_t)(0.25f * FPS);
+  const uint32_t early = p0 + (uint32_t)(2.0f * FPS);
+  const uint32_t s0 = p0 + (uint32_t)(3.0f * FPS);
+  const uint32_t s1 = p0 + (uint32_t)(7.0f * FPS);
+  uint32_t sw[256][2];
+  uint32_t k = rg_swings(r, sw, 256), c = 0;
+  float len[256], longest = 0.0f;
+  for (uint32_t i = 0; i < k; ++i) {
+    float l = (float)(sw[i][1] - sw[i][0]);
+    if (sw[i][0] >= p0 && sw[i][0] < early && l > longest) longest = l;
+    if (sw[i][0] >= s0 && sw[i][1] <= s1) len[c++] = l;
+  }
+  assert_true(c >= 3);
+  qsort(len, c, sizeof(float), rg_cmpf);
+  m->swing_ratio = longest / len[c / 2u];
+  float v[256];
+  uint32_t nv = 0;
+  for (uint32_t i = s0; i < s1 && nv < 256; ++i) v[nv++] = rg_speed(r, i, hw);
+  qsort(v, nv, sizeof(float), rg_cmpf);
+  m->steady = v[nv / 2u];
+  m->planted = stance_slide(r, p0, s0);
+  m->reach_80 = INFINITY;
+  for (uint32_t i = p0; i < s1; ++i)
+    if (rg_speed(r, i, hw) >= 0.8f * m->steady) {
+      m->reach_80 = (float)(i - p0) * DT;
+      break;
+    }
+  /* the first frame faster than STAND_SPEED, the character's and the
+   * clip's: the profiles are compared from there */
+  uint32_t go = p0, cgo = 0;
+  while (go < r->n && rg_speed(r, go, hw) <= STAND_SPEED) ++go;
+  while (cgo < start_clip->frame_count &&
+         clip_speed(start_clip, cgo, hw) <= STAND_SPEED)
+    ++cgo;
+  const uint32_t second = (uint32_t)FPS;
+  assert_true(go + second < r->n && cgo + second < start_clip->frame_count);
+  m->profile = 0.0f;
+  for (uint32_t i = 0; i < second; ++i) {
+    const float d = fabsf(rg_speed(r, go + i, hw) -
+                          clip_speed(start_clip, cgo + i, hw));
+    if (d > m->profile) m->profile = d;
+  }
+}
+
+static void test_start(void** state) {
+  (void)state;
+  bg_set set;
+  smg_bake_result res;
+  start_measure with, without;
+  smg_graph* g = bake_graph(0, &set, &res);
+  bg_set ramps; /* the start clip, for its profile */
+  memset(&ramps, 0, sizeof ramps);
+  bg_add(&ramps, SMGB_SYNTH_WALK_START, 7.0f, 0.0f, SMG_BAKE_ROLE_LOWER,
+         "walk");
+  measure_start(g, &ramps.clips[0], &without);
+  smg_graph_destroy(g);
+  smg_bake_result_free(&res);
+  bg_free(&set);
+  g = bake_graph(1, &set, &res);
+  measure_start(g, &set.clips[5], &with);
+  for (int k = 0; k < 2; ++k) {
+    const start_measure* m = k ? &without : &with;
+    print_message("%s: longest swing in 2 s %.2f x the steady median, 80 %% "
+                  "of %.2f m/s after %.2f s, speed in the first second of "
+                  "moving %.3f m/s off the start clip's, planted toes <= "
+                  "%.1f cm/s\n",
+                  k ? "start without a start clip" : "start clip",
+                  m->swing_ratio, m->steady, m->reach_80, m->profile,
+                  m->planted);
+  }
+  assert_true(with.swing_ratio <= 1.3f);
+  assert_true(with.reach_80 <= 1.5f);
+  assert_true(with.profile <= 0.15f);
+  assert_true(with.planted <= 20.0f);
+  assert_true(without.profile > 0.15f);
+  smg_graph_destroy(g);
+  smg_bake_result_free(&res);
+  bg_free(&set);
+  bg_free(&ramps);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_found),
       cmocka_unit_test(test_stop),
+      cmocka_unit_test(test_start),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
