@@ -23,6 +23,7 @@
 #include "smg_bake.h"
 #include "smg_format.h"
 #include "standing.h"
+#include "stopping.h"
 
 /* A buffer aligned as the blob reader requires (16 bytes). 64-bit
  * Windows has no posix_memalign, and its malloc already aligns to 16. */
@@ -185,6 +186,23 @@ static void standing_summary(const smgi_graph_data* g) {
   free(s);
 }
 
+/* The stopping and starting motion the runtime will find (stopping.h):
+ * where a graph has it, stops and starts come from the data. */
+static void stopping_summary(const smgi_graph_data* g) {
+  uint32_t n = smgi_stopping_find(g->frames, g->frame_count, g->clips,
+                                  g->clip_count, g->info->frame_rate,
+                                  g->info->leg_length, NULL, 0);
+  smgi_stop_seg* s = n ? malloc(n * sizeof *s) : NULL;
+  uint32_t k, stops = 0;
+  if (n && !s) return;
+  smgi_stopping_find(g->frames, g->frame_count, g->clips, g->clip_count,
+                     g->info->frame_rate, g->info->leg_length, s, n);
+  for (k = 0; k < n; ++k) stops += s[k].kind == SMGI_STOP_KIND_STOP;
+  printf("stopping motion: %u stops, %u starts%s\n", stops, n - stops,
+         n ? "" : " (stops and starts by the foot IK)");
+  free(s);
+}
+
 static int info(const char* path) {
   FILE* f = fopen(path, "rb");
   long size;
@@ -300,6 +318,7 @@ static int info(const char* path) {
              g.strings + g.actions[a].name, cnt, best, sum / cnt);
   }
   standing_summary(&g);
+  stopping_summary(&g);
   printf("sections:\n");
   for (i = 0; i < h->section_count; ++i)
     printf("  %s %9llu bytes  %7u records\n", tag_name(secs[i].tag, tn),

@@ -95,6 +95,10 @@ typedef struct gait {
   double yaw_osc, roll;   /* pelvis oscillation amplitudes, rad */
   double lean;            /* forward pelvis/spine lean, rad */
   double arm_swing, elbow;/* rad */
+  /* a walk that stops or starts (SMGB_SYNTH_WALK_STOP/START): the pelvis
+   * speed ramps over ramp_seconds from ramp_at (0: constant speed) */
+  int ramp;               /* 0 none, 1 to rest, 2 from rest */
+  double ramp_at, ramp_seconds;
 } gait;
 
 static double frac(double x) { return x - floor(x); }
@@ -103,6 +107,35 @@ static double frac(double x) { return x - floor(x); }
  * leaving or reaching its footprint does so smoothly. */
 static double ease(double u) {
   return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
+}
+
+/* Integral over [0, u] of ease (u in [0, 1]). */
+static double ease_integral(double u) {
+  return u * u * u * u * (2.5 + u * (-3.0 + u));
+}
+
+/* Distance the pelvis has travelled along the path at time t: v t, or
+ * with the speed ramping to rest (ramp 1: v (1 - ease)) or from rest
+ * (ramp 2: v ease) over ramp_seconds from ramp_at - as a person stops or
+ * starts within a couple of steps at an unchanged cadence. */
+static double dist_at(const gait* g, double t) {
+  const double u0 = (t - g->ramp_at) / g->ramp_seconds;
+  const double u = u0 < 0.0 ? 0.0 : u0 > 1.0 ? 1.0 : u0;
+  if (g->ramp == 1) {
+    if (t < g->ramp_at) return g->v * t;
+    return g->v * (g->ramp_at + g->ramp_seconds * (u - ease_integral(u)));
+  }
+  if (t < g->ramp_at) return 0.0;
+  return g->v * (g->ramp_seconds * ease_integral(u) +
+                 (u0 > 1.0 ? t - g->ramp_at - g->ramp_seconds : 0.0));
+}
+
+/* The share of the walk's speed the pelvis moves at (1 without a ramp). */
+static double speed_share(const gait* g, double t) {
+  if (!g->ramp) return 1.0;
+  double u = (t - g->ramp_at) / g->ramp_seconds;
+  u = u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u;
+  return g->ramp == 1 ? 1.0 - ease(u) : ease(u);
 }
 
 /* Path point and heading at arc length s (start at origin, heading 0). */
@@ -129,7 +162,12 @@ static void footprint(const gait* g, int f, double m, double pos[2],
     *heading = side * 0.12;
     return;
   }
-  path_at(g, g->v * g->T * (m + off + 0.5 * g->D), pos, &h);
+  /* where the pelvis is at the stance's middle (with a ramp the
+   * footprints close up as it slows: side by side once it stands) */
+  if (g->ramp)
+    path_at(g, dist_at(g, g->T * (m + off + 0.5 * g->D)), pos, &h);
+  else
+    path_at(g, g->v * g->T * (m + off + 0.5 * g->D), pos, &h);
   /* Left of heading h is the direction of heading h + pi/2: (cos h, -sin h).
    */
   pos[0] += side * g->width * cos(h);
@@ -169,6 +207,15 @@ static void foot_at(const gait* g, int f, double t, double a[3],
   a[1] = ANKLE_H + g->lift * sin(SMGB_M_PI * s) * sin(SMGB_M_PI * s);
   *heading = h0 + (h1 - h0) * e;
   *pitch = 0.35 * sin(SMGB_M_PI * s) * (1.0 - s);
+  if (g->ramp) {
+    /* a short step (under a third of a step length) lifts the foot
+     * less, none stays planted */
+    const double dx = p1[0] - p0[0], dz = p1[1] - p0[1];
+    double k = sqrt(3.0 * sqrt(dx * dx + dz * dz) / g->L);
+    k = k > 1.0 ? 1.0 : k;
+    a[1] = ANKLE_H + (a[1] - ANKLE_H) * k;
+    *pitch *= k;
+  }
 }
 
 /* World rotation of a leg bone along unit direction `b` (its local -Y),
@@ -324,11 +371,15 @@ static void upper_body(const gait* g, smgb_synth_kind kind, double t,
   }
 }
 
-static void gait_init(const smgb_synth_params* p, gait* g) {
+static void gait_init(const smgb_synth_params* p, double duration, gait* g) {
   memset(g, 0, sizeof *g);
   g->width = HIP_X;
   g->D = 1.0;
+  if (p->kind == SMGB_SYNTH_WALK_STOP) g->ramp = 1;
+  if (p->kind == SMGB_SYNTH_WALK_START) g->ramp = 2;
   switch (p->kind) {
+    case SMGB_SYNTH_WALK_STOP:
+    case SMGB_SYNTH_WALK_START:
     case SMGB_SYNTH_WALK:
       g->v = 1.2; g->L = 0.6; g->D = 0.58; g->lift = 0.07;
       g->h0 = 0.895; g->bob = 0.015; g->bob_sign = 1; g->sway = 0.02;
@@ -351,6 +402,14 @@ static void gait_init(const smgb_synth_params* p, gait* g) {
     g->T = 2.0 * g->L / g->v;
     g->kappa = p->turn_rate / g->v;
   }
+  if (g->ramp) {
+    /* over one stride (two steps), standing still for
+     * SMGB_SYNTH_STILL_SECONDS after a stop or before a start */
+    g->ramp_seconds = g->T;
+    g->ramp_at = g->ramp == 1 ? duration - g->T - SMGB_SYNTH_STILL_SECONDS
+                              : SMGB_SYNTH_STILL_SECONDS;
+    if (g->ramp_at < 0.0) g->ramp_at = 0.0;
+  }
 }
 
 int smgb_synth_foot_planted(const smgb_synth_truth* truth, int foot,
@@ -369,14 +428,15 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
   double duration, rate;
   uint32_t frames, f, stride;
   if (!params || !out || (int)params->kind < 0 ||
-      params->kind > SMGB_SYNTH_PUNCH || !(params->duration >= 0.0f) ||
+      params->kind > SMGB_SYNTH_WALK_START ||
+      !(params->duration >= 0.0f) ||
       params->duration > 3600.0f || !(params->frame_rate >= 0.0f) ||
       params->frame_rate > 1000.0f || !isfinite(params->turn_rate) ||
       fabsf(params->turn_rate) > 2.0f)
     return SMG_ERROR_INVALID_ARGUMENT;
   duration = params->duration > 0.0f ? params->duration : 8.0;
   rate = params->frame_rate > 0.0f ? params->frame_rate : 60.0;
-  gait_init(params, &g);
+  gait_init(params, duration, &g);
   frames = (uint32_t)floor(duration * rate + 0.5);
   if (frames < 2) frames = 2;
 
@@ -393,6 +453,8 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
   c.frame_rate = (float)rate;
   snprintf(c.name, sizeof c.name, "synthetic_%s",
            params->kind == SMGB_SYNTH_WALK ? "walk"
+           : params->kind == SMGB_SYNTH_WALK_STOP ? "walk_stop"
+           : params->kind == SMGB_SYNTH_WALK_START ? "walk_start"
            : params->kind == SMGB_SYNTH_RUN ? "run"
            : params->kind == SMGB_SYNTH_WAVE ? "wave" : "punch");
 
@@ -416,7 +478,10 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
       roll = -0.02 * sin(2.0 * SMGB_M_PI * ph);
     } else {
       ph = frac(t / g.T);
-      path_at(&g, g.v * t, base, &heading);
+      if (g.ramp)
+        path_at(&g, dist_at(&g, t), base, &heading);
+      else
+        path_at(&g, g.v * t, base, &heading);
       /* Weight toward the stance foot (left during the first half of the
        * cycle); zero at whole cycles so the root is exactly on the path
        * there, which tests use as ground truth. */
@@ -424,6 +489,15 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
       H = g.h0 + g.bob_sign * g.bob * cos(4.0 * SMGB_M_PI * (ph - 0.5 * g.D));
       yaw_osc = -g.yaw_osc * cos(2.0 * SMGB_M_PI * ph);
       roll = -g.roll * cos(2.0 * SMGB_M_PI * (ph - 0.5 * g.D));
+      if (g.ramp) {
+        /* the gait's sway, bob and turning fade with the speed: standing
+         * still, the pelvis is still */
+        const double k = speed_share(&g, t);
+        sway *= k;
+        H = g.h0 + k * (H - g.h0);
+        yaw_osc *= k;
+        roll *= k;
+      }
     }
     base[0] += sway * cos(heading);
     base[1] += sway * -sin(heading);
@@ -471,7 +545,13 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
       smgb_q_mul(inv, wf, tmp);
       put_q(pose, side ? J_RFOOT : J_LFOOT, tmp);
     }
-    upper_body(&g, params->kind, t, ph, yaw_osc, pose);
+    if (g.ramp) {
+      gait arms = g; /* the arms swing less as the walk slows */
+      arms.arm_swing *= speed_share(&g, t);
+      upper_body(&arms, SMGB_SYNTH_WALK, t, ph, yaw_osc, pose);
+    } else {
+      upper_body(&g, params->kind, t, ph, yaw_osc, pose);
+    }
   }
   /* Hemisphere continuity, as the BVH importer guarantees. */
   for (f = 1; f < frames; ++f) {
@@ -487,6 +567,8 @@ smg_result smgb_synth_generate(const smgb_synth_params* params,
     memset(truth, 0, sizeof *truth);
     truth->kind = params->kind;
     truth->speed = (float)g.v;
+    truth->ramp_at = (float)g.ramp_at;
+    truth->ramp_seconds = (float)g.ramp_seconds;
     truth->step_length = (float)g.L;
     truth->stride_period = (float)g.T;
     truth->duty_factor = (float)g.D;

@@ -36,8 +36,17 @@ typedef enum smgb_synth_kind {
   SMGB_SYNTH_WALK = 0,  /* locomotion, style "walk" */
   SMGB_SYNTH_RUN = 1,   /* locomotion, style "run" (flight phase) */
   SMGB_SYNTH_WAVE = 2,  /* standing, right arm waves */
-  SMGB_SYNTH_PUNCH = 3  /* standing, alternating straight punches */
+  SMGB_SYNTH_PUNCH = 3, /* standing, alternating straight punches */
+  /* a walk that comes to rest / sets off from rest: the pelvis speed
+   * ramps over one stride (minimum jerk) at the walk's cadence, the steps
+   * shortening until the feet stand side by side; still for
+   * SMGB_SYNTH_STILL_SECONDS at the clip's end / start. Not in the
+   * standard set (tests of stopping and starting motion bake them). */
+  SMGB_SYNTH_WALK_STOP = 4,
+  SMGB_SYNTH_WALK_START = 5
 } smgb_synth_kind;
+
+#define SMGB_SYNTH_STILL_SECONDS 2.0
 
 typedef struct smgb_synth_params {
   smgb_synth_kind kind;
@@ -65,6 +74,10 @@ typedef struct smgb_synth_truth {
   float ankle_height;     /* ankle (Foot joint) height when planted, m */
   float start_heading;    /* heading at t = 0 (0: facing +Z) */
   uint32_t left_foot, right_foot; /* joint indices (LeftFoot, RightFoot) */
+  /* WALK_STOP / WALK_START: the pelvis speed is speed (1 - e(u)) / speed
+   * e(u), e the minimum-jerk ease of u = (t - ramp_at) / ramp_seconds
+   * clamped to [0, 1] (both 0 for the other kinds) */
+  float ramp_at, ramp_seconds;
 } smgb_synth_truth;
 
 /* The synthetic 31-joint skeleton (metres). */

@@ -772,6 +772,90 @@ static void build_can_stop(const smgi_graph_data* d, uint8_t* can_stop) {
   }
 }
 
+/* The stopping and starting motion of the data (stopping.h) and each
+ * stop's remaining travel, frame by frame, in one block of their own
+ * (none when the data has none). */
+static smg_result build_stops(smg_graph* g, smgi_derived* dv) {
+  const smgi_graph_data* d = &g->data;
+  const float fps = d->info->frame_rate, leg = d->info->leg_length;
+  const uint32_t n = smgi_stopping_find(d->frames, d->frame_count, d->clips,
+                                        d->clip_count, fps, leg, NULL, 0);
+  if (n == 0) return SMG_OK;
+  /* the segments first, then their travel tables (bounded by the pool:
+   * a stop lies within its clip) */
+  smgi_stop_seg* segs = (smgi_stop_seg*)smgi_alloc(
+      &g->allocator, sizeof(smgi_stop_seg) * (size_t)n, 16);
+  if (!segs) return SMG_ERROR_OUT_OF_MEMORY;
+  smgi_stopping_find(d->frames, d->frame_count, d->clips, d->clip_count, fps,
+                     leg, segs, n);
+  size_t left = 0;
+  for (uint32_t k = 0; k < n; ++k)
+    if (segs[k].kind == SMGI_STOP_KIND_STOP)
+      left += (size_t)(segs[k].rest - segs[k].first) + 1u;
+  const size_t off_first = align16(sizeof(smgi_stop_seg) * (size_t)n);
+  const size_t off_entry = off_first + align16(sizeof(uint32_t) * (size_t)n);
+  const size_t off_left = off_entry + align16(sizeof(uint32_t) * (size_t)n);
+  uint8_t* mem = (uint8_t*)smgi_alloc(
+      &g->allocator, off_left + sizeof(float) * (left + 1u), 16);
+  if (!mem) {
+    smgi_free(&g->allocator, segs);
+    return SMG_ERROR_OUT_OF_MEMORY;
+  }
+  memcpy(mem, segs, sizeof(smgi_stop_seg) * (size_t)n);
+  smgi_free(&g->allocator, segs);
+  const smgi_stop_seg* s = (const smgi_stop_seg*)mem;
+  uint32_t* first = (uint32_t*)(mem + off_first);
+  float* table = (float*)(mem + off_left);
+  uint32_t at = 0;
+  dv->start_count = 0;
+  for (uint32_t k = 0; k < n; ++k) {
+    first[k] = at;
+    if (s[k].kind != SMGI_STOP_KIND_STOP) {
+      dv->start_count++;
+      continue;
+    }
+    /* from the rest backwards: each frame's travel is the next one's
+     * plus the step between them */
+    float t = 0.0f;
+    const uint32_t len = s[k].rest - s[k].first;
+    table[at + len] = 0.0f;
+    for (uint32_t i = len; i > 0; --i) {
+      t += smgi_stopping_travel(d->frames, s[k].first + i - 1u,
+                                s[k].first + i);
+      table[at + i - 1u] = t;
+    }
+    at += len + 1u;
+  }
+  /* each start's last standing node: nodes by frame against the
+   * segments (in order of their first frames) */
+  uint32_t* entry = (uint32_t*)(mem + off_entry);
+  for (uint32_t k = 0; k < n; ++k) entry[k] = SMGI_NONE;
+  for (uint32_t v = 0; v < d->lower_node_count; ++v) {
+    const uint32_t f = d->lower_nodes[v].frame;
+    if (d->lower_nodes[v].edge_count == 0) continue;
+    uint32_t lo = 0, hi = n;
+    while (lo < hi) {
+      const uint32_t mid = lo + (hi - lo) / 2u;
+      if (s[mid].first <= f) lo = mid + 1u;
+      else hi = mid;
+    }
+    for (uint32_t k = lo; k > 0 && lo - k < 4u; --k) {
+      const smgi_stop_seg* q = &s[k - 1u];
+      if (q->kind != SMGI_STOP_KIND_START || f > q->rest) continue;
+      if (entry[k - 1u] == SMGI_NONE ||
+          d->lower_nodes[entry[k - 1u]].frame < f)
+        entry[k - 1u] = v;
+    }
+  }
+  dv->start_entry = entry;
+  dv->stops = s;
+  dv->stop_count = n;
+  dv->stop_left = table;
+  dv->stop_left_first = first;
+  dv->stop_block = mem;
+  return SMG_OK;
+}
+
 smg_result smgi_graph_derived_build(smg_graph* g) {
   if (!g) return SMG_ERROR_INVALID_ARGUMENT;
   const smgi_graph_data* d = &g->data;
@@ -902,12 +986,19 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   }
   dv->style_can_stop = can_stop;
   smgi_idle_choose(g, &dv->idle);
+  smg_result r = build_stops(g, dv);
+  if (r != SMG_OK) {
+    smgi_free(&g->allocator, mem);
+    return r;
+  }
   g->derived = dv;
   return SMG_OK;
 }
 
 void smgi_graph_derived_free(smg_graph* g) {
   if (!g || !g->derived) return;
+  smgi_derived* dv = (smgi_derived*)g->derived;
+  if (dv->stop_block) smgi_free(&g->allocator, dv->stop_block);
   smgi_free(&g->allocator, g->derived);
   g->derived = NULL;
 }

@@ -13,6 +13,7 @@
 
 #include "graph_data.h"
 #include "idle.h"
+#include "stopping.h"
 #include "tuning.h"
 
 #define SMGI_HOPS_UNREACHABLE 255u
@@ -102,6 +103,23 @@ typedef struct smgi_derived {
   float stop_speed;
   /* The standing motion played at rest (idle.h; count 0: none). */
   smgi_idle idle;
+  /* Stopping and starting motion in the data (stopping.h), in pool order
+   * of `first`; none (count 0, NULL tables) where every clip ends and
+   * begins in motion, as in all the shared graphs. For stop k,
+   * stop_left[stop_left_first[k] + f - stops[k].first] is the hips'
+   * ground travel left from pool frame f in [first, rest] to rest: what
+   * distance matching reads (stop_match.c). */
+  const smgi_stop_seg* stops;
+  uint32_t stop_count;
+  uint32_t start_count; /* of them, starts */
+  const float* stop_left;
+  const uint32_t* stop_left_first;
+  /* start_entry[k] for start k: its last node standing before it moves
+   * off (the latest node with out-edges whose frame lies in [first,
+   * rest]), where a character at rest enters it; SMGI_NONE for stops and
+   * starts without one. */
+  const uint32_t* start_entry;
+  void* stop_block; /* owns the three tables */
 } smgi_derived;
 
 /* Build g->derived through g->allocator. The graph must be validated. */

@@ -54,6 +54,10 @@ typedef struct smgi_lower {
   uint32_t style;       /* label of the edge playing */
   uint32_t last_frame;  /* key of the integer lower frame last processed */
   smgi_lag lag;         /* pending for the entries beyond the next two */
+  /* a stop from the data planned (stop_match.h): the queue entry (seq)
+   * and frame offset its hips rest on; stop_seq SMGI_NONE: none. Written
+   * by the planner, which drops it with the plan; read by the steering */
+  uint32_t stop_seq, stop_offset;
 } smgi_lower;
 
 /* No correction pending for the entries beyond the next two. */

@@ -31,6 +31,7 @@
 #include "planner.h"
 
 #include "plan_search.h"
+#include "stop_match.h"
 
 /* The planner's job: its own state, the timeline it extends and its
  * inputs (planner.h). */
@@ -117,6 +118,74 @@ static void slow_to_stop(const job* j, smgi_seq_ctx* sc, float s) {
   if (j->in->path->length - s >= way) return;
   sc->style0 = dv->stop_style;
   sc->style_end = INFINITY;
+}
+
+static void tail_state(const job* j, uint32_t* node, smgi_xform2* W,
+                       float* s, uint32_t* seg);
+static void push(const job* j, smgi_xform2 W, float s, const cand* c,
+                 uint32_t rank, uint32_t count);
+
+/* Stopping motion from the data (stop_match.h): once the plan ends within
+ * the graph's longest stop plus the horizon of the end, a route into a
+ * stop whose rest lands on the end is planned instead of the search's
+ * choice, and its rest marked for the steering, which plays it to rest.
+ * Graphs without stops never get here (their stop is the IK's). Returns
+ * 1 if it planned one. */
+static int plan_data_stop(const job* j, uint32_t node, smgi_xform2 W,
+                          float s, uint32_t seg) {
+  const smg_graph* g = j->in->graph;
+  if (smgi_derived_of(g)->stop_count == 0 || !j->steer->enabled ||
+      j->in->path->count < 2u || j->lower->stop_seq != SMGI_NONE)
+    return 0;
+  const float way = j->in->path->length - s;
+  if (way < 0.0f || way > smgi_stop_longest(g) +
+                              j->steer->own_speed * j->pl->horizon)
+    return 0;
+  smgi_stop_route r;
+  if (!smgi_stop_match(g, j->in->path, node, W, s, &r) ||
+      j->lower->count + r.count > SMGI_QUEUE_CAP)
+    return 0;
+  float u = 0.0f;
+  for (uint32_t k = 0; k < r.count; ++k) {
+    cand x;
+    if (k > 0) tail_state(j, &node, &W, &s, &seg);
+    make_cand(j, W, s, seg, u, r.edges[k], &x);
+    push(j, W, s, &x, 0, 1);
+    u += g->data.lower_edges[r.edges[k]].arc_length;
+  }
+  j->lower->stop_seq = smgi_q_at(j->lower, j->lower->count - 1u)->seq;
+  j->lower->stop_offset = r.rest_offset;
+  return 1;
+}
+
+/* Starting motion from the data (stop_match.h): where the plan stands
+ * still in a stop's or start's standing frames with more of the path
+ * ahead than the graph's stops need to come to rest again, a route into
+ * the start that moves off soonest along the path is planned instead of
+ * the search's choice (the search, valuing two seconds, cannot tell one
+ * standing edge from another). Graphs without starts never get here.
+ * Returns 1 if it planned one. */
+static int plan_data_start(const job* j, uint32_t node, smgi_xform2 W,
+                           float s, uint32_t seg) {
+  const smg_graph* g = j->in->graph;
+  if (smgi_derived_of(g)->start_count == 0 || !j->steer->enabled ||
+      j->in->path->count < 2u ||
+      j->in->path->length - s <= smgi_stop_longest(g) ||
+      !smgi_stop_still(g, g->data.lower_nodes[node].frame))
+    return 0;
+  smgi_stop_route r;
+  if (!smgi_start_match(g, j->in->path, seg, node, W, &r) ||
+      j->lower->count + r.count > SMGI_QUEUE_CAP)
+    return 0;
+  float u = 0.0f;
+  for (uint32_t k = 0; k < r.count; ++k) {
+    cand x;
+    if (k > 0) tail_state(j, &node, &W, &s, &seg);
+    make_cand(j, W, s, seg, u, r.edges[k], &x);
+    push(j, W, s, &x, 0, 1);
+    u += g->data.lower_edges[r.edges[k]].arc_length;
+  }
+  return 1;
 }
 
 /* Score all out-edges of `node` from (W, s, seg), sorted best first
@@ -404,6 +473,9 @@ static void plan(const job* j, uint32_t budget, float step_frames) {
     smgi_xform2 W;
     float s;
     tail_state(j, &node, &W, &s, &seg);
+    if (plan_data_stop(j, node, W, s, seg) ||
+        plan_data_start(j, node, W, s, seg))
+      continue;
     uint32_t seq[SMGI_SEQ_PATH_CAP], seq_len = 0;
     uint32_t n = rank_node(j, node, W, s, seg, c, seq, &seq_len);
     if (n == 0) return; /* dead end: playback holds the last frame */
@@ -439,8 +511,54 @@ static void plan(const job* j, uint32_t budget, float step_frames) {
   }
 }
 
+/* Setting off from rest in a stop's standing frames (stop_match.h): the
+ * edge playing would stand on to its end, and the graph's way into a
+ * start stand on through its standing (the synthetic test graph: 1.4 s
+ * before moving off). Standing frames are one pose, so the plan starts
+ * over in the start that moves off soonest along the path, at its last
+ * standing node, placed where the character stands (smgi_start_jump);
+ * the rest stage covers the change of stance as it covers any start
+ * from rest. Returns 1 if it did. */
+static int restart_from_rest(const job* j) {
+  const smg_graph* g = j->in->graph;
+  if (smgi_derived_of(g)->start_count == 0 || !j->steer->enabled ||
+      j->in->path->count < 2u ||
+      j->in->path->length - j->in->progress <= smgi_stop_longest(g))
+    return 0;
+  const smgi_qentry* h = smgi_q_at(j->lower, 0);
+  const smgi_edge* e = &g->data.lower_edges[h->edge];
+  const uint32_t f = e->first_frame + (uint32_t)j->lower->t;
+  if (!smgi_stop_still(g, f)) return 0;
+  const smgi_xform2 W =
+      smgi_xf_mul(smgi_q_placement(j->lower, 0), ground_of(g, f));
+  smgi_stop_route r;
+  if (!smgi_start_jump(g, j->in->path, j->in->seg, W, &r)) return 0;
+  j->lower->count = 0;
+  j->lower->frames = 0;
+  j->lower->t = 0.0f;
+  j->lower->node = g->data.lower_edges[r.edges[0]].from;
+  j->lower->stop_seq = SMGI_NONE;
+  j->pl->backtracks = 0;
+  smgi_lag_reset(&j->lower->lag);
+  cand x;
+  make_cand(j, W, j->in->progress, j->in->seg, 0.0f, r.edges[0], &x);
+  push(j, W, j->in->progress, &x, 0, 1);
+  float u = g->data.lower_edges[r.edges[0]].arc_length;
+  for (uint32_t k = 1; k < r.count; ++k) {
+    uint32_t node, seg;
+    smgi_xform2 Wk;
+    float s;
+    tail_state(j, &node, &Wk, &s, &seg);
+    make_cand(j, Wk, s, seg, u, r.edges[k], &x);
+    push(j, Wk, s, &x, 0, 1);
+    u += g->data.lower_edges[r.edges[k]].arc_length;
+  }
+  return 1;
+}
+
 static void replan(const job* j) {
   if (j->lower->count == 0) return;
+  if (restart_from_rest(j)) return;
   if (j->in->time == 0.0 && j->lower->t == 0.0f) {
     /* nothing played yet: the first edge itself may be re-chosen */
     smgi_qentry h = *smgi_q_at(j->lower, 0);
@@ -449,11 +567,13 @@ static void replan(const job* j) {
     uint32_t n = rank_node(j, from, h.W, j->in->progress, j->in->seg, c, NULL, NULL);
     j->lower->count = 0;
     j->lower->frames = 0;
+    j->lower->stop_seq = SMGI_NONE;
     j->pl->backtracks = 0;
     smgi_lag_reset(&j->lower->lag);
     push(j, h.W, j->in->progress, &c[0], 0, n);
     return;
   }
+  j->lower->stop_seq = SMGI_NONE; /* the stop, if any, is chosen again */
   j->lower->count = 1; /* keep only the edge that is playing */
   smgi_lag_reset(&j->lower->lag); /* nothing beyond the next two is left */
   j->lower->frames =
@@ -504,6 +624,7 @@ static smg_result plan_start(const job* j, uint32_t* rng, float x, float z,
   j->lower->count = 0;
   j->lower->frames = 0;
   j->lower->t = 0.0f;
+  j->lower->stop_seq = SMGI_NONE;
   smgi_lag_reset(&j->lower->lag);
   push(j, W, j->in->progress, &c[0], 0, n);
   j->lower->node = node;

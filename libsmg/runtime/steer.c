@@ -70,6 +70,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->stride = 1.0f;
   s->drift_turn = s->drift_move = 0.0f;
   s->heading_seg = SMGI_NONE;
+  s->data_stop = 0;
 }
 
 void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
@@ -87,6 +88,7 @@ void smgi_steer_path_changed(smgi_steer* s) {
   s->mode = SMGI_STEER_FOLLOW;
   s->heading_seg = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
+  s->data_stop = 0;
 }
 
 /* The path's point `ahead` metres past arc s, continued straight past the
@@ -333,6 +335,37 @@ static void consider_stop(smgi_steer* s, const smgi_lower* lower,
   s->mode = SMGI_STEER_BRAKE;
 }
 
+/* A stop from the data (stop_match.h): the planner marked the frame its
+ * hips rest on. Once that frame is queued it is the stop frame, at once:
+ * the route's miss of the end is slid out over all of the way there
+ * (steer_apply), not just its last steps, and the motion is the stop's
+ * own, so it plays at normal rate to it (data_stop_frames). Returns 1 if
+ * it is. */
+static int follow_data_stop(smgi_steer* s, const smgi_lower* lower,
+                            const smgi_step_in* in) {
+  if (lower->stop_seq == SMGI_NONE ||
+      frames_to(lower, in->graph, lower->stop_seq, lower->stop_offset) < 0.0f)
+    return 0;
+  s->stop_seq = lower->stop_seq;
+  s->stop_offset = lower->stop_offset;
+  s->mode = SMGI_STEER_BRAKE;
+  s->data_stop = 1;
+  return 1;
+}
+
+/* Frames a stop from the data plays this step, `left` before its rest:
+ * at normal rate (the data slows itself), at rest on its frame. */
+static float data_stop_frames(smgi_steer* s, float left, float full,
+                              float dt) {
+  s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
+  s->stride = approach(s->stride, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
+  const float frames = full * s->rate;
+  if (frames < left) return frames;
+  s->mode = SMGI_STEER_REST;
+  s->rate = 0.0f;
+  return left > 0.0f ? left : 0.0f;
+}
+
 /* Distance matching: the share of its travel the motion keeps so that
  * the hips come to stand on the end rather than where the stop frame,
  * `left` frames ahead, and its settling step would put them (a stop frame
@@ -443,6 +476,7 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
   const float full = dt * in->fps;
   if (!s->enabled || in->path->count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
+    s->data_stop = 0;
     s->rate = approach(s->rate, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
     s->stride = approach(s->stride, 1.0f, SMGI_STEER_RATE_ACCEL * dt);
     return full * s->rate;
@@ -463,7 +497,7 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
     s->stride = approach(s->stride, fminf(want / rate, end_stride(s, lower, in)),
                          SMGI_STEER_RATE_ACCEL * dt);
-    consider_stop(s, lower, in);
+    if (!follow_data_stop(s, lower, in)) consider_stop(s, lower, in);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
   }
   if (s->mode == SMGI_STEER_REST) {
@@ -475,8 +509,10 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
   float left = frames_to(lower, in->graph, s->stop_seq, s->stop_offset);
   if (left < 0.0f) { /* re-planned away: follow again */
     s->mode = SMGI_STEER_FOLLOW;
+    s->data_stop = 0;
     return full * s->rate;
   }
+  if (s->data_stop) return data_stop_frames(s, left, full, dt);
   s->stride = approach(s->stride,
                        fminf(brake_stride(s, lower, in, left),
                              end_stride(s, lower, in)),
@@ -663,9 +699,11 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
         frame_stand(lower, g,
                     (uint32_t)(lower->t - floorf(lower->t) + left + 0.5f),
                     &sx, &sz);
-        /* the rest of the braking lasts 2 * left / (fps * rate) */
-        float remain =
-            2.0f * left / (in->fps * (s->rate > 0.05f ? s->rate : 0.05f));
+        /* the rest of the braking lasts 2 * left / (fps * rate); a stop
+         * from the data plays on at its rate, and the miss its route
+         * left (stop_match.h) is slid out evenly over all of it */
+        float remain = (s->data_stop ? 1.0f : 2.0f) * left /
+                       (in->fps * (s->rate > 0.05f ? s->rate : 0.05f));
         if (remain < SMGI_STEER_SLIDE_TIME) remain = SMGI_STEER_SLIDE_TIME;
         want_sx = (p->xz[2u * (p->count - 1u)] - sx) / remain;
         want_sz = (p->xz[2u * (p->count - 1u) + 1u] - sz) / remain;

@@ -54,6 +54,8 @@ typedef struct smgi_steer {
   /* braking: the frame the character comes to rest on */
   uint32_t stop_seq;      /* queue entry (seq) holding it */
   uint32_t stop_offset;   /* frame offset inside that entry's edge */
+  uint32_t data_stop;     /* 1: it is the rest of a stop from the data
+                           * (stop_match.h), played at normal rate */
 } smgi_steer;
 
 /* Limits already settled (smgi_settle_defaults). */
