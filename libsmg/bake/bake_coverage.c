@@ -42,17 +42,10 @@ static int near_kept(const smgb_kd_tree* t, const uint32_t* kept,
                      uint32_t pending_from, uint32_t kept_count,
                      const float* feat, uint32_t d, uint32_t w, float r2) {
   const float* q = feat + (size_t)w * d;
-  uint32_t i, a;
+  uint32_t i;
   if (smgb_kd_any_within(t, feat, d, q, r2)) return 1;
-  for (i = pending_from; i < kept_count; ++i) {
-    const float* f = feat + (size_t)kept[i] * d;
-    float acc = 0.0f;
-    for (a = 0; a < d && acc <= r2; ++a) {
-      float df = f[a] - q[a];
-      acc += df * df;
-    }
-    if (acc <= r2) return 1;
-  }
+  for (i = pending_from; i < kept_count; ++i)
+    if (smgb_kd_within(feat + (size_t)kept[i] * d, q, d, r2)) return 1;
   return 0;
 }
 

@@ -109,16 +109,9 @@ static int any_within(const smgb_kd_tree* t, uint32_t node, const float* feat,
                       float* off) {
   const smgb_kd_node* n = &t->nodes[node];
   if (!n->left) {
-    uint32_t i, a;
-    for (i = n->lo; i < n->hi; ++i) {
-      const float* f = feat + (size_t)t->idx[i] * d;
-      float acc = 0.0f;
-      for (a = 0; a < d && acc <= r2; ++a) {
-        float df = f[a] - q[a];
-        acc += df * df;
-      }
-      if (acc <= r2) return 1;
-    }
+    uint32_t i;
+    for (i = n->lo; i < n->hi; ++i)
+      if (smgb_kd_within(feat + (size_t)t->idx[i] * d, q, d, r2)) return 1;
     return 0;
   }
   {

@@ -33,6 +33,19 @@ typedef struct smgb_kd_tree {
  * features are feat[w * dims .. + dims). Returns 0 when out of memory. */
 int smgb_kd_build(smgb_kd_tree* t, const float* feat, uint32_t dims);
 
+/* 1 when feature vector f lies within squared distance r2 of q; the sum
+ * stops as soon as it passes r2 (most candidates are far). */
+static inline int smgb_kd_within(const float* f, const float* q,
+                                 uint32_t dims, float r2) {
+  float acc = 0.0f;
+  uint32_t a;
+  for (a = 0; a < dims && acc <= r2; ++a) {
+    float df = f[a] - q[a];
+    acc += df * df;
+  }
+  return acc <= r2;
+}
+
 /* 1 when some window of the tree lies within squared distance r2 of q. */
 int smgb_kd_any_within(const smgb_kd_tree* t, const float* feat,
                        uint32_t dims, const float* q, float r2);
