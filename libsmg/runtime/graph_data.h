@@ -10,6 +10,7 @@
 
 #include "smg.h"
 #include "quat_pack.h"
+#include "rmath.h"
 #include "smg_format.h"
 
 struct smg_graph {
@@ -39,6 +40,22 @@ void smgi_graph_release(smg_graph* graph);
 static inline const unsigned char* smgi_graph_pose(const smg_graph* g,
                                                    uint32_t i) {
   return smgi_pose_record(&g->data, i);
+}
+
+/* Frame `frame`'s ground transform (root2d: x, z, heading) and an edge's
+ * ground displacement, as transforms: what the planner and the stop
+ * matching chain edges with. */
+static inline smgi_xform2 smgi_frame_ground(const smg_graph* g,
+                                            uint32_t frame) {
+  const float* r = g->data.frames[frame].root2d;
+  smgi_xform2 x = {r[0], r[1], r[2]};
+  return x;
+}
+
+static inline smgi_xform2 smgi_edge_displacement(const smgi_edge* e) {
+  smgi_xform2 x = {e->displacement[0], e->displacement[1],
+                   e->displacement[2]};
+  return x;
 }
 
 /* Which joints smgi_sample_joints samples (joint 0, the root, never: its

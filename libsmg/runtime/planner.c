@@ -52,18 +52,6 @@ typedef struct cand {
                      * beyond what the steering removes */
 } cand;
 
-static smgi_xform2 ground_of(const smg_graph* g, uint32_t frame) {
-  const float* r = g->data.frames[frame].root2d;
-  smgi_xform2 x = {r[0], r[1], r[2]};
-  return x;
-}
-
-static smgi_xform2 disp_of(const smgi_edge* e) {
-  smgi_xform2 x = {e->displacement[0], e->displacement[1],
-                   e->displacement[2]};
-  return x;
-}
-
 /* The paper's distance error of an edge whose end lies d from the path,
  * less what the root steering takes out by the edge's end (steer.c), `u`
  * metres of planned motion before it: the threshold judges the motion as
@@ -85,7 +73,7 @@ static void make_cand(const job* j, smgi_xform2 W, float s,
   const smgi_edge* e = &j->in->graph->data.lower_edges[ei];
   memset(x, 0, sizeof *x);
   x->edge = ei;
-  x->end = smgi_xf_mul(W, disp_of(e));
+  x->end = smgi_xf_mul(W, smgi_edge_displacement(e));
   x->s_end = s + e->arc_length;
   x->seg_end = seg;
   x->work = 1u;
@@ -355,7 +343,7 @@ static void push(const job* j, smgi_xform2 W, float s, const cand* c,
   if (i >= 2u) W = smgi_lag_undo(&j->lower->lag, W);
   q->W = W;
   q->M = smgi_xf_mul(
-      W, smgi_xf_inv(ground_of(g, g->data.lower_nodes[e->from].frame)));
+      W, smgi_xf_inv(smgi_frame_ground(g, g->data.lower_nodes[e->from].frame)));
   q->s_start = s;
   q->s_end = c->s_end;
   q->seg_end = c->seg_end;
@@ -370,7 +358,7 @@ static void tail_state(const job* j, uint32_t* node,
   const smgi_qentry* q = smgi_q_at_c(j->lower, j->lower->count - 1u);
   const smgi_edge* e = &j->in->graph->data.lower_edges[q->edge];
   *node = e->to;
-  *W = smgi_xf_mul(smgi_q_ground(j->lower, j->lower->count - 1u), disp_of(e));
+  *W = smgi_xf_mul(smgi_q_ground(j->lower, j->lower->count - 1u), smgi_edge_displacement(e));
   *s = q->s_end;
   *seg = q->seg_end;
 }
@@ -530,7 +518,7 @@ static int restart_from_rest(const job* j) {
   const uint32_t f = e->first_frame + (uint32_t)j->lower->t;
   if (!smgi_stop_still(g, f)) return 0;
   const smgi_xform2 W =
-      smgi_xf_mul(smgi_q_placement(j->lower, 0), ground_of(g, f));
+      smgi_xf_mul(smgi_q_placement(j->lower, 0), smgi_frame_ground(g, f));
   smgi_stop_route r;
   if (!smgi_start_jump(g, j->in->path, j->in->seg, W, &r)) return 0;
   j->lower->count = 0;
@@ -581,7 +569,7 @@ static void replan(const job* j) {
   j->pl->backtracks = 0;
   smgi_qentry* h = smgi_q_at(j->lower, 0);
   const smgi_edge* e = &j->in->graph->data.lower_edges[h->edge];
-  smgi_xform2 end = smgi_xf_mul(h->W, disp_of(e));
+  smgi_xform2 end = smgi_xf_mul(h->W, smgi_edge_displacement(e));
   uint32_t seg = j->in->seg;
   float dist;
   h->s_start = j->in->progress;

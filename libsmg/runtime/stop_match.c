@@ -31,18 +31,6 @@ typedef struct search {
   smgi_stop_route best;
 } search;
 
-static smgi_xform2 ground_of(const smg_graph* g, uint32_t frame) {
-  const float* r = g->data.frames[frame].root2d;
-  smgi_xform2 x = {r[0], r[1], r[2]};
-  return x;
-}
-
-static smgi_xform2 disp_of(const smgi_edge* e) {
-  smgi_xform2 x = {e->displacement[0], e->displacement[1],
-                   e->displacement[2]};
-  return x;
-}
-
 float smgi_stop_longest(const smg_graph* g) {
   const smgi_derived* dv = smgi_derived_of(g);
   float most = 0.0f;
@@ -115,12 +103,12 @@ static void try_entry(search* S, uint32_t n, uint32_t edge, smgi_xform2 W,
         d->lower_edges[next].first_frame != e->first_frame + e->frame_count ||
         (d->lower_edges[next].flags & SMGI_EDGE_TRANSITION))
       return;
-    W = smgi_xf_mul(W, disp_of(e));
+    W = smgi_xf_mul(W, smgi_edge_displacement(e));
     cur = next;
   }
   const smgi_edge* e = &d->lower_edges[cur];
   const smgi_xform2 M = smgi_xf_mul(
-      W, smgi_xf_inv(ground_of(S->g, d->lower_nodes[e->from].frame)));
+      W, smgi_xf_inv(smgi_frame_ground(S->g, d->lower_nodes[e->from].frame)));
   float x, z;
   smgi_xf_point(M, d->frames[st->rest].root2d[0],
                 d->frames[st->rest].root2d[1], &x, &z);
@@ -145,7 +133,7 @@ static void visit(search* S, uint32_t depth, uint32_t edge, smgi_xform2 W,
   if (u + e->arc_length > S->way + S->tol) return;
   S->lead[depth] = edge;
   const smgi_node* to = &S->g->data.lower_nodes[e->to];
-  const smgi_xform2 W2 = smgi_xf_mul(W, disp_of(e));
+  const smgi_xform2 W2 = smgi_xf_mul(W, smgi_edge_displacement(e));
   for (uint32_t i = 0; i < to->edge_count; ++i)
     visit(S, depth + 1u, to->first_edge + i, W2, u + e->arc_length);
 }
@@ -202,7 +190,7 @@ static void try_start(start_search* S, uint32_t n, uint32_t edge,
   memcpy(route, S->lead, sizeof(uint32_t) * n);
   uint32_t cur = edge;
   smgi_xform2 M0 = smgi_xf_mul(
-      W, smgi_xf_inv(ground_of(S->g, d->lower_nodes[d->lower_edges[edge].from]
+      W, smgi_xf_inv(smgi_frame_ground(S->g, d->lower_nodes[d->lower_edges[edge].from]
                                          .frame)));
   for (;;) {
     const smgi_edge* e = &d->lower_edges[cur];
@@ -243,7 +231,7 @@ static void visit_start(start_search* S, uint32_t depth, uint32_t edge,
   if (depth >= SMGI_STOP_ROUTE_LEAD) return;
   S->lead[depth] = edge;
   const smgi_node* to = &S->g->data.lower_nodes[e->to];
-  const smgi_xform2 W2 = smgi_xf_mul(W, disp_of(e));
+  const smgi_xform2 W2 = smgi_xf_mul(W, smgi_edge_displacement(e));
   for (uint32_t i = 0; i < to->edge_count; ++i)
     visit_start(S, depth + 1u, to->first_edge + i, W2,
                 waited + (float)e->frame_count);
