@@ -113,6 +113,21 @@ static void tail_state(const job* j, uint32_t* node, smgi_xform2* W,
 static void push(const job* j, smgi_xform2 W, float s, const cand* c,
                  uint32_t rank, uint32_t count);
 
+/* Queue a whole route from the stop matching (stop_match.h) as planned
+ * edges, each placed after the one before, from the plan's tail state. */
+static void push_route(const job* j, const smgi_stop_route* r, uint32_t node,
+                       smgi_xform2 W, float s, uint32_t seg) {
+  const smg_graph* g = j->in->graph;
+  float u = 0.0f;
+  for (uint32_t k = 0; k < r->count; ++k) {
+    cand x;
+    if (k > 0) tail_state(j, &node, &W, &s, &seg);
+    make_cand(j, W, s, seg, u, r->edges[k], &x);
+    push(j, W, s, &x, 0, 1);
+    u += g->data.lower_edges[r->edges[k]].arc_length;
+  }
+}
+
 /* Stopping motion from the data (stop_match.h): once the plan ends within
  * the graph's longest stop plus the horizon of the end, a route into a
  * stop whose rest lands on the end is planned instead of the search's
@@ -133,14 +148,7 @@ static int plan_data_stop(const job* j, uint32_t node, smgi_xform2 W,
   if (!smgi_stop_match(g, j->in->path, node, W, s, &r) ||
       j->lower->count + r.count > SMGI_QUEUE_CAP)
     return 0;
-  float u = 0.0f;
-  for (uint32_t k = 0; k < r.count; ++k) {
-    cand x;
-    if (k > 0) tail_state(j, &node, &W, &s, &seg);
-    make_cand(j, W, s, seg, u, r.edges[k], &x);
-    push(j, W, s, &x, 0, 1);
-    u += g->data.lower_edges[r.edges[k]].arc_length;
-  }
+  push_route(j, &r, node, W, s, seg);
   j->lower->stop_seq = smgi_q_at(j->lower, j->lower->count - 1u)->seq;
   j->lower->stop_offset = r.rest_offset;
   return 1;
@@ -165,14 +173,7 @@ static int plan_data_start(const job* j, uint32_t node, smgi_xform2 W,
   if (!smgi_start_match(g, j->in->path, seg, node, W, &r) ||
       j->lower->count + r.count > SMGI_QUEUE_CAP)
     return 0;
-  float u = 0.0f;
-  for (uint32_t k = 0; k < r.count; ++k) {
-    cand x;
-    if (k > 0) tail_state(j, &node, &W, &s, &seg);
-    make_cand(j, W, s, seg, u, r.edges[k], &x);
-    push(j, W, s, &x, 0, 1);
-    u += g->data.lower_edges[r.edges[k]].arc_length;
-  }
+  push_route(j, &r, node, W, s, seg);
   return 1;
 }
 
