@@ -404,6 +404,19 @@ static float step_over(float u) {
   return smooth((u - 0.5f) / SMGI_REST_STEP_OVER + 0.5f);
 }
 
+/* Whether a foot kept where it stood (hold, x and z) is further from the
+ * locomotion's own foot (toe, world x y z) than the foot IK lets a
+ * planted foot drift (SMGI_IK_RELEASE): held on until the locomotion's
+ * contact ends, the leg would stretch after the body walking on and the
+ * toe lift off the floor for as long (where the steering slides the body
+ * away from a held foot: with the slide measured from the hips, a CMU
+ * start held a foot 0.4 m behind its locomotion's for 0.6 s, a swing of
+ * 1 s). It steps there instead. */
+static int held_too_far(const float* hold, const float* toe, float leg) {
+  const float dx = toe[0] - hold[0], dz = toe[2] - hold[1];
+  return dx * dx + dz * dz > (SMGI_IK_RELEASE * leg) * (SMGI_IK_RELEASE * leg);
+}
+
 void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io) {
   if (r->phase == SMGI_REST_OFF || !io->ik->enabled) return;
   if (r->phase == SMGI_REST_LEAVE) {
@@ -426,9 +439,11 @@ void smgi_rest_feet(smgi_rest* r, const smgi_rest_io* io) {
         speed = sqrtf((ap[0] - ft->toe[0]) * (ap[0] - ft->toe[0]) +
                       (ap[2] - ft->toe[2]) * (ap[2] - ft->toe[2])) /
                 r->dt;
-      if (!(io->pose->contacts & bits[f]) && r->rejoin[f] < 0.0f &&
-          (speed > SMGI_IK_SWING_SLOW * info->leg_length ||
-           ap[1] > ft->stand_y + SMGI_IK_CLEAR * info->leg_length))
+      if (r->rejoin[f] < 0.0f &&
+          ((!(io->pose->contacts & bits[f]) &&
+            (speed > SMGI_IK_SWING_SLOW * info->leg_length ||
+             ap[1] > ft->stand_y + SMGI_IK_CLEAR * info->leg_length)) ||
+           held_too_far(r->hold[f], ap, info->leg_length)))
         r->rejoin[f] = 0.0f;
       if (r->rejoin[f] < 0.0f) {
         smgi_ik_guide(io->ik, f, r->hold[f][0], r->hold[f][1], 0.0f);
