@@ -12,7 +12,8 @@
  *  - rank_node ranks again with the style yielding to the graph's most
  *    agile one when even the best sequence in the wanted style stays off
  *    the path by more than SMGI_YIELD_ERROR on average beyond what the
- *    steering removes, or the character has drifted SMGI_YIELD_DRIFT off.
+ *    steering removes, or the character has drifted off by more than a
+ *    runner still running cuts on purpose (yield_drift).
  * The best edge is pushed with its distance error (where its end leaves
  * the character from the path, the paper's threshold test), followed by
  * up to SMGI_SEQ_COMMIT_FRAMES of the best sequence's next edges (fewer
@@ -291,11 +292,37 @@ static uint32_t rank_pass(const job* j, uint32_t node,
   return count;
 }
 
+/* How far the character may be off the path before the wanted `style`
+ * counts as failing to follow (SMGI_YIELD_DRIFT). A style faster than the
+ * walk-run transition (one that cannot stop in one step, graph_derived.h)
+ * is still that style to see while it moves faster than midway between
+ * the graph's walk (its stop style) and its own speed; a runner slowed
+ * for a sharp turn but still running cuts what it cannot turn at that
+ * speed: a right angle, at the tightest radius friction allows there
+ * (v^2 / (SMGI_STEER_GRIP g)), leaves it (sqrt 2 - 1) r off the corner.
+ * Off by no more than that, it is doing what a runner does, not failing
+ * to follow, and the run asked for is kept (on a 90-degree corner the
+ * sparse CMU graph's runner was 0.25-0.42 m off, and 0.25 m handed it to
+ * the walk for 2 m after the corner). */
+static float yield_drift(const job* j, float s) {
+  const smgi_derived* dv = smgi_derived_of(j->in->graph);
+  const uint32_t style = smgi_style_at(j->in->cons, s);
+  const float own = j->steer->own_speed;
+  if (!j->steer->enabled || style >= j->in->graph->data.style_count ||
+      dv->style_can_stop[style] || dv->stop_style == SMGI_NONE ||
+      !(own > dv->stop_speed))
+    return SMGI_YIELD_DRIFT;
+  const float v = 0.5f * (dv->stop_speed + own);
+  const float cut = (sqrtf(2.0f) - 1.0f) * v * v /
+                    (SMGI_STEER_GRIP * SMGI_GRAVITY);
+  return cut > SMGI_YIELD_DRIFT ? cut : SMGI_YIELD_DRIFT;
+}
+
 /* Rank the out-edges of `node`; when even the best sequence in the wanted
  * style stays off the path by more than SMGI_YIELD_ERROR on average beyond
  * what the root steering removes (a run asked for where the path turns
- * tighter than a run can be bent), or when the character is already more
- * than SMGI_YIELD_DRIFT off the path (the style is failing to follow),
+ * tighter than a run can be bent), or when the character is already
+ * further off the path than yield_drift (the style is failing to follow),
  * rank again letting the style yield to the most agile one - before the
  * character is lost. An error the steering removes is no reason to drop
  * the style: a run bent around a curve is still the run asked for, and a
@@ -309,7 +336,7 @@ static uint32_t rank_node(const job* j, uint32_t node,
   uint32_t n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 0, &following);
   if (n > 0 && following &&
       (c[0].seq_beyond > SMGI_YIELD_ERROR ||
-       j->in->path_error > SMGI_YIELD_DRIFT) &&
+       j->in->path_error > yield_drift(j, s)) &&
       smgi_derived_of(j->in->graph)->agile_style != smgi_style_at(j->in->cons, s)) {
     n = rank_pass(j, node, W, s, seg, c, seq, seq_len, 1, &following);
     for (uint32_t i = 0; i < n; ++i)

@@ -200,7 +200,7 @@ static float segment_distance(float x, float z, float ax, float az, float bx,
 static void corner_at_a_run(smg_graph* g, const char* name) {
   static trace t;
   float xz[6] = {0.0f, 0.0f, 0.0f, 10.0f, 10.0f, 10.0f};
-  float slowest = 1.0f, worst = 0.0f, walk, fast, at_corner, straight;
+  float slowest = 1.0f, worst = 0.0f, walk, fast, at_corner, straight, after;
   speeds(g, &walk, &fast);
   run(g, xz, 3, 1, -1.0f, 0, 20.0f, &t);
   for (size_t i = 0; i < t.n; ++i) {
@@ -213,12 +213,16 @@ static void corner_at_a_run(smg_graph* g, const char* name) {
   }
   at_corner = median_speed(&t, 9.0f, 11.0f);
   straight = median_speed(&t, 3.0f, 7.0f);
+  after = median_speed(&t, 11.5f, 14.0f);
   print_message("%s: corner at a run: slowest playback %.2f, speed %.2f m/s "
-                "at the corner vs %.2f before it, root within %.2f m\n",
-                name, slowest, at_corner, straight, worst);
+                "at the corner vs %.2f before it and %.2f after it "
+                "(midway to the walk %.2f), root within %.2f m\n",
+                name, slowest, at_corner, straight, after,
+                0.5f * (walk + fast), worst);
   assert_true(slowest >= 0.8f - 1e-4f);
   assert_true(at_corner < straight);
   assert_true(at_corner > walk); /* still running */
+  assert_true(after > 0.5f * (walk + fast)); /* and running on after it */
   assert_true(worst < 0.45f);
 }
 
