@@ -30,7 +30,7 @@
 
 #include "bake/bake_graph_helpers.h"
 #include "graph_derived.h"
-#include "runtime/rest_geom.h"
+#include "runtime/rest_scene.h"
 #include "runtime/runtime_testutil.h"
 
 #define FPS 30.0f
@@ -110,38 +110,7 @@ static void test_found(void** state) {
   bg_free(&set);
 }
 
-/* ---- the scene (as tests/runtime/test_rest.c) ---- */
-
-typedef struct scene {
-  smg_character* ch;
-  rg_legs legs;
-} scene;
-
-static void scene_start(smg_graph* g, scene* s) {
-  smg_graph_info info;
-  memset(&info, 0, sizeof info);
-  info.struct_size = sizeof info;
-  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
-  assert_true(rg_find_legs(g, info.joint_count, &s->legs));
-  smg_character_desc d;
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
-  assert_int_equal(smg_character_create(g, &d, &s->ch), SMG_OK);
-  memset(&g_run, 0, sizeof g_run);
-  g_run.J = info.joint_count;
-  g_run.dt = DT;
-  assert_true(rg_record(&g_run, s->ch, &s->legs));
-  rg_orient(&g_run, &s->legs, 0.0f);
-  if (g_run.n == 0) assert_true(rg_record(&g_run, s->ch, &s->legs));
-}
-
-static void scene_run(scene* s, float seconds) {
-  const uint32_t n = (uint32_t)(seconds * FPS + 0.5f);
-  for (uint32_t i = 0; i < n; ++i) {
-    assert_int_equal(smg_character_step(s->ch, DT), SMG_OK);
-    assert_true(rg_record(&g_run, s->ch, &s->legs));
-  }
-}
+/* ---- the scene (rest_scene.h) ---- */
 
 /* A straight path from the hips' ground point along +Z. */
 static void scene_path(scene* s, float length) {
@@ -212,7 +181,7 @@ typedef struct stop_measure {
 static void measure_stop(smg_graph* g, const smgb_clip* stop_clip,
                          stop_measure* m) {
   scene s;
-  scene_start(g, &s);
+  scene_start(g, &s, &g_run, FPS);
   const float end[3] = {g_run.hips[0][0], 0.0f, g_run.hips[0][2] + 8.0f};
   scene_path(&s, 8.0f);
   scene_run(&s, 14.0f);
@@ -290,7 +259,7 @@ typedef struct start_measure {
 static void measure_start(smg_graph* g, const smgb_clip* start_clip,
                           start_measure* m) {
   scene s;
-  scene_start(g, &s);
+  scene_start(g, &s, &g_run, FPS);
   scene_path(&s, 8.0f);
   scene_run(&s, 12.0f);
   const uint32_t p0 = g_run.n;

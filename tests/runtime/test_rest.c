@@ -34,7 +34,7 @@
 
 #include "bake/bake_graph_helpers.h"
 #include "graph_derived.h"
-#include "runtime/rest_geom.h"
+#include "runtime/rest_scene.h"
 #include "runtime/runtime_testutil.h"
 
 #define FPS 30.0f
@@ -42,38 +42,6 @@
 #define PI_F 3.14159265f
 
 static rg_run g_run; /* one run at a time: 1200 frames of a skeleton */
-
-typedef struct scene {
-  smg_character* ch;
-  rg_legs legs;
-} scene;
-
-/* A character at the origin facing +Z, recorded from its first pose. */
-static void scene_start(smg_graph* g, scene* s) {
-  smg_graph_info info;
-  memset(&info, 0, sizeof info);
-  info.struct_size = sizeof info;
-  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
-  assert_true(rg_find_legs(g, info.joint_count, &s->legs));
-  smg_character_desc d;
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
-  assert_int_equal(smg_character_create(g, &d, &s->ch), SMG_OK);
-  memset(&g_run, 0, sizeof g_run);
-  g_run.J = info.joint_count;
-  g_run.dt = DT;
-  assert_true(rg_record(&g_run, s->ch, &s->legs));
-  rg_orient(&g_run, &s->legs, 0.0f);
-  if (g_run.n == 0) assert_true(rg_record(&g_run, s->ch, &s->legs));
-}
-
-static void scene_run(scene* s, float seconds) {
-  const uint32_t n = (uint32_t)(seconds * FPS + 0.5f);
-  for (uint32_t i = 0; i < n; ++i) {
-    assert_int_equal(smg_character_step(s->ch, DT), SMG_OK);
-    assert_true(rg_record(&g_run, s->ch, &s->legs));
-  }
-}
 
 /* A straight path from the hips' ground point along heading h. */
 static void scene_path(scene* s, float h, float length) {
@@ -110,7 +78,7 @@ typedef struct stop_measure {
 
 static void measure_stop(smg_graph* g, stop_measure* m) {
   scene s;
-  scene_start(g, &s);
+  scene_start(g, &s, &g_run, FPS);
   const float end[3] = {g_run.hips[0][0], 0.0f, g_run.hips[0][2] + 8.0f};
   scene_path(&s, 0.0f, 8.0f);
   scene_run(&s, 16.0f);
@@ -182,7 +150,7 @@ static void measure_run_stop(smg_graph* g, run_stop_measure* m) {
   if (smg_graph_find_style(g, "run", &run) != SMG_OK) return;
   m->ran = 1;
   scene s;
-  scene_start(g, &s);
+  scene_start(g, &s, &g_run, FPS);
   assert_int_equal(smg_character_set_style(s.ch, run), SMG_OK);
   float xz[2 * 48];
   const float* h0 = g_run.hips[g_run.n - 1u];
@@ -265,7 +233,7 @@ typedef struct start_measure {
 
 static void measure_start(smg_graph* g, start_measure* m) {
   scene s;
-  scene_start(g, &s);
+  scene_start(g, &s, &g_run, FPS);
   scene_rest(&s);
   const uint32_t p0 = g_run.n;
   scene_path(&s, 0.0f, 12.0f);
@@ -313,7 +281,7 @@ typedef struct behind_measure {
 
 static void measure_behind(smg_graph* g, behind_measure* m) {
   scene s;
-  scene_start(g, &s);
+  scene_start(g, &s, &g_run, FPS);
   scene_rest(&s);
   const uint32_t p0 = g_run.n;
   scene_path(&s, PI_F, 8.0f);
