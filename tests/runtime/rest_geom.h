@@ -159,6 +159,46 @@ static inline float rg_speed(const rg_run* r, uint32_t i, uint32_t w) {
   return sqrtf(dx * dx + dz * dz) / ((float)(b - a) * r->dt);
 }
 
+/* A start from rest at frame p0, judged as the issue does: the longest
+ * swing beginning in its first 2 s against the median swing of the
+ * steady walk 3-7 s in (*swing_ratio), that walk's median hips speed
+ * (*steady, m/s, 0.5 s windows) and the seconds until the hips first move
+ * at 80 % of it (*reach_80; INFINITY: never). 0 when the steady walk has
+ * fewer than three swings to take a median of. */
+static inline int rg_start_gait(const rg_run* r, uint32_t p0,
+                                float* swing_ratio, float* steady,
+                                float* reach_80) {
+  const float fps = 1.0f / r->dt;
+  const uint32_t hw = (uint32_t)(0.25f * fps);
+  *swing_ratio = *steady = 0.0f;
+  *reach_80 = INFINITY;
+  const uint32_t early = p0 + (uint32_t)(2.0f * fps);
+  const uint32_t s0 = p0 + (uint32_t)(3.0f * fps);
+  const uint32_t s1 = p0 + (uint32_t)(7.0f * fps);
+  uint32_t sw[256][2];
+  uint32_t k = rg_swings(r, sw, 256), c = 0;
+  float len[256], longest = 0.0f;
+  for (uint32_t i = 0; i < k; ++i) {
+    float l = (float)(sw[i][1] - sw[i][0]);
+    if (sw[i][0] >= p0 && sw[i][0] < early && l > longest) longest = l;
+    if (sw[i][0] >= s0 && sw[i][1] <= s1) len[c++] = l;
+  }
+  if (c < 3) return 0;
+  qsort(len, c, sizeof(float), rg_cmpf);
+  *swing_ratio = longest / len[c / 2u];
+  float v[256];
+  uint32_t nv = 0;
+  for (uint32_t i = s0; i < s1 && nv < 256; ++i) v[nv++] = rg_speed(r, i, hw);
+  qsort(v, nv, sizeof(float), rg_cmpf);
+  *steady = v[nv / 2u];
+  for (uint32_t i = p0; i < s1; ++i)
+    if (rg_speed(r, i, hw) >= 0.8f * *steady) {
+      *reach_80 = (float)(i - p0) * r->dt;
+      break;
+    }
+  return 1;
+}
+
 /* Planted toe speeds (cm/s) over frames [a, b): the fastest, and the
  * 95th percentile in *p95 when given. */
 static inline float rg_planted(const rg_run* r, uint32_t a, uint32_t b,

@@ -268,32 +268,9 @@ static void measure_start(smg_graph* g, const smgb_clip* start_clip,
   smg_character_destroy(s.ch);
   const rg_run* r = &g_run;
   const uint32_t hw = (uint32_t)(0.25f * FPS);
-  const uint32_t early = p0 + (uint32_t)(2.0f * FPS);
   const uint32_t s0 = p0 + (uint32_t)(3.0f * FPS);
-  const uint32_t s1 = p0 + (uint32_t)(7.0f * FPS);
-  uint32_t sw[256][2];
-  uint32_t k = rg_swings(r, sw, 256), c = 0;
-  float len[256], longest = 0.0f;
-  for (uint32_t i = 0; i < k; ++i) {
-    float l = (float)(sw[i][1] - sw[i][0]);
-    if (sw[i][0] >= p0 && sw[i][0] < early && l > longest) longest = l;
-    if (sw[i][0] >= s0 && sw[i][1] <= s1) len[c++] = l;
-  }
-  assert_true(c >= 3);
-  qsort(len, c, sizeof(float), rg_cmpf);
-  m->swing_ratio = longest / len[c / 2u];
-  float v[256];
-  uint32_t nv = 0;
-  for (uint32_t i = s0; i < s1 && nv < 256; ++i) v[nv++] = rg_speed(r, i, hw);
-  qsort(v, nv, sizeof(float), rg_cmpf);
-  m->steady = v[nv / 2u];
+  assert_true(rg_start_gait(r, p0, &m->swing_ratio, &m->steady, &m->reach_80));
   m->planted = stance_slide(r, p0, s0);
-  m->reach_80 = INFINITY;
-  for (uint32_t i = p0; i < s1; ++i)
-    if (rg_speed(r, i, hw) >= 0.8f * m->steady) {
-      m->reach_80 = (float)(i - p0) * DT;
-      break;
-    }
   /* the first frame faster than STAND_SPEED, the character's and the
    * clip's: the profiles are compared from there */
   uint32_t go = p0, cgo = 0;
