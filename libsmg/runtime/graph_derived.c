@@ -808,6 +808,7 @@ static smg_result build_stops(smg_graph* g, smgi_derived* dv) {
   float* table = (float*)(mem + off_left);
   uint32_t at = 0;
   dv->start_count = 0;
+  dv->stop_longest = 0.0f;
   for (uint32_t k = 0; k < n; ++k) {
     first[k] = at;
     if (s[k].kind != SMGI_STOP_KIND_STOP) {
@@ -825,6 +826,7 @@ static smg_result build_stops(smg_graph* g, smgi_derived* dv) {
       table[at + i - 1u] = t;
     }
     at += len + 1u;
+    if (s[k].travel > dv->stop_longest) dv->stop_longest = s[k].travel;
   }
   /* each start's last standing node: nodes by frame against the
    * segments (in order of their first frames) */

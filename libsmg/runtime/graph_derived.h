@@ -112,6 +112,8 @@ typedef struct smgi_derived {
   const smgi_stop_seg* stops;
   uint32_t stop_count;
   uint32_t start_count; /* of them, starts */
+  float stop_longest;   /* m: the longest way a stop travels from its
+                           first frame to rest (0: no stops) */
   const float* stop_left;
   const uint32_t* stop_left_first;
   /* start_entry[k] for start k: its last node standing before it moves

@@ -142,7 +142,7 @@ static int plan_data_stop(const job* j, uint32_t node, smgi_xform2 W,
       j->in->path->count < 2u || j->lower->stop_seq != SMGI_NONE)
     return 0;
   const float way = j->in->path->length - s;
-  if (way < 0.0f || way > smgi_stop_longest(g) +
+  if (way < 0.0f || way > smgi_derived_of(g)->stop_longest +
                               j->steer->own_speed * j->pl->horizon)
     return 0;
   smgi_stop_route r;
@@ -167,7 +167,7 @@ static int plan_data_start(const job* j, uint32_t node, smgi_xform2 W,
   const smg_graph* g = j->in->graph;
   if (smgi_derived_of(g)->start_count == 0 || !j->steer->enabled ||
       j->in->path->count < 2u ||
-      j->in->path->length - s <= smgi_stop_longest(g) ||
+      j->in->path->length - s <= smgi_derived_of(g)->stop_longest ||
       !smgi_stop_still(g, g->data.lower_nodes[node].frame))
     return 0;
   smgi_stop_route r;
@@ -539,7 +539,7 @@ static int restart_from_rest(const job* j) {
   const smg_graph* g = j->in->graph;
   if (smgi_derived_of(g)->start_count == 0 || !j->steer->enabled ||
       j->in->path->count < 2u ||
-      j->in->path->length - j->in->progress <= smgi_stop_longest(g))
+      j->in->path->length - j->in->progress <= smgi_derived_of(g)->stop_longest)
     return 0;
   const smgi_qentry* h = smgi_q_at(j->lower, 0);
   const smgi_edge* e = &g->data.lower_edges[h->edge];

@@ -31,15 +31,6 @@ typedef struct search {
   smgi_stop_route best;
 } search;
 
-float smgi_stop_longest(const smg_graph* g) {
-  const smgi_derived* dv = smgi_derived_of(g);
-  float most = 0.0f;
-  for (uint32_t k = 0; k < dv->stop_count; ++k)
-    if (dv->stops[k].kind == SMGI_STOP_KIND_STOP && dv->stops[k].travel > most)
-      most = dv->stops[k].travel;
-  return most;
-}
-
 /* The first segment beginning after pool frame f. */
 static uint32_t after(const smgi_derived* dv, uint32_t f) {
   uint32_t lo = 0, hi = dv->stop_count;

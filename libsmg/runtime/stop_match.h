@@ -34,10 +34,6 @@ typedef struct smgi_stop_route {
   float miss;           /* m: where the hips rest from the path's end */
 } smgi_stop_route;
 
-/* Whether the graph has stops at all, and the longest way one of them
- * travels from its first frame to rest (0: none). */
-float smgi_stop_longest(const smg_graph* g);
-
 /* From `node` placed at W (the ground transform at its frame), `s` metres
  * along `path`: the route into a stop whose rest lands nearest the path's
  * end, if one lands within SMGI_STOP_MATCH leg lengths; 0 if none. */
