@@ -105,7 +105,69 @@ static void test_found(void** state) {
   assert_int_equal(stops, 2);
   assert_int_equal(starts, 2);
   assert_int_equal(dv->start_count, 2);
+  float longest = 0.0f;
+  for (uint32_t k = 0; k < dv->stop_count; ++k)
+    if (dv->stops[k].kind == SMGI_STOP_KIND_STOP && dv->stops[k].travel > longest)
+      longest = dv->stops[k].travel;
+  assert_float_equal(dv->stop_longest, longest, 0.0f);
   smg_graph_destroy(g);
+  smg_bake_result_free(&res);
+  bg_free(&set);
+}
+
+/* An allocator that fails from its `fail_at`-th call on (-1: never). */
+typedef struct failing_alloc {
+  int calls, frees, fail_at;
+} failing_alloc;
+
+static void* failing_alloc_fn(size_t size, size_t align, void* user) {
+  failing_alloc* c = (failing_alloc*)user;
+  if (c->fail_at >= 0 && c->calls >= c->fail_at) return NULL;
+  void* p = NULL;
+  if (posix_memalign(&p, align < sizeof(void*) ? sizeof(void*) : align,
+                     size ? size : 1) != 0)
+    return NULL;
+  c->calls++;
+  return p;
+}
+
+static void failing_free_fn(void* p, void* user) {
+  failing_alloc* c = (failing_alloc*)user;
+  if (p) c->frees++;
+  free(p);
+}
+
+/* A graph with stops loads under every allocation failure cleanly: the
+ * stop tables' own allocations included, it fails with OUT_OF_MEMORY and
+ * gives back all it took. */
+static void test_load_out_of_memory(void** state) {
+  (void)state;
+  bg_set set;
+  smg_bake_result res;
+  smg_graph* g = bake_graph(1, &set, &res);
+  smg_graph_destroy(g);
+  failing_alloc c = {0, 0, -1};
+  smg_graph_desc desc;
+  memset(&desc, 0, sizeof desc);
+  desc.struct_size = sizeof desc;
+  desc.allocator.alloc = failing_alloc_fn;
+  desc.allocator.free = failing_free_fn;
+  desc.allocator.user = &c;
+  assert_int_equal(smg_graph_load_memory(res.blob, res.blob_size, &desc, &g),
+                   SMG_OK);
+  assert_true(smgi_derived_of(g)->stop_count > 0);
+  assert_int_equal(smg_graph_destroy(g), SMG_OK);
+  const int total = c.calls;
+  assert_int_equal(c.frees, total);
+  for (int n = 0; n < total; ++n) {
+    c.calls = c.frees = 0;
+    c.fail_at = n;
+    g = NULL;
+    assert_int_equal(smg_graph_load_memory(res.blob, res.blob_size, &desc, &g),
+                     SMG_ERROR_OUT_OF_MEMORY);
+    assert_null(g);
+    assert_int_equal(c.frees, c.calls);
+  }
   smg_bake_result_free(&res);
   bg_free(&set);
 }
@@ -328,6 +390,7 @@ static void test_start(void** state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_found),
+      cmocka_unit_test(test_load_out_of_memory),
       cmocka_unit_test(test_stop),
       cmocka_unit_test(test_start),
   };
