@@ -445,9 +445,11 @@ static float cut_share(const smgi_steer* st, float kappa, float full,
  * away), and every tighter turn further on that the speed, changing by
  * SMGI_STEER_RATE_ACCEL of itself per second, must already come down
  * for; a turn no tight-turn share makes is cut instead (cut_share), so
- * the share may go below the tight-turn slowest down to cut_floor. */
+ * the share may go below the tight-turn slowest down to cut_floor, and
+ * *cut says whether such a turn lies ahead. */
 static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
-                         uint32_t seg, float full, float speed) {
+                         uint32_t seg, float full, float speed,
+                         uint32_t* cut) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
   uint32_t sg = seg;
@@ -457,6 +459,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
   const float slowest = SMGI_STEER_RATE_MIN * (1.0f - st->slide_ratio);
   const float reach = speed * (1.0f - slowest) / SMGI_STEER_RATE_ACCEL;
   float h0 = segment_heading(st, p, sg), prev = 0.0f, want = 1.0f;
+  *cut = 0;
   for (uint32_t i = 1u; i <= SMGI_STEER_AHEAD_SAMPLES; ++i) {
     const float d = (float)i * half;
     uint32_t s1 = sg;
@@ -482,6 +485,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
          * allows (no slower than a cut goes), and off again past it;
          * slowing early and long would not follow it either. The turn
          * starts where its sharper half does. */
+        *cut = 1;
         want = fminf(want, cut_share(st, kk, full,
                                      i == 2u ? st->own_turn : 0.0f,
                                      fabsf(prev) > fabsf(k) ? lead
@@ -524,13 +528,11 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     float r = s->rate > 0.05f ? s->rate : 0.05f;
     /* playback no slower than SMGI_STEER_RATE_MIN (slower looks like
      * slow motion, every swing drawn out), the rest by shorter strides,
-     * at most the slide ratio of them */
-    const float slowest = SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
+     * at most the slide ratio of them (a cut: down to cut_floor) */
     const float full_speed = s->own_speed / r;
     float want = share_ahead(s, in->path, in->progress, in->seg, full_speed,
-                             s->own_speed * s->stride);
+                             s->own_speed * s->stride, &s->cutting);
     want = smgi_clampf(want, cut_floor(s->slide_ratio), 1.0f);
-    s->cutting = want < slowest;
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
     /* strides change as fast as the grip brakes and pushes the body (a
      * cut), at least as fast as the playback */
