@@ -9,12 +9,17 @@
  * translation - on top of the motion:
  *
  *  - heading: the clip's own direction of travel (where its root is a
- *    moment ahead) is turned towards a pursuit point on the path; the
+ *    moment ahead), turned by how far the clip's body faces off its
+ *    travel, is turned towards a pursuit point on the path: the body,
+ *    not its sideways drift, faces the way the path goes; the
  *    correction rate is bounded by a fraction of the clip's own turning
  *    plus an additive term that grows with the motion's speed up to a
  *    maximum rate (none while the motion stands);
  *  - position: the lateral error is removed at most at a fraction of the
- *    motion's ground speed;
+ *    motion's ground speed; the clip's own sideways drift off its facing
+ *    (a performer whose pelvis is turned from the way they walk, a
+ *    turning step whose body leads the turn) is slid out as it happens,
+ *    within the same bound, so that the path is walked facing it;
  *  - both rates change by a bounded amount per second, so the correction
  *    never pops when it starts, saturates or stops.
  * The correction is applied to the pose just composed and to the queued
@@ -64,6 +69,8 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   smgi_steer_set_limits(s, turn_limit, slide_ratio, stop_seconds);
   s->have_prev = 0;
   s->own_turn = s->own_speed = 0.0f;
+  s->own_face[0] = s->own_face[1] = 0.0f;
+  s->own_travel[0] = s->own_travel[1] = 0.0f;
   s->turn = 0.0f;
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
@@ -703,9 +710,44 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     float w = smgi_wrap_angle(gh - s->prev_h) / dt;
     s->own_speed += k * (v - s->own_speed);
     s->own_turn += k * (w - s->own_turn);
+    float fs, fc, kl = dt / (SMGI_STEER_LEAD_SMOOTH + dt);
+    smgi_sincosf(gh, &fs, &fc);
+    s->own_face[0] += kl * (fs - s->own_face[0]);
+    s->own_face[1] += kl * (fc - s->own_face[1]);
+    s->own_travel[0] += kl * (vx / dt - s->own_travel[0]);
+    s->own_travel[1] += kl * (vz / dt - s->own_travel[1]);
   }
   s->have_prev = 1;
   float want_turn = 0.0f, want_sx = 0.0f, want_sz = 0.0f;
+  /* the motion's low-passed travel turned onto its low-passed facing:
+   * the slide that removes its sideways drift (lead: the angle between) */
+  float lead = 0.0f, drift_x = 0.0f, drift_z = 0.0f;
+  {
+    const float* f = s->own_face;
+    const float* t = s->own_travel;
+    const float fl = sqrtf(f[0] * f[0] + f[1] * f[1]);
+    const float tl = sqrtf(t[0] * t[0] + t[1] * t[1]);
+    if (fl > SMGI_STEER_LEAD_MIN && tl > SMGI_STEER_LEAD_SPEED) {
+      lead = smgi_atan2f(t[1] * f[0] - t[0] * f[1],
+                         t[0] * f[0] + t[1] * f[1]);
+      /* within the residue of the steps' sway the lead is left alone;
+       * beyond it, the share past the residue is removed */
+      const float al = fabsf(lead);
+      float keep = al > SMGI_STEER_LEAD_SWAY
+                       ? (al - SMGI_STEER_LEAD_SWAY) / al
+                       : 0.0f;
+      /* none over the last braking distance: the stop is chosen and
+       * braked onto along the motion's own line (gone over the second
+       * braking distance before it) */
+      const float brake = s->own_speed * s->stop_seconds;
+      if (brake > 0.0f)
+        keep *= smgi_clampf((in->path->length - in->progress) / brake - 1.0f,
+                            0.0f, 1.0f);
+      lead *= keep;
+      drift_x = keep * (tl * f[0] / fl - t[0]);
+      drift_z = keep * (tl * f[1] / fl - t[1]);
+    }
+  }
   /* the speed the slide ratio is taken of: while following, the speed the
    * character moves at, its strides as shortened for a turn (of the
    * motion's own, a runner slowed by shorter strides slid sideways at up
@@ -721,6 +763,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                      &fz, NULL) &&
         (fx - gx) * (fx - gx) + (fz - gz) * (fz - gz) > 1e-4f)
       dir = smgi_atan2f(fx - gx, fz - gz);
+    if (s->mode == SMGI_STEER_FOLLOW) dir = smgi_wrap_angle(dir + lead);
     /* from the speed the character moves at (its strides as shortened) */
     look = smgi_clampf(s->own_speed * s->stride * SMGI_STEER_LOOK_TIME,
                        SMGI_STEER_LOOK_MIN, SMGI_STEER_LOOK_MAX);
@@ -769,6 +812,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
         want_sz = oz * k2;
       }
     }
+  }
+  if (s->enabled && p->count >= 2u && s->mode == SMGI_STEER_FOLLOW) {
+    want_sx += drift_x;
+    want_sz += drift_z;
   }
   /* bounds relative to the motion itself. A body cutting a hairpin
    * (smgi_steer_frames) plants a foot and pivots over it rather than

@@ -34,6 +34,11 @@ typedef struct smgi_steer {
   float prev_x, prev_z, prev_h; /* ground transform after the last step */
   float own_turn;         /* the motion's own turning, rad/s */
   float own_speed;        /* the motion's own ground speed, m/s */
+  /* the motion's own facing (unit vector of its heading) and travel
+   * (velocity, m/s), low-passed over half a stride: how far the body
+   * faces off the way it goes, without the sway and twist of each step */
+  float own_face[2];
+  float own_travel[2];
   /* the correction, continuous (its rate of change is bounded) */
   float turn;             /* heading correction, rad/s */
   float slide[2];         /* translation correction, m/s (x, z) */

@@ -190,6 +190,18 @@
 #define SMGI_STEER_SWAY 0.03f         /* m: lateral offsets within the hips'
                                     own sway are left alone */
 #define SMGI_STEER_SMOOTH 0.25f       /* s: low-pass of the clip's own motion */
+#define SMGI_STEER_LEAD_SMOOTH 0.5f   /* s: low-pass of the motion's facing
+                                    and travel for its lead (about half a
+                                    stride: the sway and twist of each
+                                    step mostly averaged out) */
+#define SMGI_STEER_LEAD_SWAY 0.04f    /* rad: what the low-pass leaves of the
+                                    sway (a stride's hips swing +-8 deg
+                                    about the travel, a third of it
+                                    passes): a lead within it is noise */
+#define SMGI_STEER_LEAD_MIN 0.5f      /* the low-passed facing's length below
+                                    which it is no direction (a spin) */
+#define SMGI_STEER_LEAD_SPEED 0.2f    /* m/s: travel slower than this has no
+                                    direction to face */
 #define SMGI_STEER_FUTURE 0.4f        /* s: the clip's direction is where its
                                     root is this far ahead */
 #define SMGI_STEER_LOOK_TIME 0.6f     /* s: the pursuit point's lead ... */
