@@ -424,25 +424,16 @@ static float turn_share(const smgi_steer* st, float kappa, float full,
   return want;
 }
 
-/* The slowest share of the motion's speed a cut takes a hairpin at:
- * playback at SMGI_STEER_RATE_MIN, strides shortened as far as a run's
- * braking to a stop shortens them (SMGI_STEER_STRIDE_STOP), or by the
- * slide ratio when that is more. */
-static float cut_floor(float slide_ratio) {
-  return SMGI_STEER_RATE_MIN *
-         fminf(SMGI_STEER_STRIDE_STOP, 1.0f - slide_ratio);
-}
-
 /* The share of the full speed `full` to move at now to take a turn of
  * `kappa` radians per metre, `at` metres ahead, as a cut (share_ahead):
  * braking at what the grip gives (friction bounds the push along the
  * ground as it bounds the sideways one) down to the speed the turn
- * allows, no slower than cut_floor. */
+ * allows, no slower than smgi_steer_cut_floor. */
 static float cut_share(const smgi_steer* st, float kappa, float full,
                        float own_turn, float at) {
   if (!(full > 1e-3f)) return 1.0f;
   const float v = fmaxf(turn_share(st, kappa, full, own_turn),
-                        cut_floor(st->slide_ratio)) * full;
+                        smgi_steer_cut_floor(st->slide_ratio)) * full;
   return sqrtf(v * v + 2.0f * SMGI_STEER_GRIP * SMGI_GRAVITY * at) / full;
 }
 
@@ -452,7 +443,8 @@ static float cut_share(const smgi_steer* st, float kappa, float full,
  * away), and every tighter turn further on that the speed, changing by
  * SMGI_STEER_RATE_ACCEL of itself per second, must already come down
  * for; a turn no tight-turn share makes is cut instead (cut_share), so
- * the share may go below the tight-turn slowest down to cut_floor, and
+ * the share may go below the tight-turn slowest down to
+ * smgi_steer_cut_floor, and
  * *cut says whether such a turn lies ahead. */
 static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
                          uint32_t seg, float full, float speed,
@@ -535,11 +527,11 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     float r = s->rate > 0.05f ? s->rate : 0.05f;
     /* playback no slower than SMGI_STEER_RATE_MIN (slower looks like
      * slow motion, every swing drawn out), the rest by shorter strides,
-     * at most the slide ratio of them (a cut: down to cut_floor) */
+     * at most the slide ratio of them (a cut: smgi_steer_cut_floor) */
     const float full_speed = s->own_speed / r;
     float want = share_ahead(s, in->path, in->progress, in->seg, full_speed,
                              s->own_speed * s->stride, &s->cutting);
-    want = smgi_clampf(want, cut_floor(s->slide_ratio), 1.0f);
+    want = smgi_clampf(want, smgi_steer_cut_floor(s->slide_ratio), 1.0f);
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
     /* strides change as fast as the grip brakes and pushes the body (a
      * cut), at least as fast as the playback */
