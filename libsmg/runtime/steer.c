@@ -672,6 +672,13 @@ static void move(smgi_pose* pose, smgi_lower* lower, delta* d) {
   }
 }
 
+/* (x, z) turned by d's rotation (its c and s filled). */
+static void turn_vec(float* v, const delta* d) {
+  const float x = v[0];
+  v[0] = d->c * x + d->s * v[1];
+  v[1] = -d->s * x + d->c * v[1];
+}
+
 void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
                      float da, float px, float pz) {
   delta d;
@@ -680,6 +687,10 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   d.pz = pz;
   d.tx = d.tz = 0.0f;
   move(pose, lower, &d);
+  /* the motion's facing and travel as seen so far turn with it (else a
+   * walk off after a turn on the spot read the turn as a lead) */
+  turn_vec(s->own_face, &d);
+  turn_vec(s->own_travel, &d);
   s->prev_x = pose->ground[0];
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;
