@@ -267,8 +267,10 @@ typedef struct smg_character_desc {
    * it to rest at the path's end (docs/runtime.md, "Root steering"). The
    * correction is reported in smg_character_state. Zero = default. */
   float steer_turn_rate;     /* most heading correction added to the
-                                motion's own turning, radians per second;
-                                0 = 3.0 (about 170 deg/s) */
+                                motion's own turning, radians per second
+                                (twice this while cutting a hairpin: a
+                                pivot over the planted foot); 0 = 3.0
+                                (about 170 deg/s) */
   float steer_slide_ratio;   /* most translation correction, as a fraction
                                 of the motion's own ground speed (none
                                 while it stands); 0 = 0.25 */

@@ -180,6 +180,31 @@ float smgi_path_project_local(const smgi_path* p, float x, float z,
   return s_best;
 }
 
+float smgi_path_project_ahead(const smgi_path* p, float x, float z,
+                              uint32_t* seg, float* out_dist, float off,
+                              float ahead) {
+  float s = smgi_path_project_local(p, x, z, seg, out_dist);
+  if (!(*out_dist > off) || p->count < 2u) return s;
+  const float tie = *out_dist - SMGI_PATH_PROJECT_TIE;
+  float d2_best = tie > 0.0f ? tie * tie : 0.0f;
+  uint32_t best = *seg;
+  float s_best = s;
+  for (uint32_t i = *seg + 1u; i + 1u < p->count && p->cum[i] <= s + ahead;
+       ++i) {
+    float si;
+    const float d2 = seg_dist2(p, i, x, z, &si);
+    if (d2 < d2_best) {
+      d2_best = d2;
+      best = i;
+      s_best = si;
+    }
+  }
+  if (best == *seg) return s;
+  *seg = best;
+  *out_dist = sqrtf(d2_best);
+  return s_best;
+}
+
 /* Every one of n floats finite and below SMG_MAX_COORDINATE (2^20) in
  * magnitude, branch-free so it runs at memory speed: adding 109 to the
  * 8-bit exponent carries into the word's top bit exactly when the

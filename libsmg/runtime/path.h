@@ -29,6 +29,13 @@ float smgi_path_heading(const smgi_path* p, uint32_t seg);
  * distance. */
 float smgi_path_project_local(const smgi_path* p, float x, float z,
                               uint32_t* seg, float* out_dist);
+/* smgi_path_project_local, and when that leaves (x, z) more than `off`
+ * from the path, a later pass within `ahead` metres of arc that is
+ * nearer by SMGI_PATH_PROJECT_TIE wins (a cut across a hairpin's tip
+ * joins the leg beyond it; the local walk cannot climb over the tip). */
+float smgi_path_project_ahead(const smgi_path* p, float x, float z,
+                              uint32_t* seg, float* out_dist, float off,
+                              float ahead);
 /* Copy `count` points to index `from`, extend the arc lengths and, if
  * `project`, return the exact nearest point to (px, pz) on the whole path
  * (arc length; *seg, *out_dist set) in the same pass. */

@@ -75,6 +75,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
   s->stride = 1.0f;
+  s->cutting = 0;
   s->drift_turn = s->drift_move = 0.0f;
   s->heading_seg = SMGI_NONE;
   s->data_stop = 0;
@@ -423,14 +424,31 @@ static float turn_share(const smgi_steer* st, float kappa, float full,
   return want;
 }
 
+/* The share of the full speed `full` to move at now to take a turn of
+ * `kappa` radians per metre, `at` metres ahead, as a cut (share_ahead):
+ * braking at what the grip gives (friction bounds the push along the
+ * ground as it bounds the sideways one) down to the speed the turn
+ * allows, no slower than smgi_steer_cut_floor. */
+static float cut_share(const smgi_steer* st, float kappa, float full,
+                       float own_turn, float at) {
+  if (!(full > 1e-3f)) return 1.0f;
+  const float v = fmaxf(turn_share(st, kappa, full, own_turn),
+                        smgi_steer_cut_floor(st->slide_ratio)) * full;
+  return sqrtf(v * v + 2.0f * SMGI_STEER_GRIP * SMGI_GRAVITY * at) / full;
+}
+
 /* The share of the full speed `full` to move at now (1: no slowing) for
  * the path's turning from arc s on: the sharper of two halves of the next
  * SMGI_STEER_CURVE_AHEAD metres (a short tight loop is not averaged
  * away), and every tighter turn further on that the speed, changing by
  * SMGI_STEER_RATE_ACCEL of itself per second, must already come down
- * for. */
+ * for; a turn no tight-turn share makes is cut instead (cut_share), so
+ * the share may go below the tight-turn slowest down to
+ * smgi_steer_cut_floor, and
+ * *cut says whether such a turn lies ahead. */
 static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
-                         uint32_t seg, float full, float speed) {
+                         uint32_t seg, float full, float speed,
+                         uint32_t* cut) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
   float x, z;
   uint32_t sg = seg;
@@ -440,6 +458,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
   const float slowest = SMGI_STEER_RATE_MIN * (1.0f - st->slide_ratio);
   const float reach = speed * (1.0f - slowest) / SMGI_STEER_RATE_ACCEL;
   float h0 = segment_heading(st, p, sg), prev = 0.0f, want = 1.0f;
+  *cut = 0;
   for (uint32_t i = 1u; i <= SMGI_STEER_AHEAD_SAMPLES; ++i) {
     const float d = (float)i * half;
     uint32_t s1 = sg;
@@ -456,9 +475,21 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
           speed > 1e-3f ? SMGI_STEER_RATE_ACCEL * lead / speed : INFINITY;
       const float share =
           turn_share(st, kk, full, i == 2u ? st->own_turn : 0.0f);
-      /* a turn no share down to the slowest makes is cut, not slowed
-       * for long before: slowing early would not follow it either */
-      if (i == 2u || share >= slowest) want = fminf(want, share + room);
+      if (share >= slowest) {
+        want = fminf(want, share + room);
+      } else {
+        /* a turn no share down to the slowest makes (a hairpin) is cut
+         * as a runner cuts it: on at speed until shortly before it, then
+         * braking as hard as the grip allows down to the speed the turn
+         * allows (no slower than a cut goes), and off again past it;
+         * slowing early and long would not follow it either. The turn
+         * starts where its sharper half does. */
+        *cut = 1;
+        want = fminf(want, cut_share(st, kk, full,
+                                     i == 2u ? st->own_turn : 0.0f,
+                                     fabsf(prev) > fabsf(k) ? lead
+                                                            : lead + half));
+      }
       if (lead >= reach) break;
     }
     prev = k;
@@ -481,6 +512,7 @@ void smgi_steer_replanned(smgi_steer* s) {
 float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
                         const smgi_step_in* in, float dt) {
   const float full = dt * in->fps;
+  s->cutting = 0; /* only while following (below) */
   if (!s->enabled || in->path->count < 2u) {
     s->mode = SMGI_STEER_FOLLOW;
     s->data_stop = 0;
@@ -495,17 +527,25 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
     float r = s->rate > 0.05f ? s->rate : 0.05f;
     /* playback no slower than SMGI_STEER_RATE_MIN (slower looks like
      * slow motion, every swing drawn out), the rest by shorter strides,
-     * at most the slide ratio of them */
-    const float slowest = SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
-    float want = share_ahead(s, in->path, in->progress, in->seg,
-                             s->own_speed / r, s->own_speed * s->stride);
-    want = smgi_clampf(want, slowest, 1.0f);
+     * at most the slide ratio of them (a cut: smgi_steer_cut_floor) */
+    const float full_speed = s->own_speed / r;
+    float want = share_ahead(s, in->path, in->progress, in->seg, full_speed,
+                             s->own_speed * s->stride, &s->cutting);
+    want = smgi_clampf(want, smgi_steer_cut_floor(s->slide_ratio), 1.0f);
     const float rate = want > SMGI_STEER_RATE_MIN ? want : SMGI_STEER_RATE_MIN;
+    /* strides change as fast as the grip brakes and pushes the body (a
+     * cut), at least as fast as the playback */
+    const float stride_accel =
+        full_speed > 1e-3f
+            ? fmaxf(SMGI_STEER_RATE_ACCEL,
+                    SMGI_STEER_GRIP * SMGI_GRAVITY / full_speed)
+            : SMGI_STEER_RATE_ACCEL;
     s->rate = approach(s->rate, rate, SMGI_STEER_RATE_ACCEL * dt);
     s->stride = approach(s->stride, fminf(want / rate, end_stride(s, lower, in)),
-                         SMGI_STEER_RATE_ACCEL * dt);
+                         stride_accel * dt);
     if (!follow_data_stop(s, lower, in)) consider_stop(s, lower, in);
     if (s->mode == SMGI_STEER_FOLLOW) return full * s->rate;
+    s->cutting = 0;
   }
   if (s->mode == SMGI_STEER_REST) {
     s->rate = 0.0f;
@@ -780,10 +820,18 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     want_sx += drift_x;
     want_sz += drift_z;
   }
-  /* bounds relative to the motion itself */
+  /* bounds relative to the motion itself. A body cutting a hairpin
+   * (smgi_steer_frames) plants a foot and pivots over it rather than
+   * crabbing back to the line: it turns at up to SMGI_STEER_CUT_TURN
+   * times the turn limit (within the tightest turning circle) and slides
+   * at SMGI_STEER_CUT_SLIDE of the ratio (sliding turns the body away
+   * from its travel) */
+  const float limit =
+      s->cutting ? SMGI_STEER_CUT_TURN * s->turn_limit : s->turn_limit;
   float tb = SMGI_STEER_CLIP_SCALE * fabsf(s->own_turn) +
-             fminf(s->turn_limit, s->own_speed / SMGI_STEER_TURN_RADIUS);
-  float sb = s->slide_ratio * slide_speed;
+             fminf(limit, s->own_speed / SMGI_STEER_TURN_RADIUS);
+  float sb = (s->cutting ? SMGI_STEER_CUT_SLIDE : 1.0f) * s->slide_ratio *
+             slide_speed;
   want_turn = smgi_clampf(want_turn, -tb, tb);
   float wl = sqrtf(want_sx * want_sx + want_sz * want_sz);
   if (wl > sb) {

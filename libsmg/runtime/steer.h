@@ -47,6 +47,10 @@ typedef struct smgi_steer {
                            * shorter strides for a tight turn (the rest is
                            * slid back along the travel; planted feet keep
                            * their anchors, so the steps shorten) */
+  uint32_t cutting;       /* 1: a turn no tight-turn slowing makes (a
+                           * hairpin) lies within the look-ahead or is
+                           * being taken: cut like a runner (steer.c
+                           * share_ahead) */
   /* the heading of the path segment last looked at (an atan2; the
    * curvature ahead mostly looks at the same segment step after step),
    * forgotten when the path changes */

@@ -52,12 +52,35 @@ static inline float smgi_steer_slowest(const smgi_steer_envelope* s) {
   return SMGI_STEER_RATE_MIN * (1.0f - s->slide_ratio);
 }
 
+/* The slowest share of the motion's speed a cut takes a turn at that
+ * no tight-turn slowing makes (a hairpin, steer.c): playback at
+ * SMGI_STEER_RATE_MIN, strides shortened as far as a run's braking to a
+ * stop shortens them (SMGI_STEER_STRIDE_STOP), or by the slide ratio when
+ * that is more. */
+static inline float smgi_steer_cut_floor(float slide_ratio) {
+  const float stride = 1.0f - slide_ratio < SMGI_STEER_STRIDE_STOP
+                           ? 1.0f - slide_ratio
+                           : SMGI_STEER_STRIDE_STOP;
+  return SMGI_STEER_RATE_MIN * stride;
+}
+
 /* How far off the path the steering can bring motion back within its
  * first `u` metres at `speed` m/s when it also slows down for the turn
- * (smgi_steer_slowest): what no correction removes lies beyond this. */
+ * (smgi_steer_slowest), or cuts it (steer.c: down to
+ * smgi_steer_cut_floor, turning at SMGI_STEER_CUT_TURN times the limit
+ * and sliding at SMGI_STEER_CUT_SLIDE of the ratio), whichever reaches
+ * further: what no correction removes lies beyond this. Counting only
+ * the slowing had the planner hand a run to the walk at a hairpin the
+ * steering was cutting (a Bandai Namco runner on the scribble, 2.5 m). */
 static inline float smgi_steer_plan_reach_slowed(const smgi_steer_envelope* s,
                                                  float u, float speed) {
-  return smgi_steer_plan_reach(s, u, speed * smgi_steer_slowest(s));
+  smgi_steer_envelope cut = *s;
+  cut.turn_limit *= SMGI_STEER_CUT_TURN;
+  cut.slide_ratio *= SMGI_STEER_CUT_SLIDE;
+  const float slowed = smgi_steer_plan_reach(s, u, speed * smgi_steer_slowest(s));
+  const float cutting =
+      smgi_steer_plan_reach(&cut, u, speed * smgi_steer_cut_floor(s->slide_ratio));
+  return slowed > cutting ? slowed : cutting;
 }
 
 /* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */

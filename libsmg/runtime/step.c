@@ -68,8 +68,9 @@ static void update_progress(smg_character* ch) {
     ch->end_reached = 0;
     return;
   }
-  ch->progress =
-      smgi_path_project_local(p, ch->pose.ground[0], ch->pose.ground[1], &ch->seg, &dist);
+  ch->progress = smgi_path_project_ahead(
+      p, ch->pose.ground[0], ch->pose.ground[1], &ch->seg, &dist,
+      SMGI_PATH_AHEAD_OFF, SMGI_PATH_AHEAD_ARC);
   ch->path_error = dist;
   if (p->count == 1) {
     ch->end_reached = dist < 0.5f;

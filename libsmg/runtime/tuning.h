@@ -29,6 +29,10 @@
 #define SMGI_PATH_PROJECT_LIMIT 256u /* descent steps of a local projection */
 #define SMGI_PATH_PROJECT_TIE 0.02f  /* metres: a later pass of the path
                                         must be nearer by this to win */
+#define SMGI_PATH_AHEAD_OFF 0.2f     /* metres off the path beyond which
+                                        progress looks for a later pass
+                                        nearer the character ... */
+#define SMGI_PATH_AHEAD_ARC 2.0f     /* ... within this much arc ahead */
 
 /* ---- lower-body queue (lower.h) ---- */
 #define SMGI_QUEUE_CAP 64u /* committed + planned lower edges (power of 2) */
@@ -214,6 +218,13 @@
                                          (slower is slow motion; the rest
                                          of the slowing is shorter strides) */
 #define SMGI_STEER_RATE_ACCEL 1.0f    /* playback rate change per second */
+#define SMGI_STEER_CUT_TURN 2.0f      /* a body cutting a hairpin pivots over
+                                         its planted foot: this many times
+                                         the turn limit (within the
+                                         tightest turning circle) */
+#define SMGI_STEER_CUT_SLIDE 0.5f     /* ... and slides at this share of
+                                         the slide ratio (7 degrees of
+                                         crabbing at most, not 14) */
 #define SMGI_STEER_STOP_NEAR 1.0f     /* a stop frame lands this near the end */
 #define SMGI_STEER_ONE_FOOT 0.5f      /* m: a stop frame with one foot down
                                     counts as this much further */

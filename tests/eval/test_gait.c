@@ -158,6 +158,56 @@ static void test_facing(void** state) {
   NEAR(eval_gait_angle_diff(0.3, 0.1), 0.2, 1e-12);
 }
 
+/* A runner facing exactly its direction of travel at every frame, round
+ * a hairpin of about 150 degrees it brakes for (3 m/s down to 1 m/s at the apex and
+ * back up), faces its travel over every 1 s window; the plain mean of
+ * the facings over time, which counts the slow frames at the apex more
+ * than the chord does, is more than 10 degrees off somewhere (within 5
+ * degrees: the facing turns by up to 6 degrees from one frame to the
+ * next at the apex). */
+static void test_window_facing(void** state) {
+  enum { N = 121, HALF = 15 };
+  double hips[3 * N], q[4 * N], axis[3] = {0.0, 0.0, 1.0};
+  double h = 0.0, x = 0.0, z = 0.0, worst = 0.0, worst_time = 0.0;
+  size_t i, k;
+  (void)state;
+  for (i = 0; i < N; ++i) {
+    const double t = (double)i * DT - 2.0; /* apex at t = 0 */
+    const double v = fmin(3.0, 1.0 + 5.0 * fabs(t));
+    /* the turn rate of a 0.3 m radius at the apex, fading with speed */
+    const double w = fabs(t) < 0.25 ? -v / 0.3 : 0.0;
+    hips[3 * i] = x;
+    hips[3 * i + 1] = 1.0;
+    hips[3 * i + 2] = z;
+    yaw(h, q + 4 * i);
+    x += v * DT * sin(h);
+    z += v * DT * cos(h);
+    h += w * DT;
+  }
+  assert_true(h < -2.5); /* turned by more than 140 degrees */
+  for (i = HALF; i + HALF < N; ++i) {
+    const double travel =
+        eval_gait_travel_heading(hips, 3, i - HALF, i + HALF);
+    const double f =
+        eval_gait_window_facing(q, hips, 3, i - HALF, i + HALF, axis);
+    double sx = 0.0, sz = 0.0;
+    for (k = i - HALF; k <= i + HALF; ++k) {
+      const double fk = eval_gait_facing(q + 4 * k, axis);
+      sx += sin(fk);
+      sz += cos(fk);
+    }
+    worst = fmax(worst, fabs(eval_gait_angle_diff(f, travel)));
+    worst_time =
+        fmax(worst_time, fabs(eval_gait_angle_diff(atan2(sx, sz), travel)));
+  }
+  print_message("facing against travel: weighted by travel %.1f deg, by time "
+                "%.1f deg at most\n", worst * 180.0 / PI,
+                worst_time * 180.0 / PI);
+  assert_true(worst * 180.0 / PI < 5.0); /* a frame turns up to 6 deg */
+  assert_true(worst_time * 180.0 / PI > 10.0);
+  assert_true(isnan(eval_gait_window_facing(q, hips, 3, 5, 4, axis)));
+}
+
 static void test_rotation_range(void** state) {
   double q[4 * 5];
   size_t i;
@@ -176,6 +226,7 @@ int main(void) {
       cmocka_unit_test(test_median),
       cmocka_unit_test(test_window_speed),
       cmocka_unit_test(test_facing),
+      cmocka_unit_test(test_window_facing),
       cmocka_unit_test(test_rotation_range),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

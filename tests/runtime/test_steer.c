@@ -16,9 +16,11 @@
  *    the setter, which then changes nothing (bit-identical poses);
  *  - with steering off the state reports no correction and playback rate
  *    1; the steering on the synthetic default graph follows a corner too;
- *  - a runner slows for a turn too tight for its speed before it begins
- *    (the root's speed over the last metre before a hairpin), and faces
- *    its travel round a U-turn (95th percentile within 10 degrees).
+ *  - a runner gets round a 0.2 m hairpin and back (no circling beside
+ *    its tip), keeps the run asked for through the scribble's hairpins
+ *    (issue 24's style-held share, >= 75 %, from the root's 1 s window
+ *    speed), and faces its travel round a U-turn (95th percentile within
+ *    10 degrees).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -387,13 +389,19 @@ static void test_settings(void** state) {
   for (int i = 0; i < (int)(10.0f / DT); ++i) {
     assert_int_equal(smg_character_step(a, DT), SMG_OK);
     smg_character_state s = get_state(a);
-    /* 0.1 rad/s plus half the motion's own turning (the fixture turns
-     * at most about 1.5 rad/s) */
-    assert_true(fabsf(s.steer_turn_rate) <= 0.1f + 0.5f * 1.5f);
+    /* 0.1 rad/s (twice that while cutting a turn no slowing makes,
+     * SMGI_STEER_CUT_TURN) plus half the motion's own turning (the
+     * fixture turns at most about 1.5 rad/s) */
+    assert_true(fabsf(s.steer_turn_rate) <= 2.0f * 0.1f + 0.5f * 1.5f);
     if (s.path_error > max_err) max_err = s.path_error;
   }
-  print_message("weak limits: max error %.3f m\n", max_err);
-  assert_true(max_err > CORNER_MAX);
+  /* slowed right down for the corner it cannot turn (a cut), the
+   * fixture's own turning brings it round closer than without steering,
+   * but still wider than the default limits' rounding */
+  run_result def = run_path(c->g, FIXTURE_JOINTS, xz, n, 0u, 16.0f);
+  print_message("weak limits: max error %.3f m (default limits %.3f m)\n",
+                max_err, def.max);
+  assert_true(max_err > def.max + 0.01f);
   smg_character_destroy(a);
 }
 
@@ -435,51 +443,56 @@ static uint32_t hairpin(float* xz) {
   return n;
 }
 
-/* Mean root ground speed while the root's z lies in [z0, z1) on the way
- * out (before the hairpin), from the exported poses. */
-static float speed_before_hairpin(smg_graph* g, uint32_t J, const float* xz,
-                                  uint32_t n, uint32_t flags, uint32_t style,
-                                  float z0, float z1) {
+#define CUT_STEPS 720 /* 12 s at 60 Hz */
+
+/* A run through the hairpin, from the exported root: the time it spends
+ * beyond z = `z0` (the last metres before the turn, the turn and the
+ * first metres back: 12 s when it never gets back) and how far off the
+ * path it gets there. */
+static void hairpin_pass(smg_graph* g, uint32_t J, const float* xz,
+                         uint32_t n, uint32_t style, float z0,
+                         float* seconds, float* wide) {
   smg_character_desc d;
   smg_character* ch = NULL;
-  float root[3], prev[3];
+  float root[3];
   float* rot = (float*)malloc(sizeof(float) * 4 * J);
-  double way = 0.0;
-  int steps = 0;
+  int inside = 0, back = 0;
   assert_non_null(rot);
   memset(&d, 0, sizeof d);
   d.struct_size = sizeof d;
-  d.flags = flags;
   d.initial_style = style;
   assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
   assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
-  assert_int_equal(smg_character_get_local_pose(ch, prev, rot, J), SMG_OK);
-  for (int i = 0; i < (int)(12.0f / DT); ++i) {
+  *wide = 0.0f;
+  for (int i = 0; i < CUT_STEPS && !back; ++i) {
     assert_int_equal(smg_character_step(ch, DT), SMG_OK);
     assert_int_equal(smg_character_get_local_pose(ch, root, rot, J), SMG_OK);
-    if (root[2] >= 7.9f) break; /* in the hairpin */
-    if (root[2] >= z0 && root[2] < z1) {
-      way += sqrtf((root[0] - prev[0]) * (root[0] - prev[0]) +
-                   (root[2] - prev[2]) * (root[2] - prev[2]));
-      ++steps;
+    if (root[2] < z0) {
+      back = inside > 0;
+      continue;
     }
-    memcpy(prev, root, sizeof prev);
+    ++inside;
+    const float e = polyline_distance(xz, n, root[0], root[2]);
+    if (e > *wide) *wide = e;
   }
+  *seconds = back ? inside * DT : CUT_STEPS * DT;
   smg_character_destroy(ch);
   free(rot);
-  return steps ? (float)(way / (steps * DT)) : 0.0f;
 }
 
-/* A runner slows for a turn tighter than it can take at its speed, by
- * shorter strides, before the turn begins (its speed changes at a bounded
- * rate): over the last metre before a 0.2 m hairpin the root moves at
- * less than three quarters of its speed on the straight (without the
- * slowing it keeps that speed: the test can fail). */
-static void test_slows_ahead_of_hairpin(void** state) {
+/* A runner gets round a hairpin it cannot turn at any speed a tight turn
+ * slows to (the steering cuts it: steer.c) and back: from 2 m before the
+ * turn until 2 m back out within 2.5 s, never more than 1 m off the
+ * path. A cut that crossed to the leg beside the tip before passing it
+ * left progress behind on the first leg (the local projection cannot
+ * climb over the tip), and the character circled there for 9 s before
+ * progress looked for a later pass nearer the character
+ * (smgi_path_project_ahead). */
+static void test_run_through_hairpin(void** state) {
   (void)state;
   smg_graph* g = rt_default_graph();
   smg_graph_info info;
-  float xz[2 * 16];
+  float xz[2 * 16], seconds, wide;
   if (!g) {
     skip();
     return;
@@ -489,14 +502,191 @@ static void test_slows_ahead_of_hairpin(void** state) {
   assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
   uint32_t n = hairpin(xz), run;
   assert_int_equal(smg_graph_find_style(g, "run", &run), SMG_OK);
-  float cruise = speed_before_hairpin(g, info.joint_count, xz, n, 0u, run,
-                                      1.0f, 4.0f);
-  float before = speed_before_hairpin(g, info.joint_count, xz, n, 0u, run,
-                                      7.0f, 7.9f);
-  print_message("run: %.2f m/s on the straight, %.2f m/s over the last "
-                "metre before the hairpin\n", cruise, before);
-  assert_true(cruise > 2.0f);
-  assert_true(before < 0.75f * cruise);
+  hairpin_pass(g, info.joint_count, xz, n, run, 6.0f, &seconds, &wide);
+  print_message("run through a 0.2 m hairpin: %.2f s from 2 m before it to "
+                "2 m back, %.2f m off the path at most\n", seconds, wide);
+  assert_true(seconds < 2.5f);
+  assert_true(wide < 1.0f);
+  smg_graph_destroy(g);
+}
+
+#define HELD_MAX_POINTS 256
+#define HELD_STEPS 1800 /* 30 s at 60 Hz */
+#define HELD_HALF 30    /* half of a 1 s window */
+
+/* data/paths/NAME.txt ("x z" per line, '#' comments): its point count, 0
+ * when it cannot be read. */
+static uint32_t read_path(const char* name, float* xz, uint32_t cap) {
+  char file[256], line[256];
+  uint32_t n = 0;
+  snprintf(file, sizeof file, "data/paths/%s.txt", name);
+  FILE* f = fopen(file, "r");
+  if (!f) return 0;
+  while (n < cap && fgets(line, sizeof line, f))
+    if (line[0] != '#' && sscanf(line, "%f %f", &xz[2 * n], &xz[2 * n + 1]) == 2)
+      ++n;
+  fclose(f);
+  return n;
+}
+
+/* The root's ground positions of a character started in `style` at the
+ * path's first point facing its second, with a transition to `to` (when
+ * not SMGI_NONE) 4 m along; the number of steps recorded. */
+static int record_root(smg_graph* g, uint32_t J, const float* xz, uint32_t n,
+                       uint32_t style, uint32_t to, float (*pos)[2]) {
+  smg_character_desc d;
+  smg_character* ch = NULL;
+  float root[3];
+  float* rot = (float*)malloc(sizeof(float) * 4 * J);
+  uint32_t id;
+  assert_non_null(rot);
+  memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.initial_style = style;
+  d.path_capacity = HELD_MAX_POINTS;
+  d.position[0] = xz[0];
+  d.position[2] = xz[1];
+  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
+  assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
+  assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
+  if (to != 0xffffffffu)
+    assert_int_equal(smg_character_add_transition(ch, 4.0f, to, &id), SMG_OK);
+  for (int i = 0; i < HELD_STEPS; ++i) {
+    assert_int_equal(smg_character_step(ch, DT), SMG_OK);
+    assert_int_equal(smg_character_get_local_pose(ch, root, rot, J), SMG_OK);
+    pos[i][0] = root[0], pos[i][1] = root[2];
+  }
+  smg_character_destroy(ch);
+  free(rot);
+  return HELD_STEPS;
+}
+
+/* The root's path length over the 1 s window centred on step i, per
+ * second. */
+static float window_speed(const float (*pos)[2], int count, int i) {
+  const int a = i > HELD_HALF ? i - HELD_HALF : 0;
+  const int b = i + HELD_HALF < count ? i + HELD_HALF : count - 1;
+  float way = 0.0f;
+  for (int k = a + 1; k <= b; ++k)
+    way += sqrtf((pos[k][0] - pos[k - 1][0]) * (pos[k][0] - pos[k - 1][0]) +
+                 (pos[k][1] - pos[k - 1][1]) * (pos[k][1] - pos[k - 1][1]));
+  return b > a ? way / ((float)(b - a) * DT) : 0.0f;
+}
+
+/* The arc length along the path of every recorded root position: the
+ * nearest point within 0.5 m back and 1 m ahead of the last one. */
+static void track_arc(const float* xz, uint32_t n, const float (*pos)[2],
+                      int count, float* arc) {
+  float s = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    float best = INFINITY, at = s, cum = 0.0f;
+    for (uint32_t k = 1; k < n; ++k) {
+      const float ax = xz[2 * k - 2], az = xz[2 * k - 1];
+      const float dx = xz[2 * k] - ax, dz = xz[2 * k + 1] - az;
+      const float len = sqrtf(dx * dx + dz * dz);
+      if (len > 1e-6f && cum + len >= s - 0.5f && cum <= s + 1.0f) {
+        float t = ((pos[i][0] - ax) * dx + (pos[i][1] - az) * dz) / (len * len);
+        t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+        const float ex = pos[i][0] - ax - t * dx, ez = pos[i][1] - az - t * dz;
+        const float e = ex * ex + ez * ez;
+        const float u = cum + t * len;
+        if (e < best && u >= s - 0.5f && u <= s + 1.0f) best = e, at = u;
+      }
+      cum += len;
+    }
+    s = at;
+    arc[i] = s;
+  }
+}
+
+/* Median 1 s window speed between 3 m along and 4 m before the end of a
+ * straight 20 m in `style`. */
+static float straight_speed(smg_graph* g, uint32_t J, uint32_t style) {
+  static float pos[HELD_STEPS][2], arc[HELD_STEPS], v[HELD_STEPS];
+  const float xz[4] = {0.0f, 0.0f, 0.0f, 20.0f};
+  int count = record_root(g, J, xz, 2, style, 0xffffffffu, pos), m = 0;
+  track_arc(xz, 2, (const float(*)[2])pos, count, arc);
+  for (int i = 0; i < count; ++i)
+    if (arc[i] >= 3.0f && arc[i] <= 16.0f)
+      v[m++] = window_speed((const float(*)[2])pos, count, i);
+  for (int i = 1; i < m; ++i) { /* insertion sort */
+    float x = v[i];
+    int k = i;
+    while (k > 0 && v[k - 1] > x) v[k] = v[k - 1], --k;
+    v[k] = x;
+  }
+  return m ? v[m / 2] : NAN;
+}
+
+/* Issue 24's style-held share on a path: started walking with a
+ * transition to run 4 m along, the share of the steps from 3 m after it
+ * to 4 m before the end whose 1 s window speed exceeds midway between
+ * the walk's and the run's on a straight line. */
+static float style_held(smg_graph* g, const char* name) {
+  static float xz[2 * HELD_MAX_POINTS], pos[HELD_STEPS][2], arc[HELD_STEPS];
+  smg_graph_info info;
+  uint32_t walk, run, n = read_path(name, xz, HELD_MAX_POINTS);
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
+  assert_int_equal(smg_graph_find_style(g, "walk", &walk), SMG_OK);
+  assert_int_equal(smg_graph_find_style(g, "run", &run), SMG_OK);
+  assert_true(n >= 2);
+  const uint32_t J = info.joint_count;
+  const float midway =
+      0.5f * (straight_speed(g, J, walk) + straight_speed(g, J, run));
+  float length = 0.0f;
+  for (uint32_t k = 1; k < n; ++k)
+    length += sqrtf((xz[2 * k] - xz[2 * k - 2]) * (xz[2 * k] - xz[2 * k - 2]) +
+                    (xz[2 * k + 1] - xz[2 * k - 1]) *
+                        (xz[2 * k + 1] - xz[2 * k - 1]));
+  int count = record_root(g, J, xz, n, walk, run, pos), judged = 0, fast = 0;
+  track_arc(xz, n, (const float(*)[2])pos, count, arc);
+  for (int i = 0; i < count; ++i) {
+    if (arc[i] < 7.0f || arc[i] > length - 4.0f) continue;
+    ++judged;
+    fast += window_speed((const float(*)[2])pos, count, i) > midway;
+  }
+  print_message("%s: run held at %.0f %% of the judged steps (midway speed "
+                "%.2f m/s)\n", name, judged ? 100.0f * fast / judged : 0.0f,
+                midway);
+  return judged ? (float)fast / (float)judged : 0.0f;
+}
+
+/* A run asked for on the scribble (loops of 2-3 m radius with hairpin
+ * tips a few decimetres across) is kept through the hairpins: the runner
+ * cuts each tip with a short, hard braking and a pivot instead of
+ * jogging through a long slowing, so at least 75 % of the judged steps
+ * move faster than midway between the walk and the run (issue 24; the
+ * steering that slowed to 0.6 of the speed for the whole of each tip
+ * held 63 % on the synthetic default graph and 67 % on the CMU one). On
+ * the synthetic default graph, and on the CMU graph when `make` has baked
+ * build/cmu.smg. */
+static void test_run_held_on_scribble(void** state) {
+  (void)state;
+  static float probe[2 * HELD_MAX_POINTS];
+  if (read_path("scribble", probe, HELD_MAX_POINTS) < 2) {
+    print_message("skipped: data/paths/scribble.txt not found\n");
+    skip();
+    return;
+  }
+  smg_graph* g = rt_default_graph();
+  if (!g) {
+    skip();
+    return;
+  }
+  print_message("default graph: ");
+  assert_true(style_held(g, "scribble") >= 0.75f);
+  smg_graph_destroy(g);
+  char path[1024];
+  snprintf(path, sizeof path, "%s/cmu.smg", SMG_BUILD_DIR);
+  g = NULL;
+  if (smg_graph_load_file(path, NULL, &g) != SMG_OK) {
+    print_message("CMU graph: skipped, %s not baked\n", path);
+    return;
+  }
+  print_message("CMU graph: ");
+  assert_true(style_held(g, "scribble") >= 0.75f);
   smg_graph_destroy(g);
 }
 
@@ -621,7 +811,8 @@ int main(void) {
       cmocka_unit_test(test_switch_off),
       cmocka_unit_test(test_settings),
       cmocka_unit_test(test_default_graph_corner),
-      cmocka_unit_test(test_slows_ahead_of_hairpin),
+      cmocka_unit_test(test_run_through_hairpin),
+      cmocka_unit_test(test_run_held_on_scribble),
       cmocka_unit_test(test_run_faces_travel),
   };
   return cmocka_run_group_tests(tests, rt_fixture_setup, rt_fixture_teardown);

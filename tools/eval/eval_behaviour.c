@@ -294,22 +294,15 @@ static void rest_measures(const bh_rec* r, const bh_graph* bg, size_t first,
   out->rest_motion_deg = isfinite(least) ? least : NAN;
 }
 
-/* The pelvis's facing averaged (circular mean) over the 1 s window
- * centred on i: the way the body faces over a stride, without the twist
- * every step gives the pelvis (the travel direction is taken over the
- * same window). */
+/* The pelvis's facing over the 1 s window centred on i, taken as the
+ * travel direction is (eval_gait_window_facing): the way the body faces
+ * over a stride, without the twist every step gives the pelvis. */
 static double window_facing(const bh_rec* r, const bh_graph* bg,
                             size_t first, size_t last, size_t i) {
   size_t a = i >= first + BH_HALF ? i - BH_HALF : first;
-  size_t b = i + BH_HALF < last ? i + BH_HALF : last - 1, k;
-  double sx = 0.0, sz = 0.0;
-  for (k = a; k <= b; ++k) {
-    double f = eval_gait_facing(r->hipq + 4 * k, bg->fwd);
-    if (!isfinite(f)) continue;
-    sx += sin(f);
-    sz += cos(f);
-  }
-  return hypot(sx, sz) > 1e-9 ? atan2(sx, sz) : NAN;
+  size_t b = i + BH_HALF < last ? i + BH_HALF : last - 1;
+  return eval_gait_window_facing(r->hipq, r->pos + bg->j.hips * 3, 3 * r->J,
+                                 a, b, bg->fwd);
 }
 
 /* Pelvis facing against travel, 95th percentile (degrees) over moving
@@ -978,9 +971,11 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
           "recorded until %.0f s after the hips come within %.1f m of the "
           "end: path error (as section 2c), planted-toe speed (section 2c), "
           "the pelvis's facing against the direction of travel (its forward "
-          "axis calibrated on the straight walk; both averaged over a 1 s "
+          "axis calibrated on the straight walk; both over a 1 s "
           "window, i.e. over a stride, so the twist of each step is not "
-          "counted; "
+          "counted: the travel as the chord, the facing as the mean of the "
+          "frames' facings weighted by the hips' travel in each, as the "
+          "chord weights them; "
           "95th percentile over frames faster than %.1f m/s), swings until "
           "the hips stop (from then on they stay within %.0f cm), and at "
           "rest (after the stop) the toes' height above their floor level "

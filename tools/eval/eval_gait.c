@@ -119,6 +119,29 @@ double eval_gait_facing(const double q[4], const double axis[3]) {
   return atan2(w[0], w[2]);
 }
 
+/* Horizontal distance of the hips from frame k to frame k + 1. */
+static double step_length(const double* hips, size_t stride, size_t k) {
+  const double* h = hips + k * stride;
+  return hypot(h[stride] - h[0], h[stride + 2] - h[2]);
+}
+
+double eval_gait_window_facing(const double* q, const double* hips,
+                               size_t stride, size_t a, size_t b,
+                               const double axis[3]) {
+  double sx = 0.0, sz = 0.0;
+  size_t k;
+  if (!q || !hips || !axis || b < a) return NAN;
+  for (k = a; k <= b; ++k) {
+    double w = 0.0, f = eval_gait_facing(q + 4 * k, axis);
+    if (k > a) w += 0.5 * step_length(hips, stride, k - 1);
+    if (k < b) w += 0.5 * step_length(hips, stride, k);
+    if (!isfinite(f)) continue;
+    sx += w * sin(f);
+    sz += w * cos(f);
+  }
+  return hypot(sx, sz) > 1e-9 ? atan2(sx, sz) : NAN;
+}
+
 double eval_gait_angle_diff(double a, double b) {
   double d = fmod(a - b + PI, 2.0 * PI);
   if (d < 0.0) d += 2.0 * PI;

@@ -79,6 +79,20 @@ int eval_gait_calibrate_forward(const double* q, const double* travel,
  * NaN when it points straight up or down. */
 double eval_gait_facing(const double q[4], const double axis[3]);
 
+/* The pelvis facing over frames [a, b] as the direction of travel over
+ * them is taken (the chord from a to b, eval_gait_travel_heading: each
+ * frame counts by the way the hips go in it): the circular mean of the
+ * frames' facings (eval_gait_facing; q: 4 doubles per frame) weighted by
+ * the hips' horizontal travel around each frame (half of each of its two
+ * steps inside [a, b]). A body that faces its travel at every frame then
+ * faces the chord, however its speed changes; a plain mean over time
+ * counts the slow frames of a braking turn more than the chord does (up
+ * to 20 degrees on a runner pivoting round a hairpin). NaN when the hips
+ * do not move or no facing is defined. */
+double eval_gait_window_facing(const double* q, const double* hips,
+                               size_t stride, size_t a, size_t b,
+                               const double axis[3]);
+
 /* a - b wrapped to [-pi, pi). */
 double eval_gait_angle_diff(double a, double b);
 
