@@ -14,7 +14,8 @@
  *    sine of its heading instead of calling sincosf per edge (build_walks;
  *    x and z agree with composing transforms edge by edge to float
  *    rounding, everything else is bit for bit the same);
- *  - edge_mid inverts each node's ground frame once, not once per edge.
+ *  - search_edges' mid samples invert each node's ground frame once, not once
+ *    per edge.
  */
 #include "graph_derived.h"
 
@@ -123,13 +124,11 @@ static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
 }
 
 /* nx[n].natural: the out-edge continuing node n's original motion, else
- * its cheapest edge, else SMGI_NONE; with the node's edge range. */
+ * its cheapest edge, else SMGI_NONE. */
 static void find_natural(const smgi_graph_data* d, smgi_node_next* nx) {
   for (uint32_t n = 0; n < d->lower_node_count; ++n) {
     const smgi_node* node = &d->lower_nodes[n];
     uint32_t* natural = &nx[n].natural;
-    nx[n].first_edge = node->first_edge;
-    nx[n].edge_count = node->edge_count;
     nx[n].unused[0] = nx[n].unused[1] = nx[n].unused[2] = 0;
     *natural = SMGI_NONE;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
@@ -264,7 +263,12 @@ static void build_walks(const smgi_graph_data* d, smgi_node_next* nx,
       put_sample(nx[n].trail + 4u * k, x, z, h, arc);
 #endif
       nx[n].trail_frames[k] = frames;
-      nx[n].trail_edge[k] = nx[from - ws].natural;
+      const uint32_t te = nx[from - ws].natural;
+      const uint32_t lab = te == SMGI_NONE ? SMGI_TRAIL_LABEL_WIDE
+                                            : d->lower_edges[te].label;
+      nx[n].trail_edge[k] = te;
+      nx[n].trail_label[k] =
+          (uint16_t)(lab < SMGI_TRAIL_LABEL_WIDE ? lab : SMGI_TRAIL_LABEL_WIDE);
     }
   }
 }
@@ -679,10 +683,13 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   }
 }
 
-/* edge_mid for lower edges of 4+ frames: inverse(ground(from.frame)) *
- * ground(mid frame), composed as smgi_xf_inv and smgi_xf_point would, with
- * the node's inverse (one sincosf) computed once for all its edges. */
-static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
+/* search_edges (graph_derived.h): LEDG's fields the search reads, the
+ * `to` node's out-edge range, and for edges of 4+ frames the mid sample
+ * inverse(ground(from.frame)) * ground(mid frame), composed as smgi_xf_inv
+ * and smgi_xf_point would, with the node's inverse (one sincosf) computed
+ * once for all its edges. */
+static void build_search_edges(const smgi_graph_data* d,
+                               smgi_search_edge* se) {
   for (uint32_t n = 0; n < d->lower_node_count; ++n) {
     const smgi_node* node = &d->lower_nodes[n];
     int have = 0;
@@ -690,11 +697,16 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
     for (uint32_t k = 0; k < node->edge_count; ++k) {
       const uint32_t ei = node->first_edge + k;
       const smgi_edge* E = &d->lower_edges[ei];
-      float* o = edge_mid + 4u * (size_t)ei;
-      if (E->frame_count < 4u) {
-        o[0] = o[1] = o[2] = o[3] = 0.0f;
-        continue;
-      }
+      smgi_search_edge* o = &se[ei];
+      memcpy(o->displacement, E->displacement, sizeof o->displacement);
+      o->arc_length = E->arc_length;
+      o->to = E->to;
+      o->frame_count = E->frame_count;
+      o->label = E->label;
+      o->to_first_edge = d->lower_nodes[E->to].first_edge;
+      o->to_edge_count = d->lower_nodes[E->to].edge_count;
+      o->mid[0] = o->mid[1] = o->mid[2] = 0.0f;
+      if (E->frame_count < 4u) continue;
       if (!have) {
         /* smgi_xf_inv: rotate (-x, -z) by -h, heading wrap(-h) */
         const float* g0 = d->frames[node->frame].root2d;
@@ -709,10 +721,9 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
         have = 1;
       }
       const float* r = d->frames[E->first_frame + E->frame_count / 2u].root2d;
-      o[0] = ix + (c * r[0] + s * r[1]);
-      o[1] = iz + (-s * r[0] + c * r[1]);
-      o[2] = smgi_wrap_angle(ih + r[2]);
-      o[3] = 0.0f;
+      o->mid[0] = ix + (c * r[0] + s * r[1]);
+      o->mid[1] = iz + (-s * r[0] + c * r[1]);
+      o->mid[2] = smgi_wrap_angle(ih + r[2]);
     }
   }
 }
@@ -872,9 +883,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_uh = off_eh + align16((size_t)d->lower_edge_count * 2u * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
-  size_t off_em = off_af + align16(sizeof(uint32_t) * (size_t)A);
-  size_t off_cs =
-      off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
+  size_t off_se = off_af + align16(sizeof(uint32_t) * (size_t)A);
+  size_t off_cs = off_se + align16(sizeof(smgi_search_edge) *
+                                   (size_t)d->lower_edge_count);
   size_t total = off_cs + align16((size_t)S);
   size_t block = align16(sizeof(smgi_derived));
 
@@ -912,10 +923,10 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
   uint32_t* action_first = (uint32_t*)(base + off_af);
   smgi_node_next* nx = (smgi_node_next*)(base + off_nx);
-  float* edge_mid = (float*)(base + off_em);
+  smgi_search_edge* search_edges = (smgi_search_edge*)(base + off_se);
   uint8_t* can_stop = base + off_cs;
 
-  build_edge_mid(d, edge_mid);
+  build_search_edges(d, search_edges);
   build_can_stop(d, can_stop);
   build_stop_style(d, can_stop, &dv->stop_style, &dv->stop_speed);
 
@@ -952,7 +963,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   build_turn(d, scratch, nx);
   smgi_free(&g->allocator, scratch);
 
-  dv->edge_mid = edge_mid;
+  dv->search_edges = search_edges;
   dv->node_next = nx;
 
   dv->lower_hops = lower_hops;

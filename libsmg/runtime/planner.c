@@ -194,7 +194,7 @@ static uint32_t rank_pass(const job* j, uint32_t node,
   sc.yield = yield;
   slow_to_stop(j, &sc, s);
   *following = sc.following && !sc.lost;
-  smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg, 0.0f};
+  smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg, 0.0f, 0u, 0u};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
   float cw, sw;
