@@ -95,14 +95,17 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
   }
 }
 
-/* edge_hops (graph_derived.h): each lower edge's from and to rows of
- * lower_hops, edge by edge. */
+/* edge_hops (graph_derived.h): per style, each lower edge's from and to
+ * hop counts of lower_hops, edge by edge. */
 static void build_edge_hops(const smgi_graph_data* d, const uint8_t* hops,
                             uint8_t* edge_hops) {
-  const size_t S = d->style_count;
-  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
-    memcpy(edge_hops + 2u * S * e, hops + S * d->lower_edges[e].from, S);
-    memcpy(edge_hops + 2u * S * e + S, hops + S * d->lower_edges[e].to, S);
+  const size_t S = d->style_count, E = d->lower_edge_count;
+  for (size_t st = 0; st < S; ++st) {
+    uint8_t* o = edge_hops + 2u * E * st;
+    for (size_t e = 0; e < E; ++e) {
+      o[2u * e] = hops[S * d->lower_edges[e].from + st];
+      o[2u * e + 1u] = hops[S * d->lower_edges[e].to + st];
+    }
   }
 }
 

@@ -90,12 +90,15 @@ typedef struct smgi_derived {
    * Drives transition planning: near a transition point the planner
    * prefers edges whose `to` node is fewer hops from the target style. */
   const uint8_t* lower_hops;
-  /* lower_hops' rows again per lower edge, of its from node
-   * (edge_hops[2 * edge * style_count + style]) and then of its to node
-   * (edge_hops[(2 * edge + 1) * style_count + style]): the search's style
-   * term reads both for every edge it weighs, and a node's out-edges are
-   * contiguous, so these rows are too (on a big graph every `to` row in
-   * lower_hops was a cache miss of its own). */
+  /* lower_hops again per style and lower edge, of the edge's from node
+   * (edge_hops[2 * (style * lower_edge_count + edge)]) and its to node
+   * (the byte after): the search's style term reads both for an edge it
+   * weighs against the wanted style. A node's out-edges are contiguous,
+   * so their pairs are too (on a big graph every `to` row in lower_hops
+   * was a cache miss of its own), and a style's pairs for all edges are
+   * 2 bytes an edge: for the few styles a crowd wants at once they stay
+   * in the cache (rows per edge, all styles side by side, were 2 *
+   * style_count bytes an edge, most of them never read). */
   const uint8_t* edge_hops;
   /* Same as lower_hops for the upper graph and actions. */
   const uint8_t* upper_hops;

@@ -85,10 +85,12 @@ static float style_penalty(const smg_graph* g, uint32_t label, uint32_t ei,
   uint32_t S = g->data.style_count;
   if (desired >= S || label == desired) return 0.0f;
   /* the hop counts of the edge's from and to nodes, side by side */
-  const uint8_t* hops = smgi_derived_of(g)->edge_hops + (size_t)ei * 2u * S;
-  if (hops[desired] == SMGI_HOPS_UNREACHABLE)
+  const uint8_t* hops =
+      smgi_derived_of(g)->edge_hops +
+      2u * ((size_t)desired * g->data.lower_edge_count + ei);
+  if (hops[0] == SMGI_HOPS_UNREACHABLE)
     return 0.0f; /* cannot get there from here: ignore */
-  uint8_t h = hops[S + desired];
+  uint8_t h = hops[1];
   if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
   return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
 }

@@ -387,12 +387,16 @@ static void compare(const char* name, const smgi_graph_data* d,
   const uint32_t K = SMGI_TRAIL_SAMPLES;
   EXPECT_SAME("lower_hops", dv->lower_hops, r->lower_hops, (size_t)LN * S);
   EXPECT_SAME("upper_hops", dv->upper_hops, r->upper_hops, (size_t)UN * A);
-  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
-    const smgi_edge* E = &d->lower_edges[e];
-    EXPECT_SAME("edge_hops (from)", dv->edge_hops + 2u * (size_t)S * e,
-                r->lower_hops + (size_t)S * E->from, (size_t)S);
-    EXPECT_SAME("edge_hops (to)", dv->edge_hops + (2u * (size_t)e + 1u) * S,
-                r->lower_hops + (size_t)S * E->to, (size_t)S);
+  for (uint32_t st = 0; st < S; ++st) {
+    for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+      const smgi_edge* E = &d->lower_edges[e];
+      const uint8_t* h =
+          dv->edge_hops + 2u * ((size_t)st * d->lower_edge_count + e);
+      EXPECT_SAME("edge_hops (from)", h,
+                  r->lower_hops + (size_t)S * E->from + st, 1u);
+      EXPECT_SAME("edge_hops (to)", h + 1,
+                  r->lower_hops + (size_t)S * E->to + st, 1u);
+    }
   }
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
