@@ -731,6 +731,27 @@ static void build_search_edges(const smgi_graph_data* d,
   }
 }
 
+/* start_first, start_nodes (graph_derived.h) by a counting sort on the
+ * label; returns the first node with out-edges (SMGI_NONE: none). */
+static uint32_t build_start_nodes(const smgi_graph_data* d,
+                                  uint32_t* first, uint32_t* nodes) {
+  const uint32_t S = d->style_count;
+  uint32_t any = SMGI_NONE;
+  memset(first, 0, sizeof(uint32_t) * ((size_t)S + 1u));
+  for (uint32_t n = 0; n < d->lower_node_count; ++n)
+    if (d->lower_nodes[n].edge_count > 0) first[d->lower_nodes[n].label + 1u]++;
+  for (uint32_t s = 0; s < S; ++s) first[s + 1u] += first[s];
+  for (uint32_t n = 0; n < d->lower_node_count; ++n) {
+    const smgi_node* v = &d->lower_nodes[n];
+    if (v->edge_count == 0) continue;
+    if (any == SMGI_NONE) any = n;
+    nodes[first[v->label]++] = n; /* cursor, moved back below */
+  }
+  for (uint32_t s = S; s > 0; --s) first[s] = first[s - 1u];
+  first[0] = 0;
+  return any;
+}
+
 /* Which styles have a pose to come to rest on (graph_derived.h). */
 /* Mean speed of style st's lower edges (arc length over their time),
  * m/s; 0 when it has none. */
@@ -887,8 +908,10 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
   size_t off_se = off_af + align16(sizeof(uint32_t) * (size_t)A);
-  size_t off_cs = off_se + align16(sizeof(smgi_search_edge) *
+  size_t off_sn = off_se + align16(sizeof(smgi_search_edge) *
                                    (size_t)d->lower_edge_count);
+  size_t off_sfs = off_sn + align16(sizeof(uint32_t) * (size_t)LN);
+  size_t off_cs = off_sfs + align16(sizeof(uint32_t) * ((size_t)S + 1u));
   size_t total = off_cs + align16((size_t)S);
   size_t block = align16(sizeof(smgi_derived));
 
@@ -928,8 +951,11 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   smgi_node_next* nx = (smgi_node_next*)(base + off_nx);
   smgi_search_edge* search_edges = (smgi_search_edge*)(base + off_se);
   uint8_t* can_stop = base + off_cs;
+  uint32_t* start_nodes = (uint32_t*)(base + off_sn);
+  uint32_t* start_first = (uint32_t*)(base + off_sfs);
 
   build_search_edges(d, search_edges);
+  dv->first_start = build_start_nodes(d, start_first, start_nodes);
   build_can_stop(d, can_stop);
   build_stop_style(d, can_stop, &dv->stop_style, &dv->stop_speed);
 
@@ -967,6 +993,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   smgi_free(&g->allocator, scratch);
 
   dv->search_edges = search_edges;
+  dv->start_first = start_first;
+  dv->start_nodes = start_nodes;
   dv->node_next = nx;
 
   dv->lower_hops = lower_hops;

@@ -106,6 +106,14 @@ typedef struct smgi_derived {
    * splice_first[f + 1]) (SPLC is sorted by lower_frame); frame_count + 1
    * entries. */
   const uint32_t* splice_first;
+  /* The lower nodes with out-edges, by label and then index: those of
+   * style s are start_nodes[start_first[s] .. start_first[s + 1])
+   * (style_count + 1 offsets); first_start is the first of all (SMGI_NONE:
+   * no node has edges). Where a new character starts (planner.c) without
+   * a scan of every node. */
+  const uint32_t* start_first;
+  const uint32_t* start_nodes;
+  uint32_t first_start;
   /* First upper edge labelled with each action (SMGI_NONE if none): the
    * entry used when a splice must happen but no candidate was found. */
   const uint32_t* action_first_edge;

@@ -441,6 +441,24 @@ static void compare(const char* name, const smgi_graph_data* d,
     EXPECT_SAME("search_edges.to_edge_count", &x->to_edge_count,
                 &d->lower_nodes[E->to].edge_count, 4u);
   }
+  {
+    /* start nodes: per style, the nodes with out-edges in node order */
+    uint32_t first_any = SMGI_NONE;
+    for (uint32_t st = 0; st < S; ++st) {
+      uint32_t k = dv->start_first[st];
+      for (uint32_t n = 0; n < LN; ++n) {
+        if (d->lower_nodes[n].edge_count == 0) continue;
+        if (first_any == SMGI_NONE) first_any = n;
+        if (d->lower_nodes[n].label != st) continue;
+        assert_true(k < dv->start_first[st + 1u]);
+        assert_int_equal(dv->start_nodes[k], n);
+        ++k;
+      }
+      assert_int_equal(k, dv->start_first[st + 1u]);
+    }
+    assert_int_equal(dv->start_first[0], 0);
+    assert_int_equal(dv->first_start, first_any);
+  }
   assert_int_equal(dv->agile_style, r->agile_style);
   EXPECT_SAME("style_can_stop", dv->style_can_stop, r->can_stop, (size_t)S);
   assert_int_equal(dv->stop_style, r->stop_style);
