@@ -376,6 +376,13 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
         c->budget--;
         smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
         if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
+#if defined(__GNUC__) || defined(__clang__)
+        /* a kid the search may descend into: its out-edge records and
+         * its leaf record, cold on a big graph, start coming while the
+         * other kids are weighed (a hint only) */
+        __builtin_prefetch(&smgi_derived_of(c->g)->search_edges[nx.first_edge]);
+        __builtin_prefetch(&smgi_derived_of(c->g)->node_next[nx.node]);
+#endif
         uint32_t i = nk++;
         while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >
                             nx.cost + nx.pen) {
