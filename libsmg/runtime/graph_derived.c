@@ -14,7 +14,8 @@
  *    sine of its heading instead of calling sincosf per edge (build_walks;
  *    x and z agree with composing transforms edge by edge to float
  *    rounding, everything else is bit for bit the same);
- *  - edge_mid inverts each node's ground frame once, not once per edge.
+ *  - search_edges' mid samples invert each node's ground frame once, not once
+ *    per edge.
  */
 #include "graph_derived.h"
 
@@ -94,14 +95,17 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
   }
 }
 
-/* edge_hops (graph_derived.h): each lower edge's from and to rows of
- * lower_hops, edge by edge. */
+/* edge_hops (graph_derived.h): per style, each lower edge's from and to
+ * hop counts of lower_hops, edge by edge. */
 static void build_edge_hops(const smgi_graph_data* d, const uint8_t* hops,
                             uint8_t* edge_hops) {
-  const size_t S = d->style_count;
-  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
-    memcpy(edge_hops + 2u * S * e, hops + S * d->lower_edges[e].from, S);
-    memcpy(edge_hops + 2u * S * e + S, hops + S * d->lower_edges[e].to, S);
+  const size_t S = d->style_count, E = d->lower_edge_count;
+  for (size_t st = 0; st < S; ++st) {
+    uint8_t* o = edge_hops + 2u * E * st;
+    for (size_t e = 0; e < E; ++e) {
+      o[2u * e] = hops[S * d->lower_edges[e].from + st];
+      o[2u * e + 1u] = hops[S * d->lower_edges[e].to + st];
+    }
   }
 }
 
@@ -123,13 +127,11 @@ static void build_reverse(const smgi_edge* edges, uint32_t edge_count,
 }
 
 /* nx[n].natural: the out-edge continuing node n's original motion, else
- * its cheapest edge, else SMGI_NONE; with the node's edge range. */
+ * its cheapest edge, else SMGI_NONE. */
 static void find_natural(const smgi_graph_data* d, smgi_node_next* nx) {
   for (uint32_t n = 0; n < d->lower_node_count; ++n) {
     const smgi_node* node = &d->lower_nodes[n];
     uint32_t* natural = &nx[n].natural;
-    nx[n].first_edge = node->first_edge;
-    nx[n].edge_count = node->edge_count;
     nx[n].unused[0] = nx[n].unused[1] = nx[n].unused[2] = 0;
     *natural = SMGI_NONE;
     for (uint32_t k = 0; k < node->edge_count; ++k) {
@@ -264,7 +266,12 @@ static void build_walks(const smgi_graph_data* d, smgi_node_next* nx,
       put_sample(nx[n].trail + 4u * k, x, z, h, arc);
 #endif
       nx[n].trail_frames[k] = frames;
-      nx[n].trail_edge[k] = nx[from - ws].natural;
+      const uint32_t te = nx[from - ws].natural;
+      const uint32_t lab = te == SMGI_NONE ? SMGI_TRAIL_LABEL_WIDE
+                                            : d->lower_edges[te].label;
+      nx[n].trail_edge[k] = te;
+      nx[n].trail_label[k] =
+          (uint16_t)(lab < SMGI_TRAIL_LABEL_WIDE ? lab : SMGI_TRAIL_LABEL_WIDE);
     }
   }
 }
@@ -679,10 +686,13 @@ static void build_turn(const smgi_graph_data* d, void* scratch,
   }
 }
 
-/* edge_mid for lower edges of 4+ frames: inverse(ground(from.frame)) *
- * ground(mid frame), composed as smgi_xf_inv and smgi_xf_point would, with
- * the node's inverse (one sincosf) computed once for all its edges. */
-static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
+/* search_edges (graph_derived.h): LEDG's fields the search reads, the
+ * `to` node's out-edge range, and for edges of 4+ frames the mid sample
+ * inverse(ground(from.frame)) * ground(mid frame), composed as smgi_xf_inv
+ * and smgi_xf_point would, with the node's inverse (one sincosf) computed
+ * once for all its edges. */
+static void build_search_edges(const smgi_graph_data* d,
+                               smgi_search_edge* se) {
   for (uint32_t n = 0; n < d->lower_node_count; ++n) {
     const smgi_node* node = &d->lower_nodes[n];
     int have = 0;
@@ -690,11 +700,16 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
     for (uint32_t k = 0; k < node->edge_count; ++k) {
       const uint32_t ei = node->first_edge + k;
       const smgi_edge* E = &d->lower_edges[ei];
-      float* o = edge_mid + 4u * (size_t)ei;
-      if (E->frame_count < 4u) {
-        o[0] = o[1] = o[2] = o[3] = 0.0f;
-        continue;
-      }
+      smgi_search_edge* o = &se[ei];
+      memcpy(o->displacement, E->displacement, sizeof o->displacement);
+      o->arc_length = E->arc_length;
+      o->to = E->to;
+      o->frame_count = E->frame_count;
+      o->label = E->label;
+      o->to_first_edge = d->lower_nodes[E->to].first_edge;
+      o->to_edge_count = d->lower_nodes[E->to].edge_count;
+      o->mid[0] = o->mid[1] = o->mid[2] = 0.0f;
+      if (E->frame_count < 4u) continue;
       if (!have) {
         /* smgi_xf_inv: rotate (-x, -z) by -h, heading wrap(-h) */
         const float* g0 = d->frames[node->frame].root2d;
@@ -709,12 +724,32 @@ static void build_edge_mid(const smgi_graph_data* d, float* edge_mid) {
         have = 1;
       }
       const float* r = d->frames[E->first_frame + E->frame_count / 2u].root2d;
-      o[0] = ix + (c * r[0] + s * r[1]);
-      o[1] = iz + (-s * r[0] + c * r[1]);
-      o[2] = smgi_wrap_angle(ih + r[2]);
-      o[3] = 0.0f;
+      o->mid[0] = ix + (c * r[0] + s * r[1]);
+      o->mid[1] = iz + (-s * r[0] + c * r[1]);
+      o->mid[2] = smgi_wrap_angle(ih + r[2]);
     }
   }
+}
+
+/* start_first, start_nodes (graph_derived.h) by a counting sort on the
+ * label; returns the first node with out-edges (SMGI_NONE: none). */
+static uint32_t build_start_nodes(const smgi_graph_data* d,
+                                  uint32_t* first, uint32_t* nodes) {
+  const uint32_t S = d->style_count;
+  uint32_t any = SMGI_NONE;
+  memset(first, 0, sizeof(uint32_t) * ((size_t)S + 1u));
+  for (uint32_t n = 0; n < d->lower_node_count; ++n)
+    if (d->lower_nodes[n].edge_count > 0) first[d->lower_nodes[n].label + 1u]++;
+  for (uint32_t s = 0; s < S; ++s) first[s + 1u] += first[s];
+  for (uint32_t n = 0; n < d->lower_node_count; ++n) {
+    const smgi_node* v = &d->lower_nodes[n];
+    if (v->edge_count == 0) continue;
+    if (any == SMGI_NONE) any = n;
+    nodes[first[v->label]++] = n; /* cursor, moved back below */
+  }
+  for (uint32_t s = S; s > 0; --s) first[s] = first[s - 1u];
+  first[0] = 0;
+  return any;
 }
 
 /* Which styles have a pose to come to rest on (graph_derived.h). */
@@ -872,9 +907,11 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t off_uh = off_eh + align16((size_t)d->lower_edge_count * 2u * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
-  size_t off_em = off_af + align16(sizeof(uint32_t) * (size_t)A);
-  size_t off_cs =
-      off_em + align16(sizeof(float) * 4u * (size_t)d->lower_edge_count);
+  size_t off_se = off_af + align16(sizeof(uint32_t) * (size_t)A);
+  size_t off_sn = off_se + align16(sizeof(smgi_search_edge) *
+                                   (size_t)d->lower_edge_count);
+  size_t off_sfs = off_sn + align16(sizeof(uint32_t) * (size_t)LN);
+  size_t off_cs = off_sfs + align16(sizeof(uint32_t) * ((size_t)S + 1u));
   size_t total = off_cs + align16((size_t)S);
   size_t block = align16(sizeof(smgi_derived));
 
@@ -912,10 +949,13 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
   uint32_t* action_first = (uint32_t*)(base + off_af);
   smgi_node_next* nx = (smgi_node_next*)(base + off_nx);
-  float* edge_mid = (float*)(base + off_em);
+  smgi_search_edge* search_edges = (smgi_search_edge*)(base + off_se);
   uint8_t* can_stop = base + off_cs;
+  uint32_t* start_nodes = (uint32_t*)(base + off_sn);
+  uint32_t* start_first = (uint32_t*)(base + off_sfs);
 
-  build_edge_mid(d, edge_mid);
+  build_search_edges(d, search_edges);
+  dv->first_start = build_start_nodes(d, start_first, start_nodes);
   build_can_stop(d, can_stop);
   build_stop_style(d, can_stop, &dv->stop_style, &dv->stop_speed);
 
@@ -952,7 +992,9 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   build_turn(d, scratch, nx);
   smgi_free(&g->allocator, scratch);
 
-  dv->edge_mid = edge_mid;
+  dv->search_edges = search_edges;
+  dv->start_first = start_first;
+  dv->start_nodes = start_nodes;
   dv->node_next = nx;
 
   dv->lower_hops = lower_hops;

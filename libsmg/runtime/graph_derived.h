@@ -18,12 +18,11 @@
 
 #define SMGI_HOPS_UNREACHABLE 255u
 
-/* What the sequence search reads of lower node n, in one 128-byte record
- * aligned to 64 bytes (two cache lines): on a big graph (tens of
- * thousands of nodes, tables far larger than the caches) each
- * of these was a table of its own and a cache miss of its own for every
- * node the search reached.
- *  - first_edge, edge_count: the node's out-edges, as in LNOD;
+/* What the sequence search reads of lower node n where it stops choosing
+ * (smgi_seq_leaf), in one 128-byte record aligned to 64 bytes (two cache
+ * lines): on a big graph (tens of thousands of nodes, tables far larger
+ * than the caches) each of these was a table of its own and a cache miss
+ * of its own for every node the search reached.
  *  - natural: the out-edge continuing the node's original motion
  *    (first_frame == the node's frame, not a transition), else its
  *    cheapest, else SMGI_NONE;
@@ -31,26 +30,58 @@
  *    SMGI_TRAIL_STEP_SECONDS (at the first edge end past each step): dx,
  *    dz, dheading in the node's ground frame and the arc length;
  *    trail_frames[k] the frames elapsed there (equal to the previous
- *    sample's when the continuation ended) and trail_edge[k] the edge
- *    playing then. The search values what follows its last choice from
- *    this in O(1) per sample;
+ *    sample's when the continuation ended), trail_edge[k] the edge
+ *    playing then and trail_label[k] its label (SMGI_TRAIL_LABEL_WIDE
+ *    when it does not fit 16 bits: read the edge's). The search values
+ *    what follows its last choice from this in O(1) per sample; the
+ *    label beside it spares the style term a read of each sample's edge
+ *    record (a cache miss of its own on a big graph) unless the label
+ *    differs from the wanted one;
  *  - turn[0], turn[1]: the largest heading change to the left (+) and to
  *    the right (magnitude) that any edge sequence from the node reaches
  *    within SMGI_TURN_SECONDS - whether a turn is possible soon, beyond
  *    what the planner searches (a straight walking loop whose exits to
  *    turning clips are far away looks as good as any other until then). */
+#define SMGI_TRAIL_LABEL_WIDE 0xffffu
 typedef struct smgi_node_next {
   float trail[4u * SMGI_TRAIL_SAMPLES];
   float trail_frames[SMGI_TRAIL_SAMPLES];
   uint32_t trail_edge[SMGI_TRAIL_SAMPLES];
   float turn[2];
   uint32_t natural;
-  uint32_t first_edge, edge_count;
+  uint16_t trail_label[SMGI_TRAIL_SAMPLES];
   uint32_t unused[3]; /* zero: pads the record to 128 bytes */
 } smgi_node_next;
 /* two cache lines exactly (SMGI_TRAIL_SAMPLES is 4) */
 typedef char smgi_node_next_is_128_bytes[sizeof(smgi_node_next) == 128u ? 1
                                                                          : -1];
+
+/* What the sequence search reads of lower edge e when it weighs it
+ * (smgi_seq_step), in one 48-byte record; a node's out-edges are side by
+ * side, as in LEDG. On a big graph the LEDG record, the mid-edge sample
+ * (a table of its own) and the `to` node's out-edge range (in its
+ * node_next record) were three cache misses per edge weighed; here they
+ * are one or two per node expanded.
+ *  - displacement, arc_length, frame_count, to, label: as in LEDG;
+ *  - mid (edges of 4+ frames, else zero): the root's ground transform at
+ *    frame frame_count / 2 relative to the edge's start (x, z, heading),
+ *    i.e. inverse(ground(from.frame)) * ground(mid). The search places it
+ *    with the same rotation as the edge's end instead of composing two
+ *    transforms from two pose records;
+ *  - to_first_edge, to_edge_count: the `to` node's out-edges (LNOD), where
+ *    the search goes on from. */
+typedef struct smgi_search_edge {
+  float displacement[3];
+  float arc_length;
+  float mid[3];
+  uint32_t to;
+  uint32_t frame_count;
+  uint32_t label;
+  uint32_t to_first_edge, to_edge_count;
+} smgi_search_edge;
+typedef char smgi_search_edge_is_48_bytes[sizeof(smgi_search_edge) == 48u
+                                              ? 1
+                                              : -1];
 
 typedef struct smgi_derived {
   /* lower_hops[node * style_count + style]: number of edges to traverse
@@ -59,12 +90,15 @@ typedef struct smgi_derived {
    * Drives transition planning: near a transition point the planner
    * prefers edges whose `to` node is fewer hops from the target style. */
   const uint8_t* lower_hops;
-  /* lower_hops' rows again per lower edge, of its from node
-   * (edge_hops[2 * edge * style_count + style]) and then of its to node
-   * (edge_hops[(2 * edge + 1) * style_count + style]): the search's style
-   * term reads both for every edge it weighs, and a node's out-edges are
-   * contiguous, so these rows are too (on a big graph every `to` row in
-   * lower_hops was a cache miss of its own). */
+  /* lower_hops again per style and lower edge, of the edge's from node
+   * (edge_hops[2 * (style * lower_edge_count + edge)]) and its to node
+   * (the byte after): the search's style term reads both for an edge it
+   * weighs against the wanted style. A node's out-edges are contiguous,
+   * so their pairs are too (on a big graph every `to` row in lower_hops
+   * was a cache miss of its own), and a style's pairs for all edges are
+   * 2 bytes an edge: for the few styles a crowd wants at once they stay
+   * in the cache (rows per edge, all styles side by side, were 2 *
+   * style_count bytes an edge, most of them never read). */
   const uint8_t* edge_hops;
   /* Same as lower_hops for the upper graph and actions. */
   const uint8_t* upper_hops;
@@ -72,18 +106,23 @@ typedef struct smgi_derived {
    * splice_first[f + 1]) (SPLC is sorted by lower_frame); frame_count + 1
    * entries. */
   const uint32_t* splice_first;
+  /* The lower nodes with out-edges, by label and then index: those of
+   * style s are start_nodes[start_first[s] .. start_first[s + 1])
+   * (style_count + 1 offsets); first_start is the first of all (SMGI_NONE:
+   * no node has edges). Where a new character starts (planner.c) without
+   * a scan of every node. */
+  const uint32_t* start_first;
+  const uint32_t* start_nodes;
+  uint32_t first_start;
   /* First upper edge labelled with each action (SMGI_NONE if none): the
    * entry used when a splice must happen but no candidate was found. */
   const uint32_t* action_first_edge;
   /* node_next[node]: what the planner's sequence search reads of a lower
    * node, in one record (below). */
   const struct smgi_node_next* node_next;
-  /* edge_mid[4 * edge] for lower edges of 4+ frames: the root's ground
-   * transform at frame frame_count / 2 relative to the edge's start (x, z,
-   * heading; 4th unused), i.e. inverse(ground(from.frame)) * ground(mid).
-   * The search places it with the same rotation as the edge's end
-   * instead of composing two transforms from two pose records. */
-  const float* edge_mid;
+  /* search_edges[edge]: what the search reads of a lower edge, in one
+   * record (above). */
+  const smgi_search_edge* search_edges;
   /* The style whose motion turns most tightly (heading change per metre of
    * its nodes' natural continuations, node_next.trail): where a character
    * that got far off its path goes to get back (CMU runs, for one, barely

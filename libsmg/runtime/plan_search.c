@@ -78,16 +78,19 @@ static void end_target(const smgi_step_in* in, float* x, float* z) {
   }
 }
 
-static float style_penalty(const smg_graph* g, const smgi_edge* e,
+/* Style penalty of lower edge ei, labelled `label`, when `desired` is
+ * wanted. */
+static float style_penalty(const smg_graph* g, uint32_t label, uint32_t ei,
                            uint32_t desired) {
   uint32_t S = g->data.style_count;
-  if (desired >= S || e->label == desired) return 0.0f;
-  /* the hop counts of e's from and to nodes, side by side per edge */
-  const uint8_t* hops = smgi_derived_of(g)->edge_hops +
-                        (size_t)(e - g->data.lower_edges) * 2u * S;
-  if (hops[desired] == SMGI_HOPS_UNREACHABLE)
+  if (desired >= S || label == desired) return 0.0f;
+  /* the hop counts of the edge's from and to nodes, side by side */
+  const uint8_t* hops =
+      smgi_derived_of(g)->edge_hops +
+      2u * ((size_t)desired * g->data.lower_edge_count + ei);
+  if (hops[0] == SMGI_HOPS_UNREACHABLE)
     return 0.0f; /* cannot get there from here: ignore */
-  uint8_t h = hops[S + desired];
+  uint8_t h = hops[1];
   if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
   return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
 }
@@ -104,18 +107,19 @@ float smgi_plan_start_error(const smgi_path* path, smgi_xform2 W, float s,
 /* An edge that spans arc lengths [s0, s1] is in style if its label is
  * wanted at either end: transition edges cross the point where the style
  * changes, and an edge ending exactly on a transition point is fine. */
-static float edge_style_penalty(const smgi_seq_ctx* c, const smgi_edge* e,
-                                float s0, float s1) {
+static float edge_style_penalty(const smgi_seq_ctx* c, uint32_t label,
+                                uint32_t ei, float s0, float s1) {
   uint32_t a = smgi_style_at(c->cons, s0), b = smgi_style_at(c->cons, s1);
-  if (e->label == a || e->label == b) return 0.0f;
-  return style_penalty(c->g, e, b);
+  if (label == a || label == b) return 0.0f;
+  return style_penalty(c->g, label, ei, b);
 }
 
 /* Lost (far off the path): the wanted style yields to the graph's most
  * agile one until the path is rejoined - a style that cannot turn (CMU
  * runs) would otherwise carry the character away for good. */
-static float lost_style_penalty(const smg_graph* g, const smgi_edge* e) {
-  return style_penalty(g, e, smgi_derived_of(g)->agile_style);
+static float lost_style_penalty(const smg_graph* g, uint32_t label,
+                                uint32_t ei) {
+  return style_penalty(g, label, ei, smgi_derived_of(g)->agile_style);
 }
 
 /* Error of one root sample at (x, z) facing h, after arc u, having moved
@@ -181,17 +185,20 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
   return sc;
 }
 
-/* Style penalty of an edge at arc lengths [a, b] of the path. */
-static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b) {
+/* Style penalty of lower edge ei (labelled `label`) at arc lengths
+ * [a, b] of the path. */
+static float seq_pen(const smgi_seq_ctx* c, uint32_t label, uint32_t ei,
+                     float a, float b) {
   if (!c->following)
-    return c->yield ? 10.0f * lost_style_penalty(c->g, e)
-                    : 10.0f * style_penalty(c->g, e, c->style0);
-  if (c->lost || c->yield) return lost_style_penalty(c->g, e);
+    return c->yield ? 10.0f * lost_style_penalty(c->g, label, ei)
+                    : 10.0f * style_penalty(c->g, label, ei, c->style0);
+  if (c->lost || c->yield) return lost_style_penalty(c->g, label, ei);
   /* s0 <= a <= b: before the next constraint the wanted style is the one
    * at s0 (what edge_style_penalty would find with two scans) */
   if (b < c->style_end)
-    return e->label == c->style0 ? 0.0f : style_penalty(c->g, e, c->style0);
-  return edge_style_penalty(c, e, a, b);
+    return label == c->style0 ? 0.0f
+                              : style_penalty(c->g, label, ei, c->style0);
+  return edge_style_penalty(c, label, ei, a, b);
 }
 
 /* Append edge `ei` to the sequence in `in`: root samples at the edge's
@@ -200,8 +207,8 @@ static float seq_pen(const smgi_seq_ctx* c, const smgi_edge* e, float a, float b
 void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw,
                      uint32_t ei, float pen_scale, float bound,
                      smgi_seq_state* out, float* maxd) {
-  const smg_graph* g = c->g;
-  const smgi_edge* e = &g->data.lower_edges[ei];
+  /* the edge's search record (graph_derived.h): everything read below */
+  const smgi_search_edge* e = &smgi_derived_of(c->g)->search_edges[ei];
   /* one rotation (cw, sw = cos, sin of in->W.h, computed once by the
    * caller for all of a state's children) places both the edge's end and
    * its mid sample */
@@ -212,6 +219,8 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
     out->W.h = smgi_wrap_angle(in->W.h + dp[2]);
   }
   out->node = e->to;
+  out->first_edge = e->to_first_edge;
+  out->edge_count = e->to_edge_count;
   out->seg = in->seg;
   out->cost = in->cost;
   out->beyond = in->beyond;
@@ -232,8 +241,8 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
       z = out->W.z;
       h = out->W.h;
     } else {
-      /* the mid sample relative to the edge's start (derived edge_mid) */
-      const float* r = smgi_derived_of(g)->edge_mid + 4u * (size_t)ei;
+      /* the mid sample relative to the edge's start */
+      const float* r = e->mid;
       x = in->W.x + (cw * r[0] + sw * r[1]);
       z = in->W.z + (-sw * r[0] + cw * r[1]);
       h = in->W.h + r[2];
@@ -261,7 +270,7 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
   *maxd = md;
   out->u = in->u + e->arc_length;
   out->f = in->f + (float)fc;
-  float pe = pen_scale * seq_pen(c, e, c->s0 + in->u, c->s0 + out->u);
+  float pe = pen_scale * seq_pen(c, e->label, ei, c->s0 + in->u, c->s0 + out->u);
   out->pen = in->pen > pe ? in->pen : pe;
   if (!isfinite(out->cost)) out->cost = INFINITY;
 }
@@ -283,6 +292,7 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
   const float* tr = nx->trail;
   const float* tf = nx->trail_frames;
   const uint32_t* te = nx->trail_edge;
+  const uint16_t* tl = nx->trail_label;
   const float f0 = st.f, u0 = st.u;
   float pf = 0.0f, pu = 0.0f, px = st.W.x, pz = st.W.z;
   /* beyond the window: can the motion turn towards the path soon? The
@@ -320,8 +330,10 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     st.beyond += b * w / c->T;
     st.f = f0 + (fk < room ? fk : room);
     if (te[k] != SMGI_NONE) {
-      const smgi_edge* e = &g->data.lower_edges[te[k]];
-      float pe = 0.5f * seq_pen(c, e, c->s0 + u0 + pu,
+      const uint32_t label = tl[k] != SMGI_TRAIL_LABEL_WIDE
+                                 ? tl[k]
+                                 : g->data.lower_edges[te[k]].label;
+      float pe = 0.5f * seq_pen(c, label, te[k], c->s0 + u0 + pu,
                                 c->s0 + u0 + tr[4u * k + 3u]);
       if (pe > st.pen) st.pen = pe;
     }
@@ -345,26 +357,32 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
  * when the graph or the budget ends first). */
 void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
                     uint32_t depth, float* best) {
-  const smgi_node_next* next = smgi_derived_of(c->g)->node_next;
   for (uint32_t d = 0; d < SMGI_SEQ_MAX_DEPTH && depth < SMGI_SEQ_PATH_CAP; ++d) {
-    /* the node's out-edges, from the record the leaf reads too */
-    const smgi_node_next* n = &next[st.node];
-    if (st.f >= c->T || n->edge_count == 0 || c->budget == 0) break;
-    if (n->edge_count > 1u) {
+    /* the node's out-edges, carried in the state from the edge that led
+     * here (no read of the node's own records) */
+    if (st.f >= c->T || st.edge_count == 0 || c->budget == 0) break;
+    if (st.edge_count > 1u) {
       if (branches == 0) break;
       /* children cheapest first: good bounds early prune the most */
       smgi_seq_state kids[SMGI_SEQ_MAX_KIDS];
       uint32_t kid_edge[SMGI_SEQ_MAX_KIDS], nk = 0;
-      uint32_t cnt = n->edge_count < SMGI_SEQ_MAX_KIDS ? n->edge_count : SMGI_SEQ_MAX_KIDS;
+      uint32_t cnt = st.edge_count < SMGI_SEQ_MAX_KIDS ? st.edge_count : SMGI_SEQ_MAX_KIDS;
       float cw, sw;
       smgi_sincosf(st.W.h, &sw, &cw);
       for (uint32_t k = 0; k < cnt && c->budget > 0; ++k) {
-        uint32_t ei = n->first_edge + k;
+        uint32_t ei = st.first_edge + k;
         smgi_seq_state nx;
         float md;
         c->budget--;
         smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
         if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
+#if defined(__GNUC__) || defined(__clang__)
+        /* a kid the search may descend into: its out-edge records and
+         * its leaf record, cold on a big graph, start coming while the
+         * other kids are weighed (a hint only) */
+        __builtin_prefetch(&smgi_derived_of(c->g)->search_edges[nx.first_edge]);
+        __builtin_prefetch(&smgi_derived_of(c->g)->node_next[nx.node]);
+#endif
         uint32_t i = nk++;
         while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >
                             nx.cost + nx.pen) {
@@ -388,10 +406,10 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
     c->budget--;
     float cw, sw;
     smgi_sincosf(st.W.h, &sw, &cw);
-    smgi_seq_step(c, &st, cw, sw, n->first_edge, 0.5f,
-             *best, &nx, &md);
+    const uint32_t ei = st.first_edge;
+    smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
     st = nx;
-    c->path[depth++] = n->first_edge;
+    c->path[depth++] = ei;
     if (st.cost + st.pen >= *best) return;
   }
   float v = smgi_seq_leaf(c, st, *best);

@@ -62,6 +62,9 @@ typedef struct smgi_seq_state {
   uint32_t seg;      /* path segment hint near s0 + u */
   float beyond;      /* accumulated distance from the path beyond what the
                       * steering removes (mean over the window) */
+  uint32_t first_edge, edge_count; /* the node's out-edges (set by
+                                    * smgi_seq_step from the edge's record;
+                                    * not read of a state it is given) */
 } smgi_seq_state;
 
 /* Edge evaluations one ranking may spend. With root steering on, a

@@ -194,7 +194,7 @@ static uint32_t rank_pass(const job* j, uint32_t node,
   sc.yield = yield;
   slow_to_stop(j, &sc, s);
   *following = sc.following && !sc.lost;
-  smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg, 0.0f};
+  smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, seg, 0.0f, 0u, 0u};
   smgi_seq_state first[SMGI_MAX_CANDIDATES];
   float best = INFINITY;
   float cw, sw;
@@ -608,30 +608,16 @@ static void replan(const job* j) {
 static smg_result plan_start(const job* j, uint32_t* rng, float x, float z,
                              float h) {
   const smg_graph* g = j->in->graph;
-  uint32_t LN = g->data.lower_node_count;
-  /* a node of the initial style with out-edges, chosen by the seed */
-  uint32_t matches = 0;
-  for (uint32_t n = 0; n < LN; ++n)
-    if (g->data.lower_nodes[n].label == j->in->cons->base_style &&
-        g->data.lower_nodes[n].edge_count > 0)
-      ++matches;
-  uint32_t node = SMGI_NONE;
-  if (matches > 0) {
-    uint32_t pick = smgi_xorshift(rng) % matches;
-    for (uint32_t n = 0; n < LN; ++n) {
-      if (g->data.lower_nodes[n].label == j->in->cons->base_style &&
-          g->data.lower_nodes[n].edge_count > 0) {
-        if (pick == 0) {
-          node = n;
-          break;
-        }
-        --pick;
-      }
-    }
-  } else {
-    for (uint32_t n = 0; n < LN && node == SMGI_NONE; ++n)
-      if (g->data.lower_nodes[n].edge_count > 0) node = n;
-  }
+  const smgi_derived* dv = smgi_derived_of(g);
+  /* a node of the initial style with out-edges, chosen by the seed (the
+   * derived list holds them in node order), else the first with any */
+  const uint32_t st = j->in->cons->base_style;
+  const uint32_t matches =
+      st < g->data.style_count ? dv->start_first[st + 1u] - dv->start_first[st]
+                               : 0u;
+  uint32_t node = dv->first_start;
+  if (matches > 0)
+    node = dv->start_nodes[dv->start_first[st] + smgi_xorshift(rng) % matches];
   if (node == SMGI_NONE) return SMG_ERROR_BLOB_VALUE; /* no edges at all */
   cand c[SMGI_MAX_CANDIDATES];
   smgi_xform2 W = {x, z, smgi_wrap_angle(h)};

@@ -3,8 +3,8 @@
  * (libsmg/runtime/graph_derived.c) against plain reference versions kept
  * here: the straightforward code the load-time builders replaced (node_turn
  * one frame and one node at a time, node_trail composing smgi_xf_mul edge
- * by edge with a sincosf each, edge_mid inverting the from-node's ground
- * frame for every edge).
+ * by edge with a sincosf each, search_edges' mid samples inverting the
+ * from-node's ground frame for every edge).
  *
  * Every table must match bit for bit, except the x and z of node_trail:
  * the builder walks with a carried (cos, sin) of the heading
@@ -387,12 +387,16 @@ static void compare(const char* name, const smgi_graph_data* d,
   const uint32_t K = SMGI_TRAIL_SAMPLES;
   EXPECT_SAME("lower_hops", dv->lower_hops, r->lower_hops, (size_t)LN * S);
   EXPECT_SAME("upper_hops", dv->upper_hops, r->upper_hops, (size_t)UN * A);
-  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
-    const smgi_edge* E = &d->lower_edges[e];
-    EXPECT_SAME("edge_hops (from)", dv->edge_hops + 2u * (size_t)S * e,
-                r->lower_hops + (size_t)S * E->from, (size_t)S);
-    EXPECT_SAME("edge_hops (to)", dv->edge_hops + (2u * (size_t)e + 1u) * S,
-                r->lower_hops + (size_t)S * E->to, (size_t)S);
+  for (uint32_t st = 0; st < S; ++st) {
+    for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+      const smgi_edge* E = &d->lower_edges[e];
+      const uint8_t* h =
+          dv->edge_hops + 2u * ((size_t)st * d->lower_edge_count + e);
+      EXPECT_SAME("edge_hops (from)", h,
+                  r->lower_hops + (size_t)S * E->from + st, 1u);
+      EXPECT_SAME("edge_hops (to)", h + 1,
+                  r->lower_hops + (size_t)S * E->to + st, 1u);
+    }
   }
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
@@ -401,11 +405,17 @@ static void compare(const char* name, const smgi_graph_data* d,
   for (uint32_t n = 0; n < LN; ++n) {
     const smgi_node_next* x = &dv->node_next[n];
     const uint32_t unused[3] = {0, 0, 0};
-    EXPECT_SAME("node_next.first_edge", &x->first_edge,
-                &d->lower_nodes[n].first_edge, 4u);
-    EXPECT_SAME("node_next.edge_count", &x->edge_count,
-                &d->lower_nodes[n].edge_count, 4u);
     EXPECT_SAME("node_next.unused", x->unused, unused, sizeof unused);
+    for (uint32_t k = 0; k < K; ++k) {
+      /* the trail edge's label, or WIDE where there is none or it does
+       * not fit 16 bits */
+      const uint32_t te = r->trail_edge[(size_t)n * K + k];
+      const uint32_t lab = te == SMGI_NONE ? SMGI_TRAIL_LABEL_WIDE
+                                           : d->lower_edges[te].label;
+      assert_int_equal(x->trail_label[k], lab < SMGI_TRAIL_LABEL_WIDE
+                                              ? lab
+                                              : SMGI_TRAIL_LABEL_WIDE);
+    }
     EXPECT_SAME("node_next.natural", &x->natural, r->natural + n, 4u);
     EXPECT_SAME("node_next.trail_frames", x->trail_frames,
                 r->trail_frames + (size_t)n * K, 4u * K);
@@ -414,8 +424,41 @@ static void compare(const char* name, const smgi_graph_data* d,
     EXPECT_SAME("node_next.turn", x->turn, r->turn + 2u * (size_t)n, 8u);
   }
   assert_true(((uintptr_t)dv->node_next & 63u) == 0);
-  EXPECT_SAME("edge_mid", dv->edge_mid, r->edge_mid,
-              16u * (size_t)d->lower_edge_count);
+  for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+    const smgi_search_edge* x = &dv->search_edges[e];
+    const smgi_edge* E = &d->lower_edges[e];
+    EXPECT_SAME("search_edges.displacement", x->displacement,
+                E->displacement, sizeof x->displacement);
+    EXPECT_SAME("search_edges.arc_length", &x->arc_length, &E->arc_length, 4u);
+    EXPECT_SAME("search_edges.mid", x->mid, r->edge_mid + 4u * (size_t)e,
+                sizeof x->mid);
+    EXPECT_SAME("search_edges.to", &x->to, &E->to, 4u);
+    EXPECT_SAME("search_edges.frame_count", &x->frame_count, &E->frame_count,
+                4u);
+    EXPECT_SAME("search_edges.label", &x->label, &E->label, 4u);
+    EXPECT_SAME("search_edges.to_first_edge", &x->to_first_edge,
+                &d->lower_nodes[E->to].first_edge, 4u);
+    EXPECT_SAME("search_edges.to_edge_count", &x->to_edge_count,
+                &d->lower_nodes[E->to].edge_count, 4u);
+  }
+  {
+    /* start nodes: per style, the nodes with out-edges in node order */
+    uint32_t first_any = SMGI_NONE;
+    for (uint32_t st = 0; st < S; ++st) {
+      uint32_t k = dv->start_first[st];
+      for (uint32_t n = 0; n < LN; ++n) {
+        if (d->lower_nodes[n].edge_count == 0) continue;
+        if (first_any == SMGI_NONE) first_any = n;
+        if (d->lower_nodes[n].label != st) continue;
+        assert_true(k < dv->start_first[st + 1u]);
+        assert_int_equal(dv->start_nodes[k], n);
+        ++k;
+      }
+      assert_int_equal(k, dv->start_first[st + 1u]);
+    }
+    assert_int_equal(dv->start_first[0], 0);
+    assert_int_equal(dv->first_start, first_any);
+  }
   assert_int_equal(dv->agile_style, r->agile_style);
   EXPECT_SAME("style_can_stop", dv->style_can_stop, r->can_stop, (size_t)S);
   assert_int_equal(dv->stop_style, r->stop_style);
@@ -443,6 +486,9 @@ static void compare_builds(const char* name, const smgi_graph_data* d,
   const size_t LN = d->lower_node_count;
   EXPECT_SAME("node_next (SSE2 vs plain)", a->node_next, b->node_next,
               sizeof(smgi_node_next) * LN);
+  EXPECT_SAME("search_edges (SSE2 vs plain)", a->search_edges,
+              b->search_edges,
+              sizeof(smgi_search_edge) * (size_t)d->lower_edge_count);
 }
 
 /* A loaded graph: its own tables, and the plain-C build of the same data. */
