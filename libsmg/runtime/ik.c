@@ -492,11 +492,12 @@ void smgi_ground_probes(const smgi_ik* ik, const smgi_pose* pose,
  * up to 11 cm on the sparse graph's scribble, where the body turns away
  * from a foot that landed while the animation's toe still slid on by
  * 26 cm, hovering until the contact ended (that swing measured 1.6 times
- * the median). Now the toe rises at most as far as a toe still counts as
- * on the floor (SMGI_IK_CLEAR: the last centimetres of a push-off, as
- * before) and beyond that the anchor slides over the floor towards the
- * hip, at most SMGI_IK_SWING_SLOW leg lengths per second (faster reads as
- * a swing, not a stance). */
+ * the median). Now the toe, with what the animation lifts it, rises at
+ * most to SMGI_IK_CLEAR above where it was held (where a toe still counts
+ * as on the floor: the end of a push-off, as before), and beyond that the
+ * anchor slides over the floor towards the hip, at most
+ * SMGI_IK_SWING_SLOW leg lengths per second (faster reads as a swing, not
+ * a stance). */
 static void keep_in_reach(const smgi_ik* ik, smgi_foot* foot,
                           const smgi_pose* pose, const smg_graph* g,
                           uint32_t f, const float* ap, float y, float dt) {
@@ -519,9 +520,15 @@ static void keep_in_reach(const smgi_ik* ik, smgi_foot* foot,
   const float tz = foot->anchor[2] + an[2] - ap[2] - hp[2];
   const float h = sqrtf(tx * tx + tz * tz);
   /* out of reach, the ankle falls short along hip->target by d - reach
-   * and rises by that times |dy| / d */
+   * and rises by that times |dy| / d; the rise allowed is what is left of
+   * SMGI_IK_CLEAR above the held height once the animation's own lift of
+   * the toe is counted */
   const float d = sqrtf(h * h + dy * dy);
-  const float allow = SMGI_IK_CLEAR * g->data.info->leg_length * d / -dy;
+  float up = ap[1] - foot->anchor[1];
+  if (!(up > 0.0f)) up = 0.0f;
+  float rise = SMGI_IK_CLEAR * g->data.info->leg_length - up;
+  if (!(rise > 0.0f)) rise = 0.0f;
+  const float allow = rise * d / -dy;
   const float far = reach + allow;
   if (!(d > far)) return;
   float slide = h - sqrtf(far * far - dy * dy);

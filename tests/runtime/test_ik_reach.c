@@ -34,7 +34,7 @@
 /* metres: a toe within this of the lowest it stands is standing (issue
  * 24's measure of a swing) */
 #define BAND 0.025f
-/* metres a standing toe may be raised by IK: it lets a held toe rise by
+/* metres a standing toe may be raised by IK: it lets a held toe rise to
  * the roll it counts as on the floor (3 % of the leg, 2.6 cm here) and
  * slides it beyond that at most 1 leg length per second, which leaves up
  * to 4.5 cm on the synthetic loops and 2.3 cm on the CMU walks; holding
