@@ -14,7 +14,8 @@
  * toe's own travel), eased at both ends, so contact changes never pop. A
  * contact whose anchor drifted implausibly far (a re-plan moved the body)
  * is released rather than stretched, and planted anew only once that
- * correction is gone. Each solve starts from the foot's previous correction
+ * correction is gone; one the leg cannot reach slides towards the hip
+ * instead of lifting the foot (keep_in_reach). Each solve starts from the foot's previous correction
  * (see solve_leg), and IK refreshes the world transform cache of the joints
  * it moved itself.
  *
@@ -483,6 +484,61 @@ void smgi_ground_probes(const smgi_ik* ik, const smgi_pose* pose,
   }
 }
 
+/* Keep a held toe where its leg can reach it. The ankle target is the
+ * anchor plus the animated ankle-from-toe offset, at height y; the leg
+ * reaches as far as the animation stretches it, or SMGI_GROUND_REACH of
+ * its length. Held further out, the leg stretched along hip->target, its
+ * ankle stopped short and above the target, and the toe rose on the spot:
+ * up to 11 cm on the sparse graph's scribble, where the body turns away
+ * from a foot that landed while the animation's toe still slid on by
+ * 26 cm, hovering until the contact ended (that swing measured 1.6 times
+ * the median). Now the toe, with what the animation lifts it, rises at
+ * most to SMGI_IK_CLEAR above where it was held (where a toe still counts
+ * as on the floor: the end of a push-off, as before), and beyond that the
+ * anchor slides over the floor towards the hip, at most
+ * SMGI_IK_SWING_SLOW leg lengths per second (faster reads as a swing, not
+ * a stance). */
+static void keep_in_reach(const smgi_ik* ik, smgi_foot* foot,
+                          const smgi_pose* pose, const smg_graph* g,
+                          uint32_t f, const float* ap, float y, float dt) {
+  const uint32_t* list = ik->leg_joints + (size_t)f * g->data.joint_count;
+  const float* hp = pose->wpos + 3u * list[0];
+  const float* kn = pose->wpos + 3u * list[1];
+  const float* an = pose->wpos + 3u * list[2];
+  const float l1[3] = {kn[0] - hp[0], kn[1] - hp[1], kn[2] - hp[2]};
+  const float l2[3] = {an[0] - kn[0], an[1] - kn[1], an[2] - kn[2]};
+  const float v[3] = {an[0] - hp[0], an[1] - hp[1], an[2] - hp[2]};
+  float reach = SMGI_GROUND_REACH * (sqrtf(dot3(l1, l1)) + sqrtf(dot3(l2, l2)));
+  const float anim = sqrtf(dot3(v, v));
+  if (anim > reach) reach = anim;
+  const float dy = y - hp[1];
+  /* a target level with the hip or above it, or below its reach, is no
+   * stance */
+  if (!(dy < 0.0f) || dy * dy >= reach * reach) return;
+  /* the target's horizontal offset from the hip */
+  const float tx = foot->anchor[0] + an[0] - ap[0] - hp[0];
+  const float tz = foot->anchor[2] + an[2] - ap[2] - hp[2];
+  const float h = sqrtf(tx * tx + tz * tz);
+  /* out of reach, the ankle falls short along hip->target by d - reach
+   * and rises by that times |dy| / d; the rise allowed is what is left of
+   * SMGI_IK_CLEAR above the held height once the animation's own lift of
+   * the toe is counted */
+  const float d = sqrtf(h * h + dy * dy);
+  float up = ap[1] - foot->anchor[1];
+  if (!(up > 0.0f)) up = 0.0f;
+  float rise = SMGI_IK_CLEAR * g->data.info->leg_length - up;
+  if (!(rise > 0.0f)) rise = 0.0f;
+  const float allow = rise * d / -dy;
+  const float far = reach + allow;
+  if (!(d > far)) return;
+  float slide = h - sqrtf(far * far - dy * dy);
+  const float fastest = SMGI_IK_SWING_SLOW * g->data.info->leg_length * dt;
+  if (slide > fastest) slide = fastest;
+  const float k = slide / h;
+  foot->anchor[0] -= k * tx;
+  foot->anchor[2] -= k * tz;
+}
+
 void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
                    float dt) {
   float off[2] = {0.0f, 0.0f};
@@ -631,6 +687,7 @@ void smgi_ik_apply(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
        * at the animation's height (the data's feet are on the data's
        * floor; IK only stops them sliding) */
       const float* an = pose->wpos + 3u * ankle;
+      if (!foot->guided) keep_in_reach(ik, foot, pose, g, f, ap, an[1], dt);
       float target[3] = {foot->anchor[0] + an[0] - ap[0],
                          an[1] + (foot->guided ? foot->guide[2] : 0.0f),
                          foot->anchor[2] + an[2] - ap[2]};
