@@ -147,6 +147,23 @@ static inline int rt_pose_finite(const float* root, const float* rot,
   return 1;
 }
 
+/* The graph's joint count, checked to fit a test's arrays of `cap`. */
+static inline uint32_t rt_joint_count(const smg_graph* g, uint32_t cap) {
+  smg_graph_info info;
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
+  assert_true(info.joint_count <= cap);
+  return info.joint_count;
+}
+
+/* The toes of a graph with CMU joint names (the fixture, the synthetic
+ * default and the CMU graphs). */
+static inline void rt_toes(const smg_graph* g, uint32_t toe[2]) {
+  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
+  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+}
+
 /* The graph's skeleton as parent indices and rest offsets (J joints), for
  * tests that rebuild world transforms from a reported local pose. */
 static inline void rt_skeleton(const smg_graph* g, uint32_t J,

@@ -39,8 +39,7 @@ static void run(smg_graph* g, take* t, int superseded) {
   const uint32_t J = info.joint_count;
   assert_true(J <= MAXJ);
   uint32_t toe[2];
-  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
-  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  rt_toes(g, toe);
   smg_character* ch = NULL;
   smg_character_desc d;
   memset(&d, 0, sizeof d);

@@ -56,12 +56,7 @@ typedef struct stats {
 } stats;
 
 static void walk(smg_graph* g, int kind, int give_ground, const stats* flat, stats* st) {
-  smg_graph_info info;
-  memset(&info, 0, sizeof info);
-  info.struct_size = sizeof info;
-  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
-  const uint32_t J = info.joint_count;
-  assert_true(J <= MAXJ);
+  const uint32_t J = rt_joint_count(g, MAXJ);
   const char* names[2][4] = {{"LeftUpLeg", "LeftLeg", "LeftFoot", "LeftToeBase"},
                              {"RightUpLeg", "RightLeg", "RightFoot", "RightToeBase"}};
   uint32_t leg[2][4];

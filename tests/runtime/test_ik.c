@@ -34,8 +34,7 @@ static void test_cache_matches_fk(void** state) {
   float offset[MAXJ][3];
   rt_skeleton(g, J, parent, offset);
   uint32_t toe[2];
-  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
-  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  rt_toes(g, toe);
 
   smg_character* ch = NULL;
   assert_int_equal(smg_character_create(g, NULL, &ch), SMG_OK);

@@ -62,15 +62,9 @@ static uint32_t scribble(float* xz, float r, float ahead) {
 /* Largest height a toe with IK stands above the same toe without IK, over
  * the steps where the latter stands on the floor. */
 static float worst_lift(smg_graph* g, const float* xz, uint32_t n) {
-  smg_graph_info info;
-  memset(&info, 0, sizeof info);
-  info.struct_size = sizeof info;
-  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
-  const uint32_t J = info.joint_count;
-  assert_true(J <= MAXJ);
+  const uint32_t J = rt_joint_count(g, MAXJ);
   uint32_t toe[2], hips = 0;
-  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
-  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  rt_toes(g, toe);
   smg_character* ch[2] = {NULL, NULL};
   for (int c = 0; c < 2; ++c) {
     smg_character_desc d;

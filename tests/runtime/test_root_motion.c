@@ -188,8 +188,7 @@ static void test_mover_moves_a_standing_character(void** state) {
   assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
   assert_true(info.joint_count <= MAXJ);
   uint32_t toe[2];
-  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
-  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  rt_toes(g, toe);
   smg_character* ch = NULL;
   assert_int_equal(smg_character_create(g, NULL, &ch), SMG_OK);
   float xz[2 * 8];

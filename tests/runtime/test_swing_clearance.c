@@ -28,15 +28,9 @@ typedef struct run {
 } run;
 
 static void walk(smg_graph* g, float clearance, run* r) {
-  smg_graph_info info;
-  memset(&info, 0, sizeof info);
-  info.struct_size = sizeof info;
-  assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
-  const uint32_t J = info.joint_count;
-  assert_true(J <= MAXJ);
+  const uint32_t J = rt_joint_count(g, MAXJ);
   uint32_t toe[2];
-  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
-  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  rt_toes(g, toe);
   smg_character* ch[2] = {NULL, NULL};
   float xz[2 * 64];
   const uint32_t n = rt_turn_r(xz, 6.0f, 8.0f, 1, 2.0f);
@@ -225,8 +219,7 @@ static void test_setter(void** state) {
   smg_graph* g = rt_default_graph();
   assert_non_null(g);
   uint32_t toe[2];
-  assert_int_equal(smg_graph_find_joint(g, "LeftToeBase", &toe[0]), SMG_OK);
-  assert_int_equal(smg_graph_find_joint(g, "RightToeBase", &toe[1]), SMG_OK);
+  rt_toes(g, toe);
   /* 0: on, switched off at step 300; 1: created without; 2: on, given
    * bad values; 3: created on, the default */
   smg_character* ch[4];
