@@ -478,8 +478,10 @@ static void plan(const job* j, uint32_t budget, float step_frames) {
    * is longer: with half-frame steps, only a threshold that moves by a
    * whole frame meets both kinds of step. */
   const float span = step_frames > 1.0f ? step_frames : 1.0f;
-  const float horizon_frames =
-      plan_horizon(j) * j->in->fps + j->pl->phase * span;
+  const float horizon = plan_horizon(j);
+  const float horizon_frames = horizon * j->in->fps + j->pl->phase * span;
+  /* the steering follows the path, away from its end (plan_horizon) */
+  const int steered = horizon < j->pl->horizon;
   for (;;) {
     if (j->lower->count == 0 || j->lower->count >= SMGI_QUEUE_CAP) return;
     float ahead = smgi_frames_ahead(j->lower);
@@ -500,15 +502,26 @@ static void plan(const job* j, uint32_t budget, float step_frames) {
      * path: when the character is already off it (new path far away, or
      * unavoidable drift), no local choice fixes that and the greedy pick
      * steers back. */
-    if (c[0].err > j->pl->error_threshold &&
-        smgi_plan_start_error(j->in->path, W, s, seg) <= j->pl->error_threshold &&
-        backtrack(j, &budget))
-      continue;
+    const int missed = c[0].err > j->pl->error_threshold;
+    const int on_path =
+        !missed || smgi_plan_start_error(j->in->path, W, s, seg) <=
+                       j->pl->error_threshold;
+    if (missed && on_path && backtrack(j, &budget)) continue;
     push(j, W, s, &c[0], 0, n);
-    if (c[0].err <= j->pl->error_threshold) j->pl->backtracks = 0;
+    if (!missed) j->pl->backtracks = 0;
     /* commit a little more of the best sequence at once (what its next
      * rankings would most likely choose anyway): fewer searches per
-     * second of motion; each edge still faces the threshold */
+     * second of motion. Each edge still faces the threshold, which ends
+     * the commit where the next ranking could back up. Where none would
+     * - the first edge missed from a plan already off the path - while
+     * the steering follows away from the end, the first edge's error is
+     * the bar instead: an edge leaving the plan no further off than the
+     * one just taken anyway is committed too, rather than ranking again
+     * after each edge of a few frames (on the big graph a third of the
+     * rankings started so, its plan drifting off ahead of the steering;
+     * docs/runtime.md, Performance). */
+    const float bound =
+        steered && !on_path ? c[0].err : j->pl->error_threshold;
     if (seq_len > 1u && seq[0] == c[0].edge) {
       float frames = (float)j->in->graph->data.lower_edges[seq[0]].frame_count;
       float u = j->in->graph->data.lower_edges[seq[0]].arc_length;
@@ -518,7 +531,7 @@ static void plan(const job* j, uint32_t budget, float step_frames) {
         tail_state(j, &node, &W, &s, &seg);
         if (j->in->graph->data.lower_edges[seq[k]].from != node) break;
         make_cand(j, W, s, seg, u, seq[k], &x);
-        if (x.err > j->pl->error_threshold) break;
+        if (x.err > bound) break;
         push(j, W, s, &x, 0, 1);
         frames += (float)j->in->graph->data.lower_edges[seq[k]].frame_count;
         u += j->in->graph->data.lower_edges[seq[k]].arc_length;
