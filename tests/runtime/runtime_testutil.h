@@ -147,6 +147,16 @@ static inline int rt_pose_finite(const float* root, const float* rot,
   return 1;
 }
 
+/* A zeroed character descriptor (defaults) standing on the path's first
+ * point, facing its second. */
+static inline void rt_desc_on_path(smg_character_desc* d, const float* xz) {
+  memset(d, 0, sizeof *d);
+  d->struct_size = sizeof *d;
+  d->position[0] = xz[0];
+  d->position[2] = xz[1];
+  d->heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
+}
+
 /* The graph's joint count, checked to fit a test's arrays of `cap`. */
 static inline uint32_t rt_joint_count(const smg_graph* g, uint32_t cap) {
   smg_graph_info info;

@@ -84,12 +84,8 @@ static run_result run_path(smg_graph* g, uint32_t J, const float* xz,
   int measured = 0;
   memset(&r, 0, sizeof r);
   assert_non_null(rot);
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
+  rt_desc_on_path(&d, xz);
   d.flags = flags;
-  d.position[0] = xz[0];
-  d.position[2] = xz[1];
-  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
   assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
   assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
   assert_int_equal(smg_character_get_local_pose(ch, prev, rot, J), SMG_OK);
@@ -540,13 +536,9 @@ static int record_root(smg_graph* g, uint32_t J, const float* xz, uint32_t n,
   float* rot = (float*)malloc(sizeof(float) * 4 * J);
   uint32_t id;
   assert_non_null(rot);
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
+  rt_desc_on_path(&d, xz);
   d.initial_style = style;
   d.path_capacity = HELD_MAX_POINTS;
-  d.position[0] = xz[0];
-  d.position[2] = xz[1];
-  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
   assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
   assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
   if (to != 0xffffffffu)
@@ -722,12 +714,8 @@ static float facing_p95(smg_graph* g, uint32_t J, const float* xz,
   float root[3], fwd[3] = {0.0f, 0.0f, 0.0f};
   float* rot = (float*)malloc(sizeof(float) * 4 * J);
   assert_non_null(rot);
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
+  rt_desc_on_path(&d, xz);
   d.initial_style = style;
-  d.position[0] = xz[0];
-  d.position[2] = xz[1];
-  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
   assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
   assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
   for (int i = 0; i < FACE_STEPS; ++i) {

@@ -76,13 +76,9 @@ static void run(smg_graph* g, const float* xz, uint32_t n, uint32_t style,
   assert_int_equal(smg_graph_get_info(g, &info), SMG_OK);
   rot = (float*)malloc(sizeof(float) * 4 * info.joint_count);
   assert_non_null(rot);
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
+  rt_desc_on_path(&d, xz);
   d.initial_style = style;
   d.path_capacity = n;
-  d.position[0] = xz[0];
-  d.position[2] = xz[1];
-  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
   assert_int_equal(smg_character_create(g, &d, &ch), SMG_OK);
   assert_int_equal(smg_character_set_path(ch, xz, n), SMG_OK);
   if (transition_at >= 0.0f)

@@ -115,11 +115,7 @@ static void rec_open(smg_graph* g, const float* xz, uint32_t n, walk_rec* r) {
   assert_non_null(r->m);
   r->frames = 0;
   smg_character_desc d;
-  memset(&d, 0, sizeof d);
-  d.struct_size = sizeof d;
-  d.position[0] = xz[0];
-  d.position[2] = xz[1];
-  d.heading = atan2f(xz[2] - xz[0], xz[3] - xz[1]);
+  rt_desc_on_path(&d, xz);
   d.path_capacity = 64;
   r->ch = NULL;
   assert_int_equal(smg_character_create(g, &d, &r->ch), SMG_OK);
