@@ -203,12 +203,10 @@ static uint32_t rank_pass(const job* j, uint32_t node,
     cand* x = &c[k];
     uint32_t ei = n->first_edge + k;
     const smgi_edge* e = &g->data.lower_edges[ei];
-    float md;
     if (sc.budget > 0) sc.budget--;
-    smgi_seq_step(&sc, &root, cw, sw, ei, 1.0f, INFINITY, &first[k], &md);
+    smgi_seq_step(&sc, &root, cw, sw, ei, 1.0f, INFINITY, &first[k]);
     x->edge = ei;
     x->end = first[k].W;
-    (void)md;
     x->err = 0.0f; /* nothing to follow: never back up */
     x->pen = first[k].pen;
     /* progress: where the edge's end projects, kept within what it
