@@ -47,15 +47,18 @@
 #include "ik.h"
 
 #include "pose.h"
+#include "pose_simd.h"
 #include "rmath.h"
 #include "tuning.h"
 #include "simd.h"
 
-#ifndef IK_SSE /* -DIK_SSE=0 builds the plain C path */
-#define IK_SSE SMGI_SSE2
+/* -DIK_SSE=0 builds the plain C path; the SSE one uses pose_simd.h's
+ * quaternion kernels (bit for bit the plain math) */
+#ifndef IK_SSE
+#define IK_SSE SMGI_POSE_SSE
 #endif
-#if IK_SSE
-#include <xmmintrin.h>
+#if IK_SSE && !SMGI_POSE_SSE
+#error "IK_SSE needs the SSE kernels of pose_simd.h (SMGI_POSE_SSE)"
 #endif
 
 static const float k_identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -85,25 +88,22 @@ static inline int turn(const float* a, float a2, const float* b, float b2,
 }
 
 /* o = a * b: smgi_q_mul's operations in the same order (so the same
- * bits: negating a factor is exact, and x + (-y) is x - y), four lanes at
- * once where SSE exists; IK multiplies about a dozen per solve. */
+ * bits), four lanes at once where SSE exists; IK multiplies about a dozen
+ * per solve. */
 static inline void qmul(const float* a, const float* b, float* o) {
 #if IK_SSE
-  /* lane i of term k is a[k] times b permuted and signed for lane i */
-  const __m128 A = _mm_loadu_ps(a), B = _mm_loadu_ps(b);
-  const __m128 s0 = _mm_setr_ps(1.0f, -1.0f, 1.0f, -1.0f);
-  const __m128 s1 = _mm_setr_ps(1.0f, 1.0f, -1.0f, -1.0f);
-  const __m128 s2 = _mm_setr_ps(-1.0f, 1.0f, 1.0f, -1.0f);
-  __m128 b0 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3)), s0);
-  __m128 b1 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(1, 0, 3, 2)), s1);
-  __m128 b2 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(2, 3, 0, 1)), s2);
-  __m128 r = _mm_mul_ps(_mm_shuffle_ps(A, A, 0xff), B); /* a[3] */
-  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0x00), b0));
-  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0x55), b1));
-  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0xaa), b2));
-  _mm_storeu_ps(o, r);
+  _mm_storeu_ps(o, smgi_q_mul_sse(_mm_loadu_ps(a), _mm_loadu_ps(b)));
 #else
   smgi_q_mul(a, b, o);
+#endif
+}
+
+/* o = v rotated by q (smgi_q_rotate, the same bits) */
+static inline void qrot(const float* q, const float* v, float* o) {
+#if IK_SSE
+  smgi_store3_sse(o, smgi_q_rotate_sse(_mm_loadu_ps(q), smgi_load3_sse(v)));
+#else
+  smgi_q_rotate(q, v, o);
 #endif
 }
 
@@ -114,16 +114,59 @@ static void premul(const float* dq, float* q) {
   memcpy(q, o, sizeof o);
 }
 
+/* o = conj(a) * b */
+static inline void qmul_conj(const float* a, const float* b, float* o) {
+#if IK_SSE
+  const __m128 conj = _mm_setr_ps(-0.0f, -0.0f, -0.0f, 0.0f);
+  _mm_storeu_ps(o, smgi_q_mul_sse(_mm_xor_ps(_mm_loadu_ps(a), conj),
+                                  _mm_loadu_ps(b)));
+#else
+  float inv[4];
+  smgi_q_conj(a, inv);
+  smgi_q_mul(inv, b, o);
+#endif
+}
+
+#if IK_SSE
+/* ((m0 + m1) + m2) + m3: a sum of four lanes in the plain code's order */
+static inline float hsum4(__m128 m) {
+  __m128 t = _mm_add_ss(m, SMGI_SHUF(m, 1, 1, 1, 1));
+  t = _mm_add_ss(t, SMGI_SHUF(m, 2, 2, 2, 2));
+  return _mm_cvtss_f32(_mm_add_ss(t, SMGI_SHUF(m, 3, 3, 3, 3)));
+}
+#endif
+
+/* smgi_q_normalize, the same bits */
+static inline void qnorm(float* q) {
+#if IK_SSE
+  const __m128 v = _mm_loadu_ps(q);
+  const float n = hsum4(_mm_mul_ps(v, v));
+  if (n > 1e-20f && isfinite(n))
+    _mm_storeu_ps(q, _mm_mul_ps(v, _mm_set1_ps(1.0f / sqrtf(n))));
+  else
+    memcpy(q, k_identity, sizeof k_identity);
+#else
+  smgi_q_normalize(q);
+#endif
+}
+
 /* Local rotation `local` blended over the animation's in `rot` by w. At
  * full weight nlerp would only renormalize (the inputs are unit products);
  * keep its choice of sign, the animation's hemisphere. */
-static void blend_local(float* rot, const float* local, float w) {
+static inline void blend_local(float* rot, const float* local, float w) {
   if (w >= 1.0f) {
+#if IK_SSE
+    /* the sign flip as a sign-bit flip: -1 * x is -x */
+    const __m128 l = _mm_loadu_ps(local);
+    const float d = hsum4(_mm_mul_ps(_mm_loadu_ps(rot), l));
+    _mm_storeu_ps(rot, d < 0.0f ? _mm_xor_ps(l, _mm_set1_ps(-0.0f)) : l);
+#else
     float s = dot3(rot, local) + rot[3] * local[3] < 0.0f ? -1.0f : 1.0f;
     rot[0] = s * local[0];
     rot[1] = s * local[1];
     rot[2] = s * local[2];
     rot[3] = s * local[3];
+#endif
   } else {
     float out[4];
     smgi_q_nlerp(rot, local, w, out);
@@ -142,7 +185,7 @@ static inline void hip_turn(float* a, float* b, const float* t, float d2,
   if (turn(sum, s2, t, d2, dq, &lab)) {
     float k = s2 / lab; /* |sum| / |t| */
     float ra[3];
-    smgi_q_rotate(dq, a, ra);
+    qrot(dq, a, ra);
     memcpy(a, ra, sizeof ra);
     b[0] = t[0] * k - a[0];
     b[1] = t[1] * k - a[1];
@@ -176,8 +219,8 @@ static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
   float Th[4], Tk[4], a[3], b[3];
   memcpy(Th, fix[0], sizeof Th);
   memcpy(Tk, fix[1], sizeof Tk);
-  smgi_q_rotate(Th, a0, a);
-  smgi_q_rotate(Tk, b0, b);
+  qrot(Th, a0, a);
+  qrot(Tk, b0, b);
   /* Stop within SMGI_IK_TOLERANCE of the closest the ankle can get: 0 for a
    * reachable target, else how far it lies outside the leg's annulus.
    * A released foot blending out moves the pose's ankle by only about w
@@ -253,24 +296,21 @@ static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
     }
     hip_turn(a, b, t, d2, Th, Tk);
   }
-  smgi_q_normalize(Th);
-  smgi_q_normalize(Tk);
+  qnorm(Th);
+  qnorm(Tk);
   memcpy(fix[0], Th, sizeof Th);
   memcpy(fix[1], Tk, sizeof Tk);
   /* back to local rotations, blended with the animation by w; the ankle
    * keeps its animated world orientation */
-  float r0[4], r1[4], inv[4], local[4];
+  float r0[4], r1[4], local[4];
   float* wrot = pose->wrot;
   qmul(Th, wrot + 4u * hip, r0);
   qmul(Tk, wrot + 4u * knee, r1);
-  smgi_q_conj(wrot + 4u * hp, inv);
-  qmul(inv, r0, local);
+  qmul_conj(wrot + 4u * hp, r0, local);
   blend_local(pose->rot + 4u * hip, local, w);
-  smgi_q_conj(r0, inv);
-  qmul(inv, r1, local);
+  qmul_conj(r0, r1, local);
   blend_local(pose->rot + 4u * knee, local, w);
-  smgi_q_conj(r1, inv);
-  qmul(inv, wrot + 4u * ankle, local);
+  qmul_conj(r1, wrot + 4u * ankle, local);
   blend_local(pose->rot + 4u * ankle, local, w);
 
   /* keep the world transform cache true for every joint IK moved */
