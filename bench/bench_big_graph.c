@@ -243,8 +243,8 @@ static int check_paths(smg_graph* g, const eval_joints* j, uint32_t style,
 /* ---- the style change --------------------------------------------------- */
 
 /* A gait signature per frame, over a SIG_WINDOW window centred on it:
- * hips ground speed (m/s), mean hips height above the run's floor (the
- * lower toe's 5th percentile height), and the hips' bounce (spread of
+ * hips ground speed (m/s), mean hips height above the floor walked on
+ * (run_floor), and the hips' bounce (spread of
  * their height) and sway (spread of their sideways position, x on the
  * line) within the window (m). Performers differ in some of these and
  * not others; each is weighed in units of its spread in the calibration
@@ -274,9 +274,27 @@ static void signature(const run_geom* r, size_t i, double floor_y,
   out[SIG_SWAY] = sqrt(fmax(xx / n - (x / n) * (x / n), 0.0));
 }
 
+/* The floor under the measured stretch of the line: the lower toe's 5th
+ * percentile height over the frames from the first to the last whose
+ * hips lie SIG_MARGIN from both ends. Not over the whole run: a character
+ * stands at the end for as long as the run lasts after it arrives (a
+ * faster style for longer), and one standing pose whose toe is a
+ * centimetre lower then made the floor of that run alone - the hips of
+ * the walk it measures a centimetre higher, two of the styles' spreads
+ * in height, for reasons 10 m away from the change. */
 static double run_floor(const run_geom* r) {
-  double a = eval_feet_floor_level(r->toes, 6, r->frames);
-  double b = eval_feet_floor_level(r->toes + 3, 6, r->frames);
+  size_t first = r->frames, last = 0;
+  for (size_t i = 0; i < r->frames; ++i) {
+    const double arc = r->hips[3 * i + 2];
+    if (arc < SIG_MARGIN || arc > SWITCH_LENGTH - SIG_MARGIN) continue;
+    if (first == r->frames) first = i;
+    last = i;
+  }
+  if (first == r->frames) return NAN;
+  const double* toes = r->toes + 6 * first;
+  const size_t n = last - first + 1;
+  double a = eval_feet_floor_level(toes, 6, n);
+  double b = eval_feet_floor_level(toes + 3, 6, n);
   return a < b ? a : b;
 }
 
