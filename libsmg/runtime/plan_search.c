@@ -9,9 +9,9 @@
 #include <math.h>
 #include <string.h>
 
-/* The small helpers below run for every root sample: inlined even where
- * the compiler's size heuristics would make calls of them (which they
- * did as sample_cost grew). */
+/* The small helpers below run for every root sample or edge the search
+ * weighs: inlined even where the compiler's size heuristics would make
+ * calls of them (which they did as sample_cost grew). */
 #if defined(__GNUC__) || defined(__clang__)
 #define SAMPLE_INLINE static inline __attribute__((always_inline))
 #else
@@ -221,8 +221,8 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
 
 /* Style penalty of lower edge ei (labelled `label`) at arc lengths
  * [a, b] of the path. */
-static float seq_pen(const smgi_seq_ctx* c, uint32_t label, uint32_t ei,
-                     float a, float b) {
+SAMPLE_INLINE float seq_pen(const smgi_seq_ctx* c, uint32_t label,
+                            uint32_t ei, float a, float b) {
   if (!c->following)
     return c->yield ? 10.0f * lost_style_penalty(c->g, label, ei)
                     : 10.0f * style_penalty(c->g, label, ei, c->style0);
