@@ -52,7 +52,7 @@ static float view_ref(const smgi_steer_envelope* s, float u, float speed,
 static void test_plan_view_matches_envelope(void** state) {
   (void)state;
   static const float limits[] = {0.0f, 0.3f, 1.0f, 2.5f, 6.0f};
-  static const float slides[] = {0.0f, 0.1f, 0.35f, 0.7f, 1.0f};
+  static const float slides[] = {-0.5f, 0.0f, 0.1f, 0.35f, 0.7f, 1.0f, 1.6f};
   static const float us[] = {-1.0f, 0.0f, 0.01f, 0.5f, 1.7f, 4.0f};
   static const float speeds[] = {0.0f, 5e-4f, 0.3f, 1.4f, 3.9f, 8.0f};
   static const float ds[] = {0.0f, 0.02f, 0.3f, 2.0f};
