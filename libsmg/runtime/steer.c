@@ -450,9 +450,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
                          uint32_t seg, float full, float speed,
                          uint32_t* cut) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
-  float x, z;
-  uint32_t sg = seg;
-  smgi_path_eval(p, s, &sg, &x, &z, NULL);
+  uint32_t sg = smgi_path_segment(p, s, seg);
   /* how far on the slowest share is reached from the full speed: no
    * turn beyond that can ask for more slowing now */
   const float slowest = SMGI_STEER_RATE_MIN * (1.0f - st->slide_ratio);
@@ -461,8 +459,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
   *cut = 0;
   for (uint32_t i = 1u; i <= SMGI_STEER_AHEAD_SAMPLES; ++i) {
     const float d = (float)i * half;
-    uint32_t s1 = sg;
-    smgi_path_eval(p, s + d, &s1, &x, &z, NULL);
+    const uint32_t s1 = smgi_path_segment(p, s + d, sg);
     /* one heading per segment: the points mostly share one or two */
     float h1 = s1 == sg ? h0 : segment_heading(st, p, s1);
     float k = smgi_wrap_angle(h1 - h0) / half;
