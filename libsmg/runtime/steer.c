@@ -77,7 +77,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->stride = 1.0f;
   s->cutting = 0;
   s->drift_turn = s->drift_move = 0.0f;
-  s->heading_seg = SMGI_NONE;
+  s->heading_seg[0] = s->heading_seg[1] = SMGI_NONE;
   s->data_stop = 0;
 }
 
@@ -94,7 +94,7 @@ void smgi_steer_path_changed(smgi_steer* s) {
   if (s->mode == SMGI_STEER_REST && s->rate < SMGI_STEER_BRAKE_FLOOR)
     s->rate = SMGI_STEER_BRAKE_FLOOR;
   s->mode = SMGI_STEER_FOLLOW;
-  s->heading_seg = SMGI_NONE;
+  s->heading_seg[0] = s->heading_seg[1] = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
   s->data_stop = 0;
 }
@@ -398,14 +398,21 @@ static float brake_stride(const smgi_steer* s, const smgi_lower* lower,
   return smgi_clampf(wanted / motion, stride_floor(s, in, lower->style), 1.0f);
 }
 
-/* The heading of path segment seg, remembered for the next call. */
+/* The heading of path segment seg, remembered for the next calls: the
+ * look-ahead asks for the segment at the character and, near its end,
+ * the next one, every step (one remembered heading was recomputed
+ * twice a step there). */
 static float segment_heading(smgi_steer* st, const smgi_path* p,
                              uint32_t seg) {
-  if (seg != st->heading_seg) {
-    st->heading = smgi_path_heading(p, seg);
-    st->heading_seg = seg;
-  }
-  return st->heading;
+  if (seg == st->heading_seg[0]) return st->heading[0];
+  const uint32_t other = st->heading_seg[0];
+  const float other_h = st->heading[0];
+  st->heading[0] = seg == st->heading_seg[1] ? st->heading[1]
+                                             : smgi_path_heading(p, seg);
+  st->heading_seg[0] = seg;
+  st->heading_seg[1] = other;
+  st->heading[1] = other_h;
+  return st->heading[0];
 }
 
 /* The share of the motion's full speed `full` (m/s) at which the steering
