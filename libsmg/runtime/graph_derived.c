@@ -95,18 +95,136 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
   }
 }
 
-/* edge_hops (graph_derived.h): per style, each lower edge's from and to
- * hop counts of lower_hops, edge by edge. */
-static void build_edge_hops(const smgi_graph_data* d, const uint8_t* hops,
-                            uint8_t* edge_hops) {
-  const size_t S = d->style_count, E = d->lower_edge_count;
-  for (size_t st = 0; st < S; ++st) {
-    uint8_t* o = edge_hops + 2u * E * st;
-    for (size_t e = 0; e < E; ++e) {
-      o[2u * e] = hops[S * d->lower_edges[e].from + st];
-      o[2u * e + 1u] = hops[S * d->lower_edges[e].to + st];
+/* edge_style_time's value for `frames` of motion at `fps`: in steps of
+ * 1 / SMGI_STYLE_TIME_HZ s, rounded to nearest, capped at
+ * SMGI_STYLE_TIME_FAR. */
+static uint8_t style_time_steps(uint32_t frames, double fps) {
+  const double q =
+      floor((double)frames * (SMGI_STYLE_TIME_HZ / fps) + 0.5);
+  return (uint8_t)(q < (double)SMGI_STYLE_TIME_FAR ? q
+                                                    : (double)SMGI_STYLE_TIME_FAR);
+}
+
+/* Binary min-heap of nodes keyed by dist[], with pos[n] the node's place
+ * in it (SMGI_NONE: not in it). */
+static void heap_up(uint32_t* heap, uint32_t* pos, const uint32_t* dist,
+                    uint32_t i) {
+  const uint32_t n = heap[i];
+  while (i > 0u) {
+    const uint32_t p = (i - 1u) / 2u;
+    if (dist[heap[p]] <= dist[n]) break;
+    heap[i] = heap[p];
+    pos[heap[i]] = i;
+    i = p;
+  }
+  heap[i] = n;
+  pos[n] = i;
+}
+
+static uint32_t heap_pop(uint32_t* heap, uint32_t* pos, const uint32_t* dist,
+                         uint32_t* count) {
+  const uint32_t top = heap[0], n = heap[--*count];
+  uint32_t i = 0;
+  pos[top] = SMGI_NONE;
+  if (*count == 0u) return top;
+  for (;;) {
+    uint32_t c = 2u * i + 1u;
+    if (c >= *count) break;
+    if (c + 1u < *count && dist[heap[c + 1u]] < dist[heap[c]]) ++c;
+    if (dist[heap[c]] >= dist[n]) break;
+    heap[i] = heap[c];
+    pos[heap[i]] = i;
+    i = c;
+  }
+  heap[i] = n;
+  pos[n] = i;
+  return top;
+}
+
+/* edge_style_time (graph_derived.h): per style a Dijkstra over reversed
+ * lower edges, weighted by their frame counts, from every node with an
+ * out-edge of the style; it stops where the distance reaches the table's
+ * cap. `in_first` / `in_edge` is the reverse adjacency by edge index
+ * (build_reverse_edges), `dist`, `heap` and `pos` node_count scratch
+ * each; `hops` (lower_hops) tells "far" from "unreachable". Returns the
+ * hop equivalent of one step (style_time_hop, graph_derived.h). */
+static float build_edge_style_time(const smgi_graph_data* d,
+                                   const uint8_t* hops,
+                                   const uint32_t* in_first,
+                                   const uint32_t* in_edge, uint32_t* dist,
+                                   uint32_t* heap, uint32_t* pos,
+                                   uint8_t* out) {
+  const uint32_t N = d->lower_node_count, S = d->style_count;
+  const uint32_t E = d->lower_edge_count;
+  const smgi_edge* edges = d->lower_edges;
+  const double fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0;
+  uint64_t sum_hops = 0, sum_steps = 0;
+  for (uint32_t st = 0; st < S; ++st) {
+    uint32_t count = 0;
+    for (uint32_t n = 0; n < N; ++n) {
+      dist[n] = UINT32_MAX;
+      pos[n] = SMGI_NONE;
+    }
+    for (uint32_t n = 0; n < N; ++n) {
+      if (hops[(size_t)n * S + st] != 0u) continue;
+      dist[n] = 0;
+      heap[count] = n;
+      pos[n] = count++;
+    }
+    while (count > 0u) {
+      const uint32_t n = heap_pop(heap, pos, dist, &count);
+      if (style_time_steps(dist[n], fps) >= SMGI_STYLE_TIME_FAR) break;
+      for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
+        const smgi_edge* e = &edges[in_edge[k]];
+        const uint32_t nd = dist[n] + e->frame_count;
+        if (nd >= dist[e->from]) continue;
+        dist[e->from] = nd;
+        if (pos[e->from] == SMGI_NONE) {
+          heap[count] = e->from;
+          pos[e->from] = count++;
+        }
+        heap_up(heap, pos, dist, pos[e->from]);
+      }
+    }
+    /* nodes a step or more away and within the cap: what one step is
+     * worth in hops, on average */
+    for (uint32_t n = 0; n < N; ++n) {
+      const uint8_t h = hops[(size_t)n * S + st];
+      const uint8_t t = style_time_steps(dist[n], fps);
+      if (h != SMGI_HOPS_UNREACHABLE && t > 0u && t < SMGI_STYLE_TIME_FAR) {
+        sum_hops += h;
+        sum_steps += t;
+      }
+    }
+    uint8_t* o = out + 2u * (size_t)E * st;
+    for (uint32_t e = 0; e < E; ++e) {
+      const uint32_t ends[2] = {edges[e].from, edges[e].to};
+      for (uint32_t k = 0; k < 2u; ++k) {
+        const uint32_t n = ends[k];
+        o[2u * (size_t)e + k] =
+            hops[(size_t)n * S + st] == SMGI_HOPS_UNREACHABLE
+                ? (uint8_t)SMGI_HOPS_UNREACHABLE
+                : style_time_steps(dist[n], fps);
+      }
     }
   }
+  return sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps)
+                        : 1.0f;
+}
+
+/* The lower graph's reverse adjacency by edge: the edges into n are
+ * in_edge[in_first[n] .. in_first[n + 1]) (in_first node_count + 1
+ * entries, in_edge edge_count). */
+static void build_reverse_edges(const smgi_edge* edges, uint32_t edge_count,
+                                uint32_t node_count, uint32_t* in_first,
+                                uint32_t* in_edge) {
+  memset(in_first, 0, sizeof(uint32_t) * ((size_t)node_count + 1u));
+  for (uint32_t e = 0; e < edge_count; ++e) in_first[edges[e].to + 1u]++;
+  for (uint32_t n = 0; n < node_count; ++n) in_first[n + 1u] += in_first[n];
+  for (uint32_t e = 0; e < edge_count; ++e)
+    in_edge[in_first[edges[e].to]++] = e; /* cursor, restored below */
+  for (uint32_t n = node_count; n > 0; --n) in_first[n] = in_first[n - 1u];
+  in_first[0] = 0;
 }
 
 /* Reverse adjacency of one graph into caller scratch: the nodes with an
@@ -903,8 +1021,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   /* node_next first: 64-byte aligned records at the tables' start */
   size_t off_nx = 0;
   size_t off_lh = off_nx + sizeof(smgi_node_next) * (size_t)LN;
-  size_t off_eh = off_lh + align16((size_t)LN * S);
-  size_t off_uh = off_eh + align16((size_t)d->lower_edge_count * 2u * S);
+  size_t off_et = off_lh + align16((size_t)LN * S);
+  size_t off_uh = off_et + align16((size_t)d->lower_edge_count * 2u * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
   size_t off_se = off_af + align16(sizeof(uint32_t) * (size_t)A);
@@ -925,6 +1043,10 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t walk_size = sizeof(walk_step) * (size_t)LN;
   size_t turn_size = turn_scratch_size(d);
   if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
+  /* edge_style_time: reverse adjacency by edge, dist, heap, pos */
+  size_t time_size = sizeof(uint32_t) *
+                     (4u * (size_t)LN + 1u + (size_t)d->lower_edge_count);
+  if (time_size > scratch_size) scratch_size = time_size;
   if (walk_size > scratch_size) scratch_size = walk_size;
   if (turn_size > scratch_size) scratch_size = turn_size;
 
@@ -944,7 +1066,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint8_t* base =
       mem + block + ((64u - ((uintptr_t)(mem + block) & 63u)) & 63u);
   uint8_t* lower_hops = base + off_lh;
-  uint8_t* edge_hops = base + off_eh;
+  uint8_t* edge_style_time = base + off_et;
   uint8_t* upper_hops = base + off_uh;
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
   uint32_t* action_first = (uint32_t*)(base + off_af);
@@ -967,7 +1089,15 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_from);
   compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_from,
                queue, col, lower_hops);
-  build_edge_hops(d, lower_hops, edge_hops);
+  {
+    uint32_t* in_edge = in_first + LN + 1u;
+    uint32_t* dist = in_edge + d->lower_edge_count;
+    build_reverse_edges(d->lower_edges, d->lower_edge_count, LN, in_first,
+                        in_edge);
+    dv->style_time_hop = build_edge_style_time(
+        d, lower_hops, in_first, in_edge, dist, dist + LN,
+        dist + 2u * (size_t)LN, edge_style_time);
+  }
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,
                queue, col, upper_hops);
@@ -998,7 +1128,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   dv->node_next = nx;
 
   dv->lower_hops = lower_hops;
-  dv->edge_hops = edge_hops;
+  dv->edge_style_time = edge_style_time;
   dv->upper_hops = upper_hops;
   dv->splice_first = splice_first;
   dv->action_first_edge = action_first;
