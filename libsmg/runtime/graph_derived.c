@@ -99,130 +99,122 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
  * 1 / SMGI_STYLE_TIME_HZ s, rounded to nearest, capped at
  * SMGI_STYLE_TIME_FAR. */
 static uint8_t style_time_steps(uint32_t frames, double fps) {
-  const double q =
-      floor((double)frames * (SMGI_STYLE_TIME_HZ / fps) + 0.5);
-  return (uint8_t)(q < (double)SMGI_STYLE_TIME_FAR ? q
-                                                    : (double)SMGI_STYLE_TIME_FAR);
+  const double q = floor((double)frames * (SMGI_STYLE_TIME_HZ / fps) + 0.5);
+  return q < (double)SMGI_STYLE_TIME_FAR ? (uint8_t)q
+                                         : (uint8_t)SMGI_STYLE_TIME_FAR;
 }
 
-/* Binary min-heap of nodes keyed by dist[], with pos[n] the node's place
- * in it (SMGI_NONE: not in it). */
-static void heap_up(uint32_t* heap, uint32_t* pos, const uint32_t* dist,
-                    uint32_t i) {
-  const uint32_t n = heap[i];
-  while (i > 0u) {
-    const uint32_t p = (i - 1u) / 2u;
-    if (dist[heap[p]] <= dist[n]) break;
-    heap[i] = heap[p];
-    pos[heap[i]] = i;
-    i = p;
-  }
-  heap[i] = n;
-  pos[n] = i;
-}
-
-static uint32_t heap_pop(uint32_t* heap, uint32_t* pos, const uint32_t* dist,
-                         uint32_t* count) {
-  const uint32_t top = heap[0], n = heap[--*count];
-  uint32_t i = 0;
-  pos[top] = SMGI_NONE;
-  if (*count == 0u) return top;
-  for (;;) {
-    uint32_t c = 2u * i + 1u;
-    if (c >= *count) break;
-    if (c + 1u < *count && dist[heap[c + 1u]] < dist[heap[c]]) ++c;
-    if (dist[heap[c]] >= dist[n]) break;
-    heap[i] = heap[c];
-    pos[heap[i]] = i;
-    i = c;
-  }
-  heap[i] = n;
-  pos[n] = i;
-  return top;
+/* The fewest frames of motion that edge_style_time holds as
+ * SMGI_STYLE_TIME_FAR: the searches below stop there. */
+static uint32_t style_time_limit(double fps) {
+  uint32_t f = 0;
+  while (style_time_steps(f, fps) < SMGI_STYLE_TIME_FAR) ++f;
+  return f;
 }
 
 /* edge_style_time (graph_derived.h): per style a Dijkstra over reversed
  * lower edges, weighted by their frame counts, from every node with an
- * out-edge of the style; it stops where the distance reaches the table's
- * cap. `in_first` / `in_edge` is the reverse adjacency by edge index
- * (build_reverse_edges), `dist`, `heap` and `pos` node_count scratch
- * each; `hops` (lower_hops) tells "far" from "unreachable". Returns the
- * hop equivalent of one step (style_time_hop, graph_derived.h). */
+ * out-edge of the style, up to `limit` frames (style_time_limit). The
+ * distances are whole frames below `limit`, so the queue is a bucket per
+ * frame (Dial's algorithm): node n waits in a doubly linked list
+ * (next[n], prev[n]) from head[dist[n]], and a shorter distance moves it
+ * (a binary heap took twice as long here on a big graph). `in_first` /
+ * `in_from` / `in_frames` is the reverse adjacency (build_reverse_frames),
+ * `dist`, `next` and `prev` node_count scratch each, `head` `limit` and
+ * `steps_of` `limit` bytes (each distance's value, computed once); `hops`
+ * (lower_hops) tells "far" from "unreachable". Returns the hop equivalent
+ * of one step (style_time_hop, graph_derived.h). */
 static float build_edge_style_time(const smgi_graph_data* d,
-                                   const uint8_t* hops,
+                                   const uint8_t* hops, uint32_t limit,
                                    const uint32_t* in_first,
-                                   const uint32_t* in_edge, uint32_t* dist,
-                                   uint32_t* heap, uint32_t* pos,
+                                   const uint32_t* in_from,
+                                   const uint32_t* in_frames, uint32_t* dist,
+                                   uint32_t* next, uint32_t* prev,
+                                   uint32_t* head, uint8_t* steps_of,
                                    uint8_t* out) {
   const uint32_t N = d->lower_node_count, S = d->style_count;
   const uint32_t E = d->lower_edge_count;
   const smgi_edge* edges = d->lower_edges;
   const double fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0;
   uint64_t sum_hops = 0, sum_steps = 0;
+  for (uint32_t f = 0; f < limit; ++f) steps_of[f] = style_time_steps(f, fps);
   for (uint32_t st = 0; st < S; ++st) {
-    uint32_t count = 0;
+    for (uint32_t f = 0; f < limit; ++f) head[f] = SMGI_NONE;
     for (uint32_t n = 0; n < N; ++n) {
       dist[n] = UINT32_MAX;
-      pos[n] = SMGI_NONE;
-    }
-    for (uint32_t n = 0; n < N; ++n) {
       if (hops[(size_t)n * S + st] != 0u) continue;
       dist[n] = 0;
-      heap[count] = n;
-      pos[n] = count++;
+      prev[n] = SMGI_NONE;
+      next[n] = head[0];
+      if (head[0] != SMGI_NONE) prev[head[0]] = n;
+      head[0] = n;
     }
-    while (count > 0u) {
-      const uint32_t n = heap_pop(heap, pos, dist, &count);
-      if (style_time_steps(dist[n], fps) >= SMGI_STYLE_TIME_FAR) break;
-      for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
-        const smgi_edge* e = &edges[in_edge[k]];
-        const uint32_t nd = dist[n] + e->frame_count;
-        if (nd >= dist[e->from]) continue;
-        dist[e->from] = nd;
-        if (pos[e->from] == SMGI_NONE) {
-          heap[count] = e->from;
-          pos[e->from] = count++;
+    for (uint32_t f = 0; f < limit; ++f) {
+      while (head[f] != SMGI_NONE) {
+        const uint32_t n = head[f];
+        head[f] = next[n];
+        if (next[n] != SMGI_NONE) prev[next[n]] = SMGI_NONE;
+        for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
+          const uint32_t from = in_from[k], w = in_frames[k];
+          if (w >= limit - f || f + w >= dist[from]) continue;
+          if (dist[from] != UINT32_MAX) { /* waiting: out of its bucket */
+            const uint32_t p = prev[from], x = next[from];
+            if (p != SMGI_NONE)
+              next[p] = x;
+            else
+              head[dist[from]] = x;
+            if (x != SMGI_NONE) prev[x] = p;
+          }
+          dist[from] = f + w;
+          prev[from] = SMGI_NONE;
+          next[from] = head[f + w];
+          if (head[f + w] != SMGI_NONE) prev[head[f + w]] = from;
+          head[f + w] = from;
         }
-        heap_up(heap, pos, dist, pos[e->from]);
       }
     }
-    /* nodes a step or more away and within the cap: what one step is
-     * worth in hops, on average */
+    /* each node's value once (in the links' place, free now), then the
+     * edges' pairs from it; nodes a step or more away and within the cap
+     * tell what one step is worth in hops, on average */
+    uint8_t* col = (uint8_t*)next;
     for (uint32_t n = 0; n < N; ++n) {
       const uint8_t h = hops[(size_t)n * S + st];
-      const uint8_t t = style_time_steps(dist[n], fps);
-      if (h != SMGI_HOPS_UNREACHABLE && t > 0u && t < SMGI_STYLE_TIME_FAR) {
+      uint8_t t = SMGI_HOPS_UNREACHABLE;
+      if (h != SMGI_HOPS_UNREACHABLE)
+        t = dist[n] < limit ? steps_of[dist[n]] : SMGI_STYLE_TIME_FAR;
+      col[n] = t;
+      if (t > 0u && t < SMGI_STYLE_TIME_FAR) {
         sum_hops += h;
         sum_steps += t;
       }
     }
     uint8_t* o = out + 2u * (size_t)E * st;
     for (uint32_t e = 0; e < E; ++e) {
-      const uint32_t ends[2] = {edges[e].from, edges[e].to};
-      for (uint32_t k = 0; k < 2u; ++k) {
-        const uint32_t n = ends[k];
-        o[2u * (size_t)e + k] =
-            hops[(size_t)n * S + st] == SMGI_HOPS_UNREACHABLE
-                ? (uint8_t)SMGI_HOPS_UNREACHABLE
-                : style_time_steps(dist[n], fps);
-      }
+      o[2u * (size_t)e] = col[edges[e].from];
+      o[2u * (size_t)e + 1u] = col[edges[e].to];
     }
   }
   return sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps)
                         : 1.0f;
 }
 
-/* The lower graph's reverse adjacency by edge: the edges into n are
- * in_edge[in_first[n] .. in_first[n + 1]) (in_first node_count + 1
- * entries, in_edge edge_count). */
-static void build_reverse_edges(const smgi_edge* edges, uint32_t edge_count,
-                                uint32_t node_count, uint32_t* in_first,
-                                uint32_t* in_edge) {
+/* The lower graph's reverse adjacency with each edge's frame count: the
+ * edges into n come from in_from[k] and last in_frames[k] frames, k in
+ * [in_first[n], in_first[n + 1]) (in_first node_count + 1 entries, the
+ * others edge_count). Side by side, so that the searches below read them
+ * in order: an edge record per relaxation was a cache miss of its own on
+ * a big graph (76k edges of 48 bytes, read once per style). */
+static void build_reverse_frames(const smgi_edge* edges, uint32_t edge_count,
+                                 uint32_t node_count, uint32_t* in_first,
+                                 uint32_t* in_from, uint32_t* in_frames) {
   memset(in_first, 0, sizeof(uint32_t) * ((size_t)node_count + 1u));
   for (uint32_t e = 0; e < edge_count; ++e) in_first[edges[e].to + 1u]++;
   for (uint32_t n = 0; n < node_count; ++n) in_first[n + 1u] += in_first[n];
-  for (uint32_t e = 0; e < edge_count; ++e)
-    in_edge[in_first[edges[e].to]++] = e; /* cursor, restored below */
+  for (uint32_t e = 0; e < edge_count; ++e) {
+    const uint32_t k = in_first[edges[e].to]++; /* cursor, restored below */
+    in_from[k] = edges[e].from;
+    in_frames[k] = edges[e].frame_count;
+  }
   for (uint32_t n = node_count; n > 0; --n) in_first[n] = in_first[n - 1u];
   in_first[0] = 0;
 }
@@ -1043,9 +1035,14 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t walk_size = sizeof(walk_step) * (size_t)LN;
   size_t turn_size = turn_scratch_size(d);
   if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
-  /* edge_style_time: reverse adjacency by edge, dist, heap, pos */
-  size_t time_size = sizeof(uint32_t) *
-                     (4u * (size_t)LN + 1u + (size_t)d->lower_edge_count);
+  /* edge_style_time: reverse adjacency with frame counts, dist, the
+   * buckets' links and heads, each distance's value */
+  const uint32_t time_limit = style_time_limit(
+      d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0);
+  size_t time_size =
+      sizeof(uint32_t) * (4u * (size_t)LN + 1u +
+                          2u * (size_t)d->lower_edge_count + time_limit) +
+      time_limit;
   if (time_size > scratch_size) scratch_size = time_size;
   if (walk_size > scratch_size) scratch_size = walk_size;
   if (turn_size > scratch_size) scratch_size = turn_size;
@@ -1090,13 +1087,15 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_from,
                queue, col, lower_hops);
   {
-    uint32_t* in_edge = in_first + LN + 1u;
-    uint32_t* dist = in_edge + d->lower_edge_count;
-    build_reverse_edges(d->lower_edges, d->lower_edge_count, LN, in_first,
-                        in_edge);
+    uint32_t* rev_from = in_first + LN + 1u;
+    uint32_t* rev_frames = rev_from + d->lower_edge_count;
+    uint32_t* dist = rev_frames + d->lower_edge_count;
+    build_reverse_frames(d->lower_edges, d->lower_edge_count, LN, in_first,
+                         rev_from, rev_frames);
     dv->style_time_hop = build_edge_style_time(
-        d, lower_hops, in_first, in_edge, dist, dist + LN,
-        dist + 2u * (size_t)LN, edge_style_time);
+        d, lower_hops, time_limit, in_first, rev_from, rev_frames, dist,
+        dist + LN, dist + 2u * (size_t)LN, dist + 3u * (size_t)LN,
+        (uint8_t*)(dist + 3u * (size_t)LN + time_limit), edge_style_time);
   }
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,
