@@ -116,21 +116,27 @@ static void end_target(const smgi_step_in* in, float* x, float* z) {
   }
 }
 
+/* Penalty of an edge from which the wanted style cannot be reached. */
+#define SMGI_STYLE_OUT_OF_REACH (4.0f * SMGI_STYLE_WEIGHT)
+
 /* Style penalty of lower edge ei, labelled `label`, when `desired` is
- * wanted. */
+ * wanted: one style weight for being out of style, and one more per hop's
+ * worth of motion from the edge's end until the wanted style can be taken
+ * (edge_style_time, style_time_hop: graph_derived.h). */
 static float style_penalty(const smg_graph* g, uint32_t label, uint32_t ei,
                            uint32_t desired) {
   uint32_t S = g->data.style_count;
   if (desired >= S || label == desired) return 0.0f;
-  /* the hop counts of the edge's from and to nodes, side by side */
-  const uint8_t* hops =
-      smgi_derived_of(g)->edge_hops +
+  /* the edge's from and to nodes' times, side by side */
+  const uint8_t* t =
+      smgi_derived_of(g)->edge_style_time +
       2u * ((size_t)desired * g->data.lower_edge_count + ei);
-  if (hops[0] == SMGI_HOPS_UNREACHABLE)
+  if (t[0] == SMGI_HOPS_UNREACHABLE)
     return 0.0f; /* cannot get there from here: ignore */
-  uint8_t h = hops[1];
-  if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
-  return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
+  uint8_t h = t[1];
+  if (h == SMGI_HOPS_UNREACHABLE) return SMGI_STYLE_OUT_OF_REACH;
+  return SMGI_STYLE_WEIGHT *
+         (1.0f + (float)h * smgi_derived_of(g)->style_time_hop);
 }
 
 /* Distance of a planned ground position from the path point at s. */
@@ -220,19 +226,36 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
 }
 
 /* Style penalty of lower edge ei (labelled `label`) at arc lengths
- * [a, b] of the path. */
-SAMPLE_INLINE float seq_pen(const smgi_seq_ctx* c, uint32_t label,
-                            uint32_t ei, float a, float b) {
-  if (!c->following)
-    return c->yield ? 10.0f * lost_style_penalty(c->g, label, ei)
-                    : 10.0f * style_penalty(c->g, label, ei, c->style0);
-  if (c->lost || c->yield) return lost_style_penalty(c->g, label, ei);
+ * [a, b] of the path, while following it. */
+static inline float follow_pen(const smgi_seq_ctx* c, uint32_t label,
+                               uint32_t ei, float a, float b) {
   /* s0 <= a <= b: before the next constraint the wanted style is the one
    * at s0 (what edge_style_penalty would find with two scans) */
   if (b < c->style_end)
     return label == c->style0 ? 0.0f
                               : style_penalty(c->g, label, ei, c->style0);
   return edge_style_penalty(c, label, ei, a, b);
+}
+
+SAMPLE_INLINE float seq_pen(const smgi_seq_ctx* c, uint32_t label,
+                            uint32_t ei, float a, float b) {
+  if (!c->following)
+    return c->yield ? 10.0f * lost_style_penalty(c->g, label, ei)
+                    : 10.0f * style_penalty(c->g, label, ei, c->style0);
+  if (c->lost || c->yield) return lost_style_penalty(c->g, label, ei);
+  float p = follow_pen(c, label, ei, a, b);
+  /* While the style changes (the motion playing is not what is wanted
+   * everywhere ahead), a third style - neither the one playing nor one
+   * wanted - is a detour nobody asked for: it costs what a wanted style
+   * out of reach costs on top of its distance, so the search takes one
+   * only where staying in the old style until a transition to the new is
+   * more than that (four hops' worth of motion) longer. By distance alone
+   * a run, near every walk, was the cheaper way from one walk to another
+   * and the character ran through the point where it was to change. */
+  if (p > 0.0f && label != c->style_now && label != c->style_next &&
+      (c->style_now != c->style_next || c->style_now != c->style0))
+    p += SMGI_STYLE_OUT_OF_REACH;
+  return p;
 }
 
 /* One root sample of smgi_seq_step, `du` metres along the edge, standing
@@ -489,8 +512,8 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
 }
 
 void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
-                   const smgi_steer_envelope* steer, smgi_xform2 W, float s,
-                   uint32_t seg) {
+                   const smgi_steer_envelope* steer, uint32_t node,
+                   smgi_xform2 W, float s, uint32_t seg) {
   c->g = in->graph;
   c->track = in->path;
   c->cons = in->cons;
@@ -506,6 +529,8 @@ void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
   end_target(in, &c->tx, &c->tz);
   c->style0 = smgi_style_at(in->cons, s);
   c->style_end = smgi_next_constraint_arc(in->cons, s);
+  c->style_next = smgi_style_at(in->cons, c->style_end);
+  c->style_now = in->graph->data.lower_nodes[node].label;
   c->budget = smgi_seq_budget(steer);
 }
 

@@ -150,7 +150,7 @@ static void check_bounds_from(smgi_seq_ctx* c, const smgi_seq_state* st,
 static void check_search(stage_rig* r, uint32_t node, smgi_xform2 W, float s,
                          uint32_t* pruned, uint32_t* kept) {
   smgi_seq_ctx c;
-  smgi_seq_init(&c, &r->in, &r->steer, W, s, 0u);
+  smgi_seq_init(&c, &r->in, &r->steer, node, W, s, 0u);
   const smgi_node* n = &r->g->data.lower_nodes[node];
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, 0u, 0.0f,
                          n->first_edge, n->edge_count};
