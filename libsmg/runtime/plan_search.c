@@ -405,6 +405,19 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
   for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES && st.f < c->T; ++k) {
     float fk = tf[k];
     if (fk <= pf) break; /* the continuation ended */
+    /* the sample's style penalty first (as in smgi_seq_step): once it
+     * alone reaches the bound, the sample's cost cannot save the leaf */
+    if (te[k] != SMGI_NONE) {
+      const uint32_t label = tl[k] != SMGI_TRAIL_LABEL_WIDE
+                                 ? tl[k]
+                                 : g->data.lower_edges[te[k]].label;
+      float pe = 0.5f * seq_pen(c, label, te[k], c->s0 + u0 + pu,
+                                c->s0 + u0 + tr[4u * k + 3u]);
+      if (pe > st.pen) {
+        st.pen = pe;
+        if (st.cost + st.pen >= bound) return INFINITY;
+      }
+    }
     float room = c->T - f0;
     float w = (fk < room ? fk : room) - pf;
     if (!placed) {
@@ -421,14 +434,6 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     st.cost += sc * w / c->T;
     st.beyond += b * w / c->T;
     st.f = f0 + (fk < room ? fk : room);
-    if (te[k] != SMGI_NONE) {
-      const uint32_t label = tl[k] != SMGI_TRAIL_LABEL_WIDE
-                                 ? tl[k]
-                                 : g->data.lower_edges[te[k]].label;
-      float pe = 0.5f * seq_pen(c, label, te[k], c->s0 + u0 + pu,
-                                c->s0 + u0 + tr[4u * k + 3u]);
-      if (pe > st.pen) st.pen = pe;
-    }
     if (st.cost + st.pen >= bound) return INFINITY;
     pf = fk;
     pu = tr[4u * k + 3u];

@@ -30,6 +30,7 @@ static inline float smgi_steer_curve_of(float turn_limit, float speed) {
   return k;
 }
 
+/* The same for the envelope's own limit. */
 static inline float smgi_steer_plan_curve(const smgi_steer_envelope* s,
                                           float speed) {
   return smgi_steer_curve_of(s->turn_limit, speed);
@@ -79,8 +80,8 @@ static inline float smgi_steer_discount(float e, float reach) {
  * smgi_steer_plan_of: the limits of the steering slowing down for a turn
  * (smgi_steer_slowest) and of it cutting one (steer.c: down to
  * smgi_steer_cut_floor, turning at SMGI_STEER_CUT_TURN times the limit
- * and sliding at SMGI_STEER_CUT_SLIDE of the ratio) beside its own. Every
- * sample re-derived them (a tenth of a sample's instructions). */
+ * and sliding at SMGI_STEER_CUT_SLIDE of the ratio) beside its own,
+ * which every sample used to derive again. */
 typedef struct smgi_steer_plan {
   uint32_t enabled;      /* steering on */
   float turn_limit;      /* the envelope's */
@@ -125,10 +126,11 @@ static inline smgi_steer_plan smgi_steer_plan_of(const smgi_steer_envelope* s) {
  *    count SMGI_STEER_PLAN_WEIGHT of themselves (smgi_steer_discount), so
  *    the planner still prefers motion that needs little correction;
  *    beyond reach in full. Unchanged with steering off.
- * The arithmetic is smgi_steer_plan_reach's for each of them: the plain envelope's turning k moves the motion sideways
- * by half of slide u + k u^2 / 2 and turns it by half of k u. */
+ * The arithmetic is smgi_steer_plan_reach's for each of them: the plain
+ * envelope's turning k moves the motion sideways by half of slide u +
+ * k u^2 / 2 and turns it by half of k u. */
 static inline float smgi_steer_plan_view(const smgi_steer_plan* p, float u,
-                                           float speed, float* d, float* a) {
+                                         float speed, float* d, float* a) {
   const float e = *d;
   if (!p->enabled || u <= 0.0f) return e > 0.0f ? e : 0.0f;
   const float k = smgi_steer_curve_of(p->turn_limit, speed);
