@@ -19,20 +19,14 @@ BAKE=$1
 SHARED=$2
 BUILD=$3
 FRACTIONS=${4:-"8 4 2 1"}
-TAR=$SHARED/mocap/bandai-namco-2/clips.tar.xz
-DATA=$BUILD/bandai-namco-2
 OUT=$BUILD/bench-bake-scale
 
-if [ ! -f "$TAR" ] && [ ! -d "$DATA" ]; then
-  echo "bench-bake-scale: skipped ($TAR not found)"
+DATA_ABS=$(sh "$(dirname "$0")/../tools/scale_set.sh" "$SHARED" "$BUILD")
+if [ -z "$DATA_ABS" ]; then
+  echo "bench-bake-scale: skipped (no scale set)"
   exit 0
 fi
-if [ ! -f "$DATA/dataset-2_walk_normal_001.bvh" ]; then
-  mkdir -p "$DATA"
-  tar -xJf "$TAR" -C "$DATA"
-fi
 mkdir -p "$OUT"
-DATA_ABS=$(cd "$DATA" && pwd)
 
 echo "bench-bake-scale: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start"
 printf '%-6s %8s %9s %9s %9s %8s %8s %8s %8s %9s\n' size frames "wall s" "cpu s" "peak MB" \

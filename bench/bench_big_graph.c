@@ -19,9 +19,10 @@
  *    within 0.3 m of the end) and planted toes <= 20 cm/s;
  *  - a style change on a straight line: STYLE_A, then STYLE_B from the
  *    middle of a 24 m line. Where the motion changed is found from the
- *    hips alone: a gait signature per 1 s window (hips ground speed,
- *    height, bounce and sway), in units of its spread in two calibration
- *    runs (the whole line in A, the whole line in B). Each window of the
+ *    hips alone (tools/eval/eval_style_change.h): a gait signature per 1 s
+ *    window (hips ground speed, height above the floor walked on, bounce
+ *    and sway), in units of its spread in two calibration runs (the whole
+ *    line in A, the whole line in B). Each window of the
  *    switching run is labelled A or B by its nearest calibration window,
  *    and the change is the split with the fewest windows labelled against
  *    it. A performer's own gait varies along a line (the exhausted walk
@@ -47,6 +48,7 @@
 #include "eval_joints.h"
 #include "eval_metrics.h"
 #include "eval_run.h"
+#include "eval_style_change.h"
 #include "smg.h"
 
 #define RATE 30.0           /* steps per second */
@@ -59,7 +61,6 @@
 #define SWITCH_LENGTH 24.0  /* the style-change line, metres */
 #define SWITCH_AT 12.0      /* where STYLE_B is requested */
 #define SWITCH_TOLERANCE 1.0
-#define SIG_WINDOW 1.0      /* gait signature window, seconds */
 #define SIG_MARGIN 3.0      /* ignore this much of each end of the line, m */
 #define SIG_AGREEMENT 0.8   /* labels right: the styles told apart */
 
@@ -242,220 +243,58 @@ static int check_paths(smg_graph* g, const eval_joints* j, uint32_t style,
 
 /* ---- the style change --------------------------------------------------- */
 
-/* A gait signature per frame, over a SIG_WINDOW window centred on it:
- * hips ground speed (m/s), mean hips height above the run's floor (the
- * lower toe's 5th percentile height), and the hips' bounce (spread of
- * their height) and sway (spread of their sideways position, x on the
- * line) within the window (m). Performers differ in some of these and
- * not others; each is weighed in units of its spread in the calibration
- * runs. */
-enum { SIG_SPEED, SIG_HEIGHT, SIG_BOUNCE, SIG_SWAY, SIG_DIM };
-static const char* const k_sig_names[SIG_DIM] = {"speed m/s", "hips m",
-                                                  "bounce m", "sway m"};
-
-static void signature(const run_geom* r, size_t i, double floor_y,
-                      double* out) {
-  const size_t h = (size_t)(SIG_WINDOW * RATE / 2.0);
-  const size_t a = i >= h ? i - h : 0;
-  const size_t b = i + h < r->frames ? i + h : r->frames - 1;
-  const double n = (double)(b - a + 1);
-  double travelled = 0.0, y = 0.0, yy = 0.0, x = 0.0, xx = 0.0;
-  for (size_t k = a; k <= b; ++k) {
-    const double* p = r->hips + 3 * k;
-    if (k > a) travelled += hypot(p[0] - p[-3], p[2] - p[-1]);
-    y += p[1];
-    yy += p[1] * p[1];
-    x += p[0];
-    xx += p[0] * p[0];
-  }
-  out[SIG_SPEED] = b > a ? travelled * RATE / (double)(b - a) : 0.0;
-  out[SIG_HEIGHT] = y / n - floor_y;
-  out[SIG_BOUNCE] = sqrt(fmax(yy / n - (y / n) * (y / n), 0.0));
-  out[SIG_SWAY] = sqrt(fmax(xx / n - (x / n) * (x / n), 0.0));
-}
-
-static double run_floor(const run_geom* r) {
-  double a = eval_feet_floor_level(r->toes, 6, r->frames);
-  double b = eval_feet_floor_level(r->toes + 3, 6, r->frames);
-  return a < b ? a : b;
-}
-
-/* A run's signature series: the windows whose hips lie SIG_MARGIN from
- * both ends of the line (it runs along +Z from the origin, so the arc
- * length is the hips' z). */
-typedef struct sig_series {
-  size_t n;
-  double* arc;
-  double* v; /* SIG_DIM per window */
-} sig_series;
-
-static void series_free(sig_series* s) {
-  free(s->arc);
-  free(s->v);
-  memset(s, 0, sizeof *s);
-}
-
-static int series_of(const run_geom* r, sig_series* s) {
-  const double fl = run_floor(r);
-  memset(s, 0, sizeof *s);
-  s->arc = (double*)malloc(r->frames * sizeof(double));
-  s->v = (double*)malloc(r->frames * SIG_DIM * sizeof(double));
-  if (!s->arc || !s->v) {
-    series_free(s);
-    return 0;
-  }
-  for (size_t i = 0; i < r->frames; ++i) {
-    const double arc = r->hips[3 * i + 2];
-    if (arc < SIG_MARGIN || arc > SWITCH_LENGTH - SIG_MARGIN) continue;
-    s->arc[s->n] = arc;
-    signature(r, i, fl, s->v + SIG_DIM * s->n);
-    ++s->n;
-  }
-  return s->n >= 2;
-}
-
-/* Mean and spread of each feature over a series. */
-static void series_stats(const sig_series* s, double* mean, double* sd) {
-  for (int d = 0; d < SIG_DIM; ++d) {
-    double m = 0.0, q = 0.0;
-    for (size_t i = 0; i < s->n; ++i) m += s->v[SIG_DIM * i + d];
-    m /= (double)s->n;
-    for (size_t i = 0; i < s->n; ++i)
-      q += (s->v[SIG_DIM * i + d] - m) * (s->v[SIG_DIM * i + d] - m);
-    mean[d] = m;
-    sd[d] = sqrt(q / (double)s->n);
-  }
-}
-
-/* Distance, in units u, from window v to the nearest window of series
- * c; `own` >= 0 leaves out c's windows that overlap window `own` of the
- * same run (a window matches itself and its neighbours). */
-static double nearest(const double* v, const sig_series* c, const double* u,
-                      long own) {
-  const long overlap = (long)(SIG_WINDOW * RATE);
-  double best = INFINITY;
-  for (size_t j = 0; j < c->n; ++j) {
-    if (own >= 0 && labs((long)j - own) < overlap) continue;
-    double q = 0.0;
-    for (int d = 0; d < SIG_DIM; ++d) {
-      const double e = (v[d] - c->v[SIG_DIM * j + d]) / u[d];
-      q += e * e;
-    }
-    if (q < best) best = q;
-  }
-  return best;
-}
-
-/* Label each window of s: 1 when its nearest window of the calibration
- * runs is B's. `own` (0: A, 1: B, -1: neither) is the calibration run s
- * itself is, whose overlapping windows are left out. */
-static void label_windows(const sig_series* s, const sig_series* ca,
-                          const sig_series* cb, const double* u, int own,
-                          unsigned char* lab) {
-  for (size_t i = 0; i < s->n; ++i) {
-    const double* v = s->v + SIG_DIM * i;
-    const double da = nearest(v, ca, u, own == 0 ? (long)i : -1);
-    const double db = nearest(v, cb, u, own == 1 ? (long)i : -1);
-    lab[i] = db < da;
-  }
-}
-
-/* The split of a labelled series (at least a metre of windows on each
- * side) that agrees with the most labels, A before and B after: where it
- * is (arc length halfway between the windows either side); returns the
- * share of windows it agrees with (0 when the series is too short). */
-static double best_split(const sig_series* s, const unsigned char* lab,
-                         double* at) {
-  size_t b_total = 0, b_before = 0, best_k = 0, best_wrong = (size_t)-1;
-  for (size_t i = 0; i < s->n; ++i) b_total += lab[i];
-  for (size_t k = 1; k < s->n; ++k) {
-    b_before += lab[k - 1];
-    if (s->arc[k - 1] - s->arc[0] < 1.0 || s->arc[s->n - 1] - s->arc[k] < 1.0)
-      continue;
-    /* B labels before the split and A labels after it */
-    const size_t wrong = b_before + (s->n - k) - (b_total - b_before);
-    if (wrong < best_wrong) {
-      best_wrong = wrong;
-      best_k = k;
-    }
-  }
-  if (best_k == 0) return 0.0;
-  *at = 0.5 * (s->arc[best_k - 1] + s->arc[best_k]);
-  return 1.0 - (double)best_wrong / (double)s->n;
-}
+static const char* const k_sig_names[EVAL_SIG_DIM] = {"speed m/s", "hips m",
+                                                       "bounce m", "sway m"};
 
 /* The change is where the switching run's windows, each labelled by its
  * nearest calibration window (A's or B's), split best into A before and
- * B after; it counts only if the labels tell the calibration runs apart
- * and agree with the split, both for at least SIG_AGREEMENT of the
- * windows. */
+ * B after (eval_style_change.h); it counts only if the labels tell the
+ * calibration runs apart and agree with the split, both for at least
+ * SIG_AGREEMENT of the windows. */
 static int check_switch(smg_graph* g, const eval_joints* j, uint32_t a,
                         uint32_t b, const char* na, const char* nb) {
   double line[2 * 64];
   size_t n = em_path_straight(SWITCH_LENGTH, 1.0, line, 64);
   const double seconds = SWITCH_LENGTH / SPEED + EXTRA;
+  const eval_style_line sl = {RATE, SWITCH_LENGTH, SIG_MARGIN};
   run_geom r[3];
-  sig_series s[3];
-  int ok = 1;
-  memset(s, 0, sizeof s);
+  eval_track t[3];
+  eval_style_change c;
+  int ok = 1, measured = 0;
+  memset(r, 0, sizeof r);
   printf("\nstyle change on a %.0f m straight line: %s, then %s from "
          "%.0f m (target: within %.1f m, from the hips)\n",
          SWITCH_LENGTH, na, nb, SWITCH_AT, SWITCH_TOLERANCE);
   for (int k = 0; k < 3 && ok; ++k) {
     ok = run_path(g, j, line, n, k == 1 ? b : a, k == 2 ? (int)b : -1,
                   SWITCH_AT, seconds, &r[k]);
-    if (ok) {
-      ok = series_of(&r[k], &s[k]);
-      geom_free(&r[k]);
-    }
+    t[k].frames = r[k].frames;
+    t[k].hips = r[k].hips;
+    t[k].toes = r[k].toes;
   }
-  if (!ok) {
+  if (ok) measured = eval_style_change_measure(&sl, &t[0], &t[1], &t[2], &c);
+  for (int k = 0; k < 3; ++k) geom_free(&r[k]);
+  if (!measured) {
     printf("a run failed or stayed off the line  FAIL\n");
-    for (int k = 0; k < 3; ++k) series_free(&s[k]);
     return 1;
   }
-  double ma[SIG_DIM], sa[SIG_DIM], mb[SIG_DIM], sb[SIG_DIM], u[SIG_DIM];
-  series_stats(&s[0], ma, sa);
-  series_stats(&s[1], mb, sb);
   printf("signatures (1 s windows, whole line in one style; mean, sd):");
-  for (int d = 0; d < SIG_DIM; ++d) {
-    u[d] = fmax(0.5 * (sa[d] + sb[d]), 1e-3);
-    printf(" %s %.3f (%.3f) / %.3f (%.3f);", k_sig_names[d], ma[d], sa[d],
-           mb[d], sb[d]);
-  }
+  for (int d = 0; d < EVAL_SIG_DIM; ++d)
+    printf(" %s %.3f (%.3f) / %.3f (%.3f);", k_sig_names[d], c.mean[0][d],
+           c.sd[0][d], c.mean[1][d], c.sd[1][d]);
   printf(" %s / %s\n", na, nb);
-  /* calibration: how well the nearest-window labels tell the two
-   * styles apart on runs without a change */
-  size_t nmax = s[0].n > s[1].n ? s[0].n : s[1].n;
-  if (s[2].n > nmax) nmax = s[2].n;
-  unsigned char* lab = (unsigned char*)malloc(nmax);
-  if (!lab) {
-    for (int k = 0; k < 3; ++k) series_free(&s[k]);
-    return 1;
-  }
-  size_t right = 0;
-  label_windows(&s[0], &s[0], &s[1], u, 0, lab);
-  for (size_t i = 0; i < s[0].n; ++i) right += !lab[i];
-  label_windows(&s[1], &s[0], &s[1], u, 1, lab);
-  for (size_t i = 0; i < s[1].n; ++i) right += lab[i];
-  const double told = (double)right / (double)(s[0].n + s[1].n);
-  label_windows(&s[2], &s[0], &s[1], u, -1, lab);
-  double at = 0.0;
-  const double agree = best_split(&s[2], lab, &at);
-  free(lab);
-  for (int k = 0; k < 3; ++k) series_free(&s[k]);
   printf("nearest-window labels: %.0f %% right on the runs without a change; "
          "the switching run's best split agrees with %.0f %% of its "
          "windows\n",
-         100.0 * told, 100.0 * agree);
-  if (!(told >= SIG_AGREEMENT && agree >= SIG_AGREEMENT)) {
+         100.0 * c.told, 100.0 * c.agree);
+  if (!(c.told >= SIG_AGREEMENT && c.agree >= SIG_AGREEMENT)) {
     printf("no change from %s towards %s told apart by the hips  FAIL\n", na,
            nb);
     return 1;
   }
-  ok = fabs(at - SWITCH_AT) <= SWITCH_TOLERANCE;
-  printf("changed at %.2f m (%+.2f m from the requested point)  %s\n", at,
-         at - SWITCH_AT, ok ? "PASS" : "FAIL");
+  ok = fabs(c.at - SWITCH_AT) <= SWITCH_TOLERANCE;
+  printf("changed at %.2f m (%+.2f m from the requested point)  %s\n", c.at,
+         c.at - SWITCH_AT, ok ? "PASS" : "FAIL");
   return !ok;
 }
 

@@ -15,22 +15,16 @@ set -eu
 BAKE=$1
 SHARED=$2
 BUILD=$3
-TAR=$SHARED/mocap/bandai-namco-2/clips.tar.xz
-DATA=$BUILD/bandai-namco-2
 OUT=$BUILD/big-graph
 BLOB=$OUT/graph.smg
 
-if [ ! -f "$TAR" ] && [ ! -f "$DATA/dataset-2_walk_normal_001.bvh" ]; then
-  echo "big graph: skipped ($TAR not found)" >&2
+DATA_ABS=$(sh "$(dirname "$0")/../tools/scale_set.sh" "$SHARED" "$BUILD")
+if [ -z "$DATA_ABS" ]; then
+  echo "big graph: skipped (no scale set)" >&2
   exit 0
-fi
-if [ ! -f "$DATA/dataset-2_walk_normal_001.bvh" ]; then
-  mkdir -p "$DATA"
-  tar -xJf "$TAR" -C "$DATA"
 fi
 mkdir -p "$OUT"
 if [ ! -f "$BLOB" ] || [ "$BAKE" -nt "$BLOB" ]; then
-  DATA_ABS=$(cd "$DATA" && pwd)
   # the scale benchmark's manifest (bench/bake_scale.sh) for all clips
   cat > "$OUT/graph.manifest" <<EOM
 # all of the scale set (bench/big_graph_blob.sh)

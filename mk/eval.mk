@@ -4,6 +4,10 @@
 #                   on five paths, measures splicing accuracy and upper/lower
 #                   synchronisation, and writes docs/results.md plus
 #                   docs/img/eval-*.svg (all produced by this run).
+#   make eval-styles  the behaviour checks (section 2d) on one graph per
+#                   performer style of the Bandai Namco scale set: performers
+#                   the project was not tuned on (tools/eval/eval_styles.sh;
+#                   not in `make test`, skips without the data)
 #   make test-eval  (part of `make test`) a cheap subset with loose bounds;
 #                   works without ../shared (the CMU parts are skipped with a
 #                   message) and finishes well under two minutes.
@@ -45,9 +49,12 @@ $(EVAL_TEST_BIN): $(BUILD)/tests/eval/%: tests/eval/%.c $(LIBSMG_EVAL_A) $(LIBSM
 	@mkdir -p $(dir $@)
 	$(CC) $(EVAL_CFLAGS) -Itests -DSMG_SHARED_DIR='"$(SMG_SHARED)"' -DSMG_BUILD_DIR='"$(BUILD)"' $< -o $@ $(LIBSMG_EVAL_A) $(LIBSMG_BAKE_A) $(LIBSMG_A) -lcmocka $(BAKE_LDLIBS) -lpthread -lm
 
-.PHONY: eval test-eval
+.PHONY: eval eval-styles test-eval
 eval: $(SMG_EVAL)
 	$(SMG_EVAL) --shared $(SMG_SHARED) --out docs/results.md --img docs/img
+
+eval-styles: $(SMG_EVAL)
+	sh tools/eval/eval_styles.sh $(SMG_EVAL) $(SMG_SHARED) $(BUILD)
 
 # build/default.smg (mk/tools.mk) is the synthetic graph checked when the
 # CMU clips are absent (and in addition when they are present).

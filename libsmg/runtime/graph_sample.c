@@ -25,25 +25,27 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
   /* Every joint four at a time: the last group is moved back to end at
    * J (rewriting a few joints with the same values), and a group that
    * mixes wanted and unwanted joints goes through a scratch copy. Decoding
-   * an unwanted joint is harmless: its bytes are inside the record. */
+   * an unwanted joint is harmless: its bytes are inside the record. One
+   * call site, so the compiler inlines the kernel and keeps its constants
+   * in registers across the groups; the common case (every joint: no
+   * action playing) computes no masks. */
   if (J >= 5u) {
+    const int all = set == SMGI_JOINTS_ALL;
     for (; j < J; j += 4u) {
       const uint32_t base = j + 4u <= J ? j : J - 4u;
-      const unsigned want = (WANTED(base) ? 1u : 0u) |
-                            (WANTED(base + 1u) ? 2u : 0u) |
-                            (WANTED(base + 2u) ? 4u : 0u) |
-                            (WANTED(base + 3u) ? 8u : 0u);
-      if (want == 0u) continue;
-      if (want == 15u) {
-        smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
-                             qb + SMGI_QPACK_BYTES * base, t, out + 4u * base);
-        continue;
+      unsigned want = 15u;
+      if (!all) {
+        want = (WANTED(base) ? 1u : 0u) | (WANTED(base + 1u) ? 2u : 0u) |
+               (WANTED(base + 2u) ? 4u : 0u) | (WANTED(base + 3u) ? 8u : 0u);
+        if (want == 0u) continue;
       }
       float q[16];
       smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
-                           qb + SMGI_QPACK_BYTES * base, t, q);
-      for (uint32_t k = 0; k < 4u; ++k)
-        if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
+                           qb + SMGI_QPACK_BYTES * base, t,
+                           want == 15u ? out + 4u * base : q);
+      if (want != 15u)
+        for (uint32_t k = 0; k < 4u; ++k)
+          if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
     }
     return;
   }

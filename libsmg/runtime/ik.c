@@ -47,15 +47,18 @@
 #include "ik.h"
 
 #include "pose.h"
+#include "pose_simd.h"
 #include "rmath.h"
 #include "tuning.h"
 #include "simd.h"
 
-#ifndef IK_SSE /* -DIK_SSE=0 builds the plain C path */
-#define IK_SSE SMGI_SSE2
+/* -DIK_SSE=0 builds the plain C path; the SSE one uses pose_simd.h's
+ * quaternion kernels (bit for bit the plain math) */
+#ifndef IK_SSE
+#define IK_SSE SMGI_POSE_SSE
 #endif
-#if IK_SSE
-#include <xmmintrin.h>
+#if IK_SSE && !SMGI_POSE_SSE
+#error "IK_SSE needs the SSE kernels of pose_simd.h (SMGI_POSE_SSE)"
 #endif
 
 static const float k_identity[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -64,66 +67,165 @@ static float dot3(const float* a, const float* b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+/* ---- the solve's vectors and quaternions --------------------------------
+ * Values, kept in SSE registers where IK_SSE (lanes 0..2 of a vec3; lane 3
+ * is unused): the solve's bones, target and corrections live in registers
+ * instead of being stored and reloaded around every product. Each
+ * operation is the plain code's, lane by lane and in its order (dot
+ * products sum x, y, z left to right), so both builds give the same bits. */
+#if IK_SSE
+typedef __m128 vec3;
+typedef __m128 quat;
+
+static inline vec3 v3_load(const float* p) { return smgi_load3_sse(p); }
+static inline void v3_store(float* p, vec3 v) { smgi_store3_sse(p, v); }
+static inline vec3 v3_add(vec3 a, vec3 b) { return _mm_add_ps(a, b); }
+static inline vec3 v3_sub(vec3 a, vec3 b) { return _mm_sub_ps(a, b); }
+static inline vec3 v3_scale(vec3 a, float k) {
+  return _mm_mul_ps(a, _mm_set1_ps(k));
+}
+static inline float v3_dot(vec3 a, vec3 b) {
+  const __m128 m = _mm_mul_ps(a, b);
+  const __m128 t = _mm_add_ss(m, SMGI_SHUF(m, 1, 1, 1, 1));
+  return _mm_cvtss_f32(_mm_add_ss(t, SMGI_SHUF(m, 2, 2, 2, 2)));
+}
+/* (a1 b2 - a2 b1, a2 b0 - a0 b2, a0 b1 - a1 b0) */
+static inline vec3 v3_cross(vec3 a, vec3 b) {
+  return _mm_sub_ps(_mm_mul_ps(SMGI_SHUF(a, 1, 2, 0, 3), SMGI_SHUF(b, 2, 0, 1, 3)),
+                    _mm_mul_ps(SMGI_SHUF(a, 2, 0, 1, 3), SMGI_SHUF(b, 1, 2, 0, 3)));
+}
+static inline quat q_load(const float* p) { return _mm_loadu_ps(p); }
+static inline void q_store(float* p, quat q) { _mm_storeu_ps(p, q); }
+static inline quat q_mul(quat a, quat b) { return smgi_q_mul_sse(a, b); }
+static inline vec3 q_rotate(quat q, vec3 v) { return smgi_q_rotate_sse(q, v); }
+/* (v * s, w * s) */
+static inline quat q_scaled(vec3 v, float w, float s) {
+  const __m128 vw = _mm_shuffle_ps(v, _mm_unpackhi_ps(v, _mm_set1_ps(w)),
+                                   _MM_SHUFFLE(1, 0, 1, 0));
+  return _mm_mul_ps(vw, _mm_set1_ps(s));
+}
+#else
+typedef struct vec3 {
+  float v[3];
+} vec3;
+typedef struct quat {
+  float q[4];
+} quat;
+
+static inline vec3 v3_load(const float* p) {
+  vec3 r = {{p[0], p[1], p[2]}};
+  return r;
+}
+static inline void v3_store(float* p, vec3 v) { memcpy(p, v.v, sizeof v.v); }
+static inline vec3 v3_add(vec3 a, vec3 b) {
+  vec3 r = {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2]}};
+  return r;
+}
+static inline vec3 v3_sub(vec3 a, vec3 b) {
+  vec3 r = {{a.v[0] - b.v[0], a.v[1] - b.v[1], a.v[2] - b.v[2]}};
+  return r;
+}
+static inline vec3 v3_scale(vec3 a, float k) {
+  vec3 r = {{a.v[0] * k, a.v[1] * k, a.v[2] * k}};
+  return r;
+}
+static inline float v3_dot(vec3 a, vec3 b) { return dot3(a.v, b.v); }
+static inline vec3 v3_cross(vec3 a, vec3 b) {
+  vec3 r = {{a.v[1] * b.v[2] - a.v[2] * b.v[1],
+             a.v[2] * b.v[0] - a.v[0] * b.v[2],
+             a.v[0] * b.v[1] - a.v[1] * b.v[0]}};
+  return r;
+}
+static inline quat q_load(const float* p) {
+  quat r;
+  memcpy(r.q, p, sizeof r.q);
+  return r;
+}
+static inline void q_store(float* p, quat q) { memcpy(p, q.q, sizeof q.q); }
+static inline quat q_mul(quat a, quat b) {
+  quat r;
+  smgi_q_mul(a.q, b.q, r.q);
+  return r;
+}
+static inline vec3 q_rotate(quat q, vec3 v) {
+  vec3 r;
+  smgi_q_rotate(q.q, v.v, r.v);
+  return r;
+}
+static inline quat q_scaled(vec3 v, float w, float s) {
+  quat r = {{v.v[0] * s, v.v[1] * s, v.v[2] * s, w * s}};
+  return r;
+}
+#endif
+
 /* Shortest rotation taking direction a to direction b (smgi_q_from_to),
  * given their squared lengths, also giving |a||b|, which the caller needs
  * to place the turned bone. Returns 0 (and leaves dq alone) when the two
  * are opposite or degenerate: there is no shortest arc then, and the sweep
  * skips that joint. */
-static inline int turn(const float* a, float a2, const float* b, float b2,
-                       float* dq, float* lab) {
+static inline int turn(vec3 a, float a2, vec3 b, float b2, quat* dq,
+                       float* lab) {
   float l = sqrtf(a2 * b2);
-  float w = l + dot3(a, b);
+  float w = l + v3_dot(a, b);
   if (!(w > 1e-6f * (l + 1e-12f))) return 0;
   /* |(a x b, w)|^2 = 2 l w, so one sqrt normalizes */
   float s = 1.0f / sqrtf(2.0f * l * w);
-  dq[0] = (a[1] * b[2] - a[2] * b[1]) * s;
-  dq[1] = (a[2] * b[0] - a[0] * b[2]) * s;
-  dq[2] = (a[0] * b[1] - a[1] * b[0]) * s;
-  dq[3] = w * s;
+  *dq = q_scaled(v3_cross(a, b), w, s);
   *lab = l;
   return 1;
 }
 
-/* o = a * b: smgi_q_mul's operations in the same order (so the same
- * bits: negating a factor is exact, and x + (-y) is x - y), four lanes at
- * once where SSE exists; IK multiplies about a dozen per solve. */
-static inline void qmul(const float* a, const float* b, float* o) {
+/* o = conj(a) * b */
+static inline void qmul_conj(const float* a, const float* b, float* o) {
 #if IK_SSE
-  /* lane i of term k is a[k] times b permuted and signed for lane i */
-  const __m128 A = _mm_loadu_ps(a), B = _mm_loadu_ps(b);
-  const __m128 s0 = _mm_setr_ps(1.0f, -1.0f, 1.0f, -1.0f);
-  const __m128 s1 = _mm_setr_ps(1.0f, 1.0f, -1.0f, -1.0f);
-  const __m128 s2 = _mm_setr_ps(-1.0f, 1.0f, 1.0f, -1.0f);
-  __m128 b0 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3)), s0);
-  __m128 b1 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(1, 0, 3, 2)), s1);
-  __m128 b2 = _mm_mul_ps(_mm_shuffle_ps(B, B, _MM_SHUFFLE(2, 3, 0, 1)), s2);
-  __m128 r = _mm_mul_ps(_mm_shuffle_ps(A, A, 0xff), B); /* a[3] */
-  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0x00), b0));
-  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0x55), b1));
-  r = _mm_add_ps(r, _mm_mul_ps(_mm_shuffle_ps(A, A, 0xaa), b2));
-  _mm_storeu_ps(o, r);
+  const __m128 conj = _mm_setr_ps(-0.0f, -0.0f, -0.0f, 0.0f);
+  _mm_storeu_ps(o, smgi_q_mul_sse(_mm_xor_ps(_mm_loadu_ps(a), conj),
+                                  _mm_loadu_ps(b)));
 #else
-  smgi_q_mul(a, b, o);
+  float inv[4];
+  smgi_q_conj(a, inv);
+  smgi_q_mul(inv, b, o);
 #endif
 }
 
-/* q = dq * q */
-static void premul(const float* dq, float* q) {
-  float o[4];
-  qmul(dq, q, o);
-  memcpy(q, o, sizeof o);
+#if IK_SSE
+/* ((m0 + m1) + m2) + m3: a sum of four lanes in the plain code's order */
+static inline float hsum4(__m128 m) {
+  __m128 t = _mm_add_ss(m, SMGI_SHUF(m, 1, 1, 1, 1));
+  t = _mm_add_ss(t, SMGI_SHUF(m, 2, 2, 2, 2));
+  return _mm_cvtss_f32(_mm_add_ss(t, SMGI_SHUF(m, 3, 3, 3, 3)));
+}
+#endif
+
+/* smgi_q_normalize, the same bits */
+static inline quat qnorm(quat q) {
+#if IK_SSE
+  const float n = hsum4(_mm_mul_ps(q, q));
+  if (n > 1e-20f && isfinite(n)) return _mm_mul_ps(q, _mm_set1_ps(1.0f / sqrtf(n)));
+  return _mm_loadu_ps(k_identity);
+#else
+  smgi_q_normalize(q.q);
+  return q;
+#endif
 }
 
 /* Local rotation `local` blended over the animation's in `rot` by w. At
  * full weight nlerp would only renormalize (the inputs are unit products);
  * keep its choice of sign, the animation's hemisphere. */
-static void blend_local(float* rot, const float* local, float w) {
+static inline void blend_local(float* rot, const float* local, float w) {
   if (w >= 1.0f) {
+#if IK_SSE
+    /* the sign flip as a sign-bit flip: -1 * x is -x */
+    const __m128 l = _mm_loadu_ps(local);
+    const float d = hsum4(_mm_mul_ps(_mm_loadu_ps(rot), l));
+    _mm_storeu_ps(rot, d < 0.0f ? _mm_xor_ps(l, _mm_set1_ps(-0.0f)) : l);
+#else
     float s = dot3(rot, local) + rot[3] * local[3] < 0.0f ? -1.0f : 1.0f;
     rot[0] = s * local[0];
     rot[1] = s * local[1];
     rot[2] = s * local[2];
     rot[3] = s * local[3];
+#endif
   } else {
     float out[4];
     smgi_q_nlerp(rot, local, w, out);
@@ -134,21 +236,18 @@ static void blend_local(float* rot, const float* local, float w) {
 /* Turn the whole leg (bones a, b from the hip) about the hip so that
  * hip->ankle lies along t (|t|^2 = d2), adding the turn to the world
  * corrections Th and Tk. */
-static inline void hip_turn(float* a, float* b, const float* t, float d2,
-                            float* Th, float* Tk) {
-  float sum[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-  const float s2 = dot3(sum, sum);
-  float dq[4], lab;
-  if (turn(sum, s2, t, d2, dq, &lab)) {
+static inline void hip_turn(vec3* a, vec3* b, vec3 t, float d2, quat* Th,
+                            quat* Tk) {
+  const vec3 sum = v3_add(*a, *b);
+  const float s2 = v3_dot(sum, sum);
+  quat dq;
+  float lab;
+  if (turn(sum, s2, t, d2, &dq, &lab)) {
     float k = s2 / lab; /* |sum| / |t| */
-    float ra[3];
-    smgi_q_rotate(dq, a, ra);
-    memcpy(a, ra, sizeof ra);
-    b[0] = t[0] * k - a[0];
-    b[1] = t[1] * k - a[1];
-    b[2] = t[2] * k - a[2];
-    premul(dq, Th);
-    premul(dq, Tk);
+    *a = q_rotate(dq, *a);
+    *b = v3_sub(v3_scale(t, k), *a);
+    *Th = q_mul(dq, *Th);
+    *Tk = q_mul(dq, *Tk);
   }
 }
 
@@ -167,17 +266,13 @@ static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
   const uint32_t hip = list[0], knee = list[1], ankle = list[2];
   smgi_foot* foot = &ik->feet[f];
   const uint32_t hp = (uint32_t)joints[hip].parent;
-  const float* p0 = pose->wpos + 3u * hip;
-  const float* p1 = pose->wpos + 3u * knee;
-  const float* p2 = pose->wpos + 3u * ankle;
-  float a0[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
-  float b0[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
-  float t[3] = {target[0] - p0[0], target[1] - p0[1], target[2] - p0[2]};
-  float Th[4], Tk[4], a[3], b[3];
-  memcpy(Th, fix[0], sizeof Th);
-  memcpy(Tk, fix[1], sizeof Tk);
-  smgi_q_rotate(Th, a0, a);
-  smgi_q_rotate(Tk, b0, b);
+  const vec3 p0 = v3_load(pose->wpos + 3u * hip);
+  const vec3 p1 = v3_load(pose->wpos + 3u * knee);
+  const vec3 p2 = v3_load(pose->wpos + 3u * ankle);
+  const vec3 a0 = v3_sub(p1, p0), b0 = v3_sub(p2, p1);
+  const vec3 t = v3_sub(v3_load(target), p0);
+  quat Th = q_load(fix[0]), Tk = q_load(fix[1]);
+  vec3 a = q_rotate(Th, a0), b = q_rotate(Tk, b0);
   /* Stop within SMGI_IK_TOLERANCE of the closest the ankle can get: 0 for a
    * reachable target, else how far it lies outside the leg's annulus.
    * A released foot blending out moves the pose's ankle by only about w
@@ -185,8 +280,8 @@ static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
    * being dropped: both stop rules are on the pose's scale then. A foot
    * blending in keeps full precision: its correction is about to be
    * shown whole, and the next solves start from it. */
-  const float l1 = sqrtf(dot3(a0, a0)), l2sq = dot3(b0, b0);
-  const float d2 = dot3(t, t);
+  const float l1 = sqrtf(v3_dot(a0, a0)), l2sq = v3_dot(b0, b0);
+  const float d2 = v3_dot(t, t);
   const float l2 = sqrtf(l2sq), d = sqrtf(d2);
   float reach = d - (l1 + l2);
   float inner = fabsf(l1 - l2) - d;
@@ -203,74 +298,69 @@ static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
    * toe pushed into the floor (by 1.3 cm on the synthetic walk when root
    * steering moved the body towards a planted foot). */
   {
-    const float l1sq = dot3(a, a);
+    const float l1sq = v3_dot(a, a);
     /* never quite straight (0.1 % short, within the tolerance): a
      * straight leg has no plane left to bend the knee in next time */
     const float longest = 0.999f * (l1 + l2);
     float want = d < longest ? d : longest;
     if (want < fabsf(l1 - l2)) want = fabsf(l1 - l2);
-    const float s[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    const float have = sqrtf(dot3(s, s));
+    const vec3 s = v3_add(a, b);
+    const float have = sqrtf(v3_dot(s, s));
     /* b's part across a: the leg's plane and which way the knee bends */
-    const float k = dot3(a, b) / l1sq;
-    float p[3] = {b[0] - k * a[0], b[1] - k * a[1], b[2] - k * a[2]};
-    const float p2 = dot3(p, p);
+    const float k = v3_dot(a, b) / l1sq;
+    const vec3 p = v3_sub(b, v3_scale(a, k));
+    const float p2 = v3_dot(p, p);
     if (fabsf(have - want) > tol && p2 > 1e-12f * l2sq) {
       /* cos of the angle between the bones for |a + b| = want */
       float c = (want * want - l1sq - l2sq) / (2.0f * l1 * l2);
       c = smgi_clampf(c, -1.0f, 1.0f);
       const float sn = sqrtf(1.0f - c * c);
       const float ia = l2 / l1, ip = l2 / sqrtf(p2);
-      float nb[3] = {c * ia * a[0] + sn * ip * p[0],
-                     c * ia * a[1] + sn * ip * p[1],
-                     c * ia * a[2] + sn * ip * p[2]};
-      float dq[4], lab;
-      if (turn(b, l2sq, nb, l2sq, dq, &lab)) {
-        memcpy(b, nb, sizeof nb);
-        premul(dq, Tk);
-        hip_turn(a, b, t, d2, Th, Tk); /* and aim it: done, unless the
-                                          target is out of reach */
+      const vec3 nb = v3_add(v3_scale(a, c * ia), v3_scale(p, sn * ip));
+      quat dq;
+      float lab;
+      if (turn(b, l2sq, nb, l2sq, &dq, &lab)) {
+        b = nb;
+        Tk = q_mul(dq, Tk);
+        hip_turn(&a, &b, t, d2, &Th, &Tk); /* and aim it: done, unless the
+                                              target is out of reach */
       }
     }
   }
   float prev2 = INFINITY;
   for (uint32_t it = 0; it < SMGI_IK_ITERATIONS; ++it) {
-    float e[3] = {t[0] - a[0] - b[0], t[1] - a[1] - b[1], t[2] - a[2] - b[2]};
-    float e2 = dot3(e, e);
+    const vec3 e = v3_sub(v3_sub(t, a), b);
+    float e2 = v3_dot(e, e);
     if (e2 <= stop2) break;
     /* a sweep gained < 0.5 tol (a singular or slowly converging pose) */
     if (prev2 - e2 < tol * sqrtf(e2) + 1e-6f) break;
     prev2 = e2;
-    float dq[4], lab;
+    quat dq;
+    float lab;
     /* knee: turn the shin toward the target; it then lies along v */
-    float v[3] = {t[0] - a[0], t[1] - a[1], t[2] - a[2]};
-    if (turn(b, l2sq, v, dot3(v, v), dq, &lab)) {
+    const vec3 v = v3_sub(t, a);
+    if (turn(b, l2sq, v, v3_dot(v, v), &dq, &lab)) {
       float k = l2sq / lab; /* |b| / |v| */
-      b[0] = v[0] * k;
-      b[1] = v[1] * k;
-      b[2] = v[2] * k;
-      premul(dq, Tk);
+      b = v3_scale(v, k);
+      Tk = q_mul(dq, Tk);
     }
-    hip_turn(a, b, t, d2, Th, Tk);
+    hip_turn(&a, &b, t, d2, &Th, &Tk);
   }
-  smgi_q_normalize(Th);
-  smgi_q_normalize(Tk);
-  memcpy(fix[0], Th, sizeof Th);
-  memcpy(fix[1], Tk, sizeof Tk);
+  Th = qnorm(Th);
+  Tk = qnorm(Tk);
+  q_store(fix[0], Th);
+  q_store(fix[1], Tk);
   /* back to local rotations, blended with the animation by w; the ankle
    * keeps its animated world orientation */
-  float r0[4], r1[4], inv[4], local[4];
+  float r0[4], r1[4], local[4];
   float* wrot = pose->wrot;
-  qmul(Th, wrot + 4u * hip, r0);
-  qmul(Tk, wrot + 4u * knee, r1);
-  smgi_q_conj(wrot + 4u * hp, inv);
-  qmul(inv, r0, local);
+  q_store(r0, q_mul(Th, q_load(wrot + 4u * hip)));
+  q_store(r1, q_mul(Tk, q_load(wrot + 4u * knee)));
+  qmul_conj(wrot + 4u * hp, r0, local);
   blend_local(pose->rot + 4u * hip, local, w);
-  smgi_q_conj(r0, inv);
-  qmul(inv, r1, local);
+  qmul_conj(r0, r1, local);
   blend_local(pose->rot + 4u * knee, local, w);
-  smgi_q_conj(r1, inv);
-  qmul(inv, wrot + 4u * ankle, local);
+  qmul_conj(r1, wrot + 4u * ankle, local);
   blend_local(pose->rot + 4u * ankle, local, w);
 
   /* keep the world transform cache true for every joint IK moved */
@@ -285,21 +375,17 @@ static void solve_leg(smgi_ik* ik, smgi_pose* pose, const smg_graph* g,
   float* wpos = pose->wpos;
   memcpy(wrot + 4u * hip, r0, sizeof r0);
   memcpy(wrot + 4u * knee, r1, sizeof r1);
-  const float ax = p0[0] + a[0] + b[0], ay = p0[1] + a[1] + b[1],
-              az = p0[2] + a[2] + b[2];
-  const float dx = ax - p2[0], dy = ay - p2[1], dz = az - p2[2];
-  wpos[3u * knee] = p0[0] + a[0];
-  wpos[3u * knee + 1u] = p0[1] + a[1];
-  wpos[3u * knee + 2u] = p0[2] + a[2];
-  wpos[3u * ankle] = ax;
-  wpos[3u * ankle + 1u] = ay;
-  wpos[3u * ankle + 2u] = az;
+  const vec3 kp = v3_add(p0, a), ap = v3_add(kp, b);
+  float moved[3];
+  v3_store(moved, v3_sub(ap, p2));
+  v3_store(wpos + 3u * knee, kp);
+  v3_store(wpos + 3u * ankle, ap);
   smgi_fk_joints(pose, g, list + 3, side);
   for (uint32_t i = 3u + side; i < 3u + side + below; ++i) {
     float* p = wpos + 3u * list[i];
-    p[0] += dx;
-    p[1] += dy;
-    p[2] += dz;
+    p[0] += moved[0];
+    p[1] += moved[1];
+    p[2] += moved[2];
   }
 }
 

@@ -28,6 +28,18 @@ static inline float fast_atan2(float y, float x) {
   return y < 0.0f ? -r : r;
 }
 
+/* Point at arc s on segment i, which holds it: smgi_path_eval's
+ * arithmetic, so the same result. */
+static inline void seg_point(const smgi_path* p, uint32_t i, float s,
+                             float* x, float* z) {
+  float len = p->cum[i + 1u] - p->cum[i];
+  float u = len > 1e-9f ? (s - p->cum[i]) / len : 0.0f;
+  u = smgi_clampf(u, 0.0f, 1.0f);
+  const float* a = &p->xz[2u * i];
+  *x = a[0] + u * (a[2] - a[0]);
+  *z = a[1] + u * (a[3] - a[1]);
+}
+
 /* smgi_path_eval without the call when the hint segment already holds s
  * (almost every query of a search: samples advance a little at a time);
  * same arithmetic, so the same result. */
@@ -36,15 +48,30 @@ static inline void path_at(const smgi_path* p, float s, uint32_t* seg,
   uint32_t i = *seg;
   if (p->count >= 2u && i + 1u < p->count && s >= p->cum[i] &&
       s <= p->cum[i + 1u] && s <= p->length) {
-    float len = p->cum[i + 1u] - p->cum[i];
-    float u = len > 1e-9f ? (s - p->cum[i]) / len : 0.0f;
-    u = smgi_clampf(u, 0.0f, 1.0f);
-    const float* a = &p->xz[2u * i];
-    *x = a[0] + u * (a[2] - a[0]);
-    *z = a[1] + u * (a[3] - a[1]);
+    seg_point(p, i, s, x, z);
     return;
   }
   smgi_path_eval(p, s, seg, x, z, NULL);
+}
+
+/* path_at for the pursuit point, a metre or more beyond the hint
+ * segment's sample: when that segment does not hold s, the next one
+ * often does (a quarter of all pursuit points on a path of 8 m segments
+ * went through smgi_path_eval). An s strictly inside a segment lies on no
+ * other, so smgi_path_eval would find that segment too: same result. */
+static inline void path_ahead(const smgi_path* p, float s, uint32_t* seg,
+                              float* x, float* z) {
+  const uint32_t i = *seg, n = i + 1u;
+  if (p->count >= 2u && n < p->count && s >= p->cum[i] && s <= p->cum[n] &&
+      s <= p->length) {
+    seg_point(p, i, s, x, z);
+  } else if (n + 1u < p->count && s > p->cum[n] && s < p->cum[n + 1u] &&
+             s <= p->length) {
+    *seg = n;
+    seg_point(p, n, s, x, z);
+  } else {
+    smgi_path_eval(p, s, seg, x, z, NULL);
+  }
 }
 
 /* (x, z) = the end point moved `beyond` metres further along the path's
@@ -160,7 +187,7 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
   if (sr < p->length) {
     float qx, qz;
     uint32_t sg = *seg;
-    path_at(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
+    path_ahead(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
     float ax = qx - x, az = qz - z;
     if (ax * ax + az * az > 1e-4f)
       ha = fabsf(smgi_wrap_angle(h - fast_atan2(ax, az)));
@@ -172,9 +199,7 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
   *beyond = d;
   if (!c->lost) {
     const float speed = c->fps * sqrtf(m2) / (w > 1.0f ? w : 1.0f);
-    const float reach = smgi_steer_plan_reach_slowed(&c->steer, u, speed);
-    *beyond = d > reach ? d - reach : 0.0f;
-    smgi_steer_plan_view(&c->steer, u, speed, &d, &ha);
+    *beyond = smgi_steer_plan_view(&c->steer, u, speed, &d, &ha);
   }
   /* lost (far off the path): options differ little in distance (all move
    * away for the next second or two) but much in where they face; the
@@ -203,12 +228,28 @@ static float seq_pen(const smgi_seq_ctx* c, uint32_t label, uint32_t ei,
 
 /* Append edge `ei` to the sequence in `in`: root samples at the edge's
  * middle (edges of 4+ frames) and end, each weighted by the frames it
- * stands for inside the window. *maxd gets the largest sample distance. */
-void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw,
-                     uint32_t ei, float pen_scale, float bound,
-                     smgi_seq_state* out, float* maxd) {
+ * stands for inside the window. */
+void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw,
+                   float sw, uint32_t ei, float pen_scale, float bound,
+                   smgi_seq_state* out) {
   /* the edge's search record (graph_derived.h): everything read below */
   const smgi_search_edge* e = &smgi_derived_of(c->g)->search_edges[ei];
+  out->u = in->u + e->arc_length;
+  out->f = in->f + (float)e->frame_count;
+  /* the style penalty first: a sequence's value is at least its cost so
+   * far plus its worst penalty, and costs only grow (every term is >=
+   * 0), so an edge whose penalty alone reaches the bound (an edge of
+   * another style, mostly) is pruned by the caller whatever its samples
+   * cost: they are not computed */
+  {
+    const float pe = pen_scale * seq_pen(c, e->label, ei, c->s0 + in->u,
+                                         c->s0 + out->u);
+    out->pen = in->pen > pe ? in->pen : pe;
+    if (in->cost + out->pen >= bound) {
+      out->cost = INFINITY;
+      return;
+    }
+  }
   /* one rotation (cw, sw = cos, sin of in->W.h, computed once by the
    * caller for all of a state's children) places both the edge's end and
    * its mid sample */
@@ -229,7 +270,7 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
   uint32_t nk = 0;
   if (fc >= 4u) ks[nk++] = fc / 2u;
   ks[nk++] = fc;
-  float px = in->W.x, pz = in->W.z, kprev = 0.0f, md = 0.0f;
+  float px = in->W.x, pz = in->W.z, kprev = 0.0f;
   float room = c->T - in->f; /* frames left in the window */
   for (uint32_t i = 0; i < nk; ++i) {
     float k = (float)ks[i];
@@ -252,26 +293,17 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw, float sw
                            x - px, z - pz, k - kprev, &out->seg, &d, &b);
     out->cost += sc * w / c->T;
     out->beyond += b * w / c->T;
-    if (d > md) md = d;
     if (out->cost + in->pen >= bound) {
       /* already no better than the bound: costs and penalties only grow
        * (every term is >= 0), so the caller prunes it either way */
-      *maxd = md;
       out->cost = INFINITY;
       out->pen = in->pen;
-      out->u = in->u + e->arc_length;
-      out->f = in->f + (float)fc;
       return;
     }
     px = x;
     pz = z;
     kprev = k;
   }
-  *maxd = md;
-  out->u = in->u + e->arc_length;
-  out->f = in->f + (float)fc;
-  float pe = pen_scale * seq_pen(c, e->label, ei, c->s0 + in->u, c->s0 + out->u);
-  out->pen = in->pen > pe ? in->pen : pe;
   if (!isfinite(out->cost)) out->cost = INFINITY;
 }
 
@@ -304,7 +336,7 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     uint32_t sg = st.seg;
     path_at(p, sr, &sg, &rx, &rz);
     float d = sqrtf((rx - st.W.x) * (rx - st.W.x) + (rz - st.W.z) * (rz - st.W.z));
-    path_at(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
+    path_ahead(p, sr + SMGI_PURSUIT_M + (c->lost ? 0.0f : d), &sg, &qx, &qz);
     float ax = qx - st.W.x, az = qz - st.W.z;
     if (ax * ax + az * az > 1e-4f) {
       float need = smgi_wrap_angle(fast_atan2(ax, az) - st.W.h);
@@ -316,16 +348,26 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
   /* the value is at least cost + pen (an unfinished window only scales
    * the cost up): once that reaches the bound the leaf cannot win */
   if (st.cost + st.pen >= bound) return INFINITY;
+  /* every sample is placed with the leaf's one heading (smgi_xf_mul's
+   * arithmetic, its sine and cosine once) */
+  float sw = 0.0f, cw = 1.0f;
+  int placed = 0;
   for (uint32_t k = 0; k < SMGI_TRAIL_SAMPLES && st.f < c->T; ++k) {
     float fk = tf[k];
     if (fk <= pf) break; /* the continuation ended */
     float room = c->T - f0;
     float w = (fk < room ? fk : room) - pf;
-    smgi_xform2 lk = {tr[4u * k], tr[4u * k + 1u], tr[4u * k + 2u]};
-    smgi_xform2 end = smgi_xf_mul(st.W, lk);
+    if (!placed) {
+      smgi_sincosf(st.W.h, &sw, &cw);
+      placed = 1;
+    }
+    const float lx = tr[4u * k], lz = tr[4u * k + 1u];
+    const float ex = st.W.x + (cw * lx + sw * lz);
+    const float ez = st.W.z + (-sw * lx + cw * lz);
+    const float eh = smgi_wrap_angle(st.W.h + tr[4u * k + 2u]);
     float d, b;
-    float sc = sample_cost(c, end.x, end.z, end.h, u0 + tr[4u * k + 3u],
-                           end.x - px, end.z - pz, fk - pf, &st.seg, &d, &b);
+    float sc = sample_cost(c, ex, ez, eh, u0 + tr[4u * k + 3u], ex - px,
+                           ez - pz, fk - pf, &st.seg, &d, &b);
     st.cost += sc * w / c->T;
     st.beyond += b * w / c->T;
     st.f = f0 + (fk < room ? fk : room);
@@ -340,8 +382,8 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     if (st.cost + st.pen >= bound) return INFINITY;
     pf = fk;
     pu = tr[4u * k + 3u];
-    px = end.x;
-    pz = end.z;
+    px = ex;
+    pz = ez;
   }
   float v = seq_value(c, &st);
   /* an unfinished window extrapolated at its mean, as seq_value does */
@@ -372,9 +414,8 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
       for (uint32_t k = 0; k < cnt && c->budget > 0; ++k) {
         uint32_t ei = st.first_edge + k;
         smgi_seq_state nx;
-        float md;
         c->budget--;
-        smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
+        smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx);
         if (nx.cost + nx.pen >= *best) continue; /* costs only grow */
 #if defined(__GNUC__) || defined(__clang__)
         /* a kid the search may descend into: its out-edge records and
@@ -402,12 +443,11 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
     }
     /* a single exit: no choice */
     smgi_seq_state nx;
-    float md;
     c->budget--;
     float cw, sw;
     smgi_sincosf(st.W.h, &sw, &cw);
     const uint32_t ei = st.first_edge;
-    smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx, &md);
+    smgi_seq_step(c, &st, cw, sw, ei, 0.5f, *best, &nx);
     st = nx;
     c->path[depth++] = ei;
     if (st.cost + st.pen >= *best) return;
@@ -428,7 +468,7 @@ void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
   c->track = in->path;
   c->cons = in->cons;
   c->fps = in->fps;
-  c->steer = *steer;
+  c->steer = smgi_steer_plan_of(steer);
   c->s0 = s;
   c->T = SMGI_SEQ_SECONDS * in->fps;
   c->following = in->path->count >= 2u && s < in->path->length - SMGI_END_EPS;

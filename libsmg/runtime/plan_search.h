@@ -34,7 +34,7 @@ typedef struct smgi_seq_ctx {
   const smgi_path* track;    /* the path followed */
   const smgi_constraints* cons;
   float fps;
-  smgi_steer_envelope steer; /* what the steering will correct */
+  smgi_steer_plan steer; /* what the steering will correct */
   float s0;          /* path arc length where the sequences start */
   float T;           /* frames a sequence covers */
   int following;     /* a path to follow from s0 on (else: stay near tx,tz) */
@@ -85,12 +85,12 @@ void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
                    const smgi_steer_envelope* steer, smgi_xform2 W, float s,
                    uint32_t seg);
 /* Append edge `ei` to the sequence in `in` (cw, sw: cosine and sine of
- * in->W.h); `pen_scale` weighs its style penalty; a cost reaching `bound`
- * stops early with an infinite cost. *maxd gets the largest sample
- * distance. */
+ * in->W.h); `pen_scale` weighs its style penalty. Once cost plus penalty
+ * reaches `bound` it stops early with an infinite cost (and only u, f
+ * and pen of *out set): the caller prunes it. */
 void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw,
                    float sw, uint32_t ei, float pen_scale, float bound,
-                   smgi_seq_state* out, float* maxd);
+                   smgi_seq_state* out);
 /* Value of a sequence that stops choosing at `st` (its natural
  * continuation stands for the rest of the window); INFINITY once it
  * cannot beat `bound`. Sets c->leaf_beyond. */

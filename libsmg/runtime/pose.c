@@ -198,8 +198,9 @@ void smgi_pose_model_matrices(const smgi_pose* p, uint32_t joint_count,
   const float* wpos = p->wpos;
   const float* wrot = p->wrot;
 #if SMGI_POSE_SSE
-  /* four joints at a time; the last group pads with identities and only
-   * its real joints are copied out */
+  /* four joints at a time; a last partial group is moved back to end at
+   * J (rewriting a few matrices with the same values), and only a skeleton
+   * of fewer than four joints pads with identities */
   const int world = space == SMG_SPACE_WORLD;
   __m128 yaw = _mm_setzero_ps(), ground = _mm_setzero_ps();
   if (!world) {
@@ -208,28 +209,27 @@ void smgi_pose_model_matrices(const smgi_pose* p, uint32_t joint_count,
     yaw = _mm_loadu_ps(y);
     ground = _mm_setr_ps(p->ground[0], p->ground_y, p->ground[1], 0.0f);
   }
-  uint32_t j = 0;
-  if (world) {
-    for (; j + 4u <= J; j += 4u)
-      smgi_mat4_world_sse(wrot + 4u * j, wpos + 3u * j, matrices + 16u * j);
-  } else {
-    for (; j + 4u <= J; j += 4u)
-      smgi_mat4_character_sse(wrot + 4u * j, wpos + 3u * j, yaw, ground,
-                              matrices + 16u * j);
+  if (J >= 4u) {
+    for (uint32_t j = 0; j < J; j += 4u) {
+      const uint32_t b = j + 4u <= J ? j : J - 4u;
+      if (world)
+        smgi_mat4_world_sse(wrot + 4u * b, wpos + 3u * b, matrices + 16u * b);
+      else
+        smgi_mat4_character_sse(wrot + 4u * b, wpos + 3u * b, yaw, ground,
+                                matrices + 16u * b);
+    }
+    return;
   }
-  if (j < J) {
-    const uint32_t n = J - j;
-    float q[16] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    float pp[12] = {0};
-    float m[64];
-    memcpy(q, wrot + 4u * j, sizeof(float) * 4u * n);
-    memcpy(pp, wpos + 3u * j, sizeof(float) * 3u * n);
-    if (world)
-      smgi_mat4_world_sse(q, pp, m);
-    else
-      smgi_mat4_character_sse(q, pp, yaw, ground, m);
-    memcpy(matrices + 16u * j, m, sizeof(float) * 16u * n);
-  }
+  float q[16] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  float pp[12] = {0};
+  float m[64];
+  memcpy(q, wrot, sizeof(float) * 4u * J);
+  memcpy(pp, wpos, sizeof(float) * 3u * J);
+  if (world)
+    smgi_mat4_world_sse(q, pp, m);
+  else
+    smgi_mat4_character_sse(q, pp, yaw, ground, m);
+  memcpy(matrices, m, sizeof(float) * 16u * J);
 #else
   if (space == SMG_SPACE_WORLD) {
     for (uint32_t j = 0; j < J; ++j)

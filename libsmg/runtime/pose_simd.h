@@ -21,6 +21,8 @@
 #ifndef SMG_POSE_SIMD_H
 #define SMG_POSE_SIMD_H
 
+#include <string.h>
+
 #include "rmath.h"
 
 #include "simd.h"
@@ -140,12 +142,13 @@ static inline __m128 smgi_fk_joint_sse(__m128 prot, __m128 ppos,
   return r;
 }
 
-/* Four column-major matrices from four rotations (x,y,z,w each) and four
- * translations (lanes 0..2), written to m[0 .. 64): smgi_mat_from_c lane by
- * lane, with the products computed on transposed (x, y, z, w) vectors. */
-static inline void smgi_mat4_from_sse(__m128 q0, __m128 q1, __m128 q2,
-                                      __m128 q3, __m128 t0, __m128 t1,
-                                      __m128 t2, __m128 t3, float* m) {
+/* The rotation columns (0..2, each with its w = 0) of four column-major
+ * matrices from four rotations (x, y, z, w each), written to the matrices
+ * at m, m + 16, m + 32, m + 48 (their translation columns untouched):
+ * smgi_mat_from_c lane by lane, with the products computed on transposed
+ * (x, y, z, w) vectors. */
+static inline void smgi_mat4_rot_sse(__m128 q0, __m128 q1, __m128 q2,
+                                     __m128 q3, float* m) {
   const __m128 one = _mm_set1_ps(1.0f), two = _mm_set1_ps(2.0f);
   const __m128 zero = _mm_setzero_ps();
   _MM_TRANSPOSE4_PS(q0, q1, q2, q3); /* q0 = x of the four, q1 = y, ... */
@@ -167,49 +170,55 @@ static inline void smgi_mat4_from_sse(__m128 q0, __m128 q1, __m128 q2,
   __m128 c2y = _mm_mul_ps(two, _mm_sub_ps(yz, xw));
   __m128 c2z = _mm_sub_ps(one, _mm_mul_ps(two, _mm_add_ps(xx, yy)));
   __m128 c2w = zero;
+  /* one column at a time, stored as soon as it is transposed: the
+   * registers hold one column's four joints, not all twelve */
   _MM_TRANSPOSE4_PS(c0x, c0y, c0z, c0w); /* now joint k's first column */
+  _mm_storeu_ps(m, c0x);
+  _mm_storeu_ps(m + 16, c0y);
+  _mm_storeu_ps(m + 32, c0z);
+  _mm_storeu_ps(m + 48, c0w);
   _MM_TRANSPOSE4_PS(c1x, c1y, c1z, c1w);
+  _mm_storeu_ps(m + 4, c1x);
+  _mm_storeu_ps(m + 20, c1y);
+  _mm_storeu_ps(m + 36, c1z);
+  _mm_storeu_ps(m + 52, c1w);
   _MM_TRANSPOSE4_PS(c2x, c2y, c2z, c2w);
-  /* translation column: (x, y, z, 1) */
-  const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
-  const __m128 w1 = _mm_setr_ps(0.0f, 0.0f, 0.0f, 1.0f);
-#define SMGI_MAT_STORE(k, a, b, c, t)                                    \
-  _mm_storeu_ps(m + 16 * (k), (a));                                      \
-  _mm_storeu_ps(m + 16 * (k) + 4, (b));                                  \
-  _mm_storeu_ps(m + 16 * (k) + 8, (c));                                  \
-  _mm_storeu_ps(m + 16 * (k) + 12, _mm_or_ps(_mm_and_ps((t), xyz), w1))
-  SMGI_MAT_STORE(0, c0x, c1x, c2x, t0);
-  SMGI_MAT_STORE(1, c0y, c1y, c2y, t1);
-  SMGI_MAT_STORE(2, c0z, c1z, c2z, t2);
-  SMGI_MAT_STORE(3, c0w, c1w, c2w, t3);
-#undef SMGI_MAT_STORE
+  _mm_storeu_ps(m + 8, c2x);
+  _mm_storeu_ps(m + 24, c2y);
+  _mm_storeu_ps(m + 40, c2z);
+  _mm_storeu_ps(m + 56, c2w);
 }
 
 /* World-space model matrices of four joints from their world rotations
- * q[0 .. 16) and positions p[0 .. 12). */
+ * q[0 .. 16) and positions p[0 .. 12). The translation columns are plain
+ * copies: moved as floats, they need no vector register (the vector
+ * version kept four positions live across the rotation math and spilled
+ * them). */
 static inline void smgi_mat4_world_sse(const float* q, const float* p,
                                        float* m) {
-  smgi_mat4_from_sse(_mm_loadu_ps(q), _mm_loadu_ps(q + 4),
-                     _mm_loadu_ps(q + 8), _mm_loadu_ps(q + 12),
-                     smgi_load3_sse(p), smgi_load3_sse(p + 3),
-                     smgi_load3_sse(p + 6), smgi_load3_sse(p + 9), m);
+  smgi_mat4_rot_sse(_mm_loadu_ps(q), _mm_loadu_ps(q + 4),
+                    _mm_loadu_ps(q + 8), _mm_loadu_ps(q + 12), m);
+  for (int k = 0; k < 4; ++k) {
+    memcpy(m + 16 * k + 12, p + 3 * k, 3u * sizeof(float));
+    m[16 * k + 15] = 1.0f;
+  }
 }
 
 /* The same in character space: the inverse of the ground placement first
- * (rotation yaw, translation -ground = (x, 0, z)). A separate function
- * from the world one, which has no registers to spare for yaw and ground. */
+ * (rotation yaw, translation -ground = (x, 0, z)). */
 static inline void smgi_mat4_character_sse(const float* q, const float* p,
                                            __m128 yaw, __m128 ground,
                                            float* m) {
-  smgi_mat4_from_sse(
-      smgi_q_mul_sse(yaw, _mm_loadu_ps(q)),
-      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 4)),
-      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 8)),
-      smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 12)),
-      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p), ground)),
-      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 3), ground)),
-      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 6), ground)),
-      smgi_q_rotate_sse(yaw, _mm_sub_ps(smgi_load3_sse(p + 9), ground)), m);
+  smgi_mat4_rot_sse(smgi_q_mul_sse(yaw, _mm_loadu_ps(q)),
+                    smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 4)),
+                    smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 8)),
+                    smgi_q_mul_sse(yaw, _mm_loadu_ps(q + 12)), m);
+  for (int k = 0; k < 4; ++k) {
+    const __m128 t = smgi_q_rotate_sse(
+        yaw, _mm_sub_ps(smgi_load3_sse(p + 3 * k), ground));
+    smgi_store3_sse(m + 16 * k + 12, t);
+    m[16 * k + 15] = 1.0f;
+  }
 }
 
 #endif /* SMGI_POSE_SSE */

@@ -24,11 +24,15 @@ typedef struct smgi_steer_envelope {
 
 /* Turning per metre the steering can add at `speed` m/s: its additive
  * term is at most speed / SMGI_STEER_TURN_RADIUS and turn_limit. */
+static inline float smgi_steer_curve_of(float turn_limit, float speed) {
+  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
+  if (speed > 1e-3f && turn_limit / speed < k) k = turn_limit / speed;
+  return k;
+}
+
 static inline float smgi_steer_plan_curve(const smgi_steer_envelope* s,
                                           float speed) {
-  float k = 1.0f / SMGI_STEER_TURN_RADIUS;
-  if (speed > 1e-3f && s->turn_limit / speed < k) k = s->turn_limit / speed;
-  return k;
+  return smgi_steer_curve_of(s->turn_limit, speed);
 }
 
 /* How far off the path (metres) the steering brings motion back within
@@ -64,43 +68,74 @@ static inline float smgi_steer_cut_floor(float slide_ratio) {
   return SMGI_STEER_RATE_MIN * stride;
 }
 
-/* How far off the path the steering can bring motion back within its
- * first `u` metres at `speed` m/s when it also slows down for the turn
- * (smgi_steer_slowest), or cuts it (steer.c: down to
- * smgi_steer_cut_floor, turning at SMGI_STEER_CUT_TURN times the limit
- * and sliding at SMGI_STEER_CUT_SLIDE of the ratio), whichever reaches
- * further: what no correction removes lies beyond this. Counting only
- * the slowing had the planner hand a run to the walk at a hairpin the
- * steering was cutting (a Bandai Namco runner on the scribble, 2.5 m). */
-static inline float smgi_steer_plan_reach_slowed(const smgi_steer_envelope* s,
-                                                 float u, float speed) {
-  smgi_steer_envelope cut = *s;
-  cut.turn_limit *= SMGI_STEER_CUT_TURN;
-  cut.slide_ratio *= SMGI_STEER_CUT_SLIDE;
-  const float slowed = smgi_steer_plan_reach(s, u, speed * smgi_steer_slowest(s));
-  const float cutting =
-      smgi_steer_plan_reach(&cut, u, speed * smgi_steer_cut_floor(s->slide_ratio));
-  return slowed > cutting ? slowed : cutting;
-}
-
 /* e counted at SMGI_STEER_PLAN_WEIGHT within reach, in full beyond */
 static inline float smgi_steer_discount(float e, float reach) {
   if (e <= reach) return SMGI_STEER_PLAN_WEIGHT * e;
   return SMGI_STEER_PLAN_WEIGHT * reach + (e - reach);
 }
 
-/* `d` metres off the path and `a` radians off its direction after the
- * motion travelled `u` metres at `speed` m/s, as the planner should count
- * them. Corrections within reach count SMGI_STEER_PLAN_WEIGHT of
- * themselves, so the planner still prefers motion that needs little
- * correction; beyond reach in full. Unchanged with steering off. */
-static inline void smgi_steer_plan_view(const smgi_steer_envelope* s,
-                                        float u, float speed, float* d,
-                                        float* a) {
-  if (!s->enabled || u <= 0.0f) return;
-  float k = smgi_steer_plan_curve(s, speed);
-  *d = smgi_steer_discount(*d, 0.5f * (s->slide_ratio * u + 0.5f * k * u * u));
-  *a = smgi_steer_discount(*a, 0.5f * k * u);
+/* What the planner's search reads of the envelope for each root sample
+ * it values (smgi_steer_plan_view), derived once per search by
+ * smgi_steer_plan_of: the limits of the steering slowing down for a turn
+ * (smgi_steer_slowest) and of it cutting one (steer.c: down to
+ * smgi_steer_cut_floor, turning at SMGI_STEER_CUT_TURN times the limit
+ * and sliding at SMGI_STEER_CUT_SLIDE of the ratio) beside its own. Every
+ * sample re-derived them (a tenth of a sample's instructions). */
+typedef struct smgi_steer_plan {
+  uint32_t enabled;      /* steering on */
+  float turn_limit;      /* the envelope's */
+  float slide_ratio;     /* the envelope's */
+  float slow_share;      /* smgi_steer_slowest */
+  float cut_share;       /* smgi_steer_cut_floor of the slide ratio */
+  float cut_turn_limit;  /* turn_limit * SMGI_STEER_CUT_TURN */
+  float cut_slide_ratio; /* slide_ratio * SMGI_STEER_CUT_SLIDE */
+} smgi_steer_plan;
+
+static inline smgi_steer_plan smgi_steer_plan_of(const smgi_steer_envelope* s) {
+  smgi_steer_plan p;
+  p.enabled = s->enabled;
+  p.turn_limit = s->turn_limit;
+  p.slide_ratio = s->slide_ratio;
+  p.slow_share = smgi_steer_slowest(s);
+  p.cut_share = smgi_steer_cut_floor(s->slide_ratio);
+  p.cut_turn_limit = s->turn_limit * SMGI_STEER_CUT_TURN;
+  p.cut_slide_ratio = s->slide_ratio * SMGI_STEER_CUT_SLIDE;
+  return p;
+}
+
+/* One root sample `*d` metres off the path and `*a` radians off its
+ * direction after the motion travelled `u` metres at `speed` m/s:
+ * returns the part of *d that no correction removes, and turns *d and *a
+ * into what the planner should count of them.
+ *  - What no correction removes lies beyond the reach of the steering
+ *    slowing down for the turn or cutting it, whichever reaches further
+ *    (smgi_steer_plan_reach at the slowed speed and limits). Counting
+ *    only the slowing had the planner hand a run to the walk at a hairpin
+ *    the steering was cutting (a Bandai Namco runner on the scribble,
+ *    2.5 m).
+ *  - Corrections within the steering's reach at the motion's own speed
+ *    count SMGI_STEER_PLAN_WEIGHT of themselves (smgi_steer_discount), so
+ *    the planner still prefers motion that needs little correction;
+ *    beyond reach in full. Unchanged with steering off.
+ * The arithmetic is smgi_steer_plan_reach's for each of them: the plain envelope's turning k moves the motion sideways
+ * by half of slide u + k u^2 / 2 and turns it by half of k u. */
+static inline float smgi_steer_plan_view(const smgi_steer_plan* p, float u,
+                                           float speed, float* d, float* a) {
+  const float e = *d;
+  if (!p->enabled || u <= 0.0f) return e > 0.0f ? e : 0.0f;
+  const float k = smgi_steer_curve_of(p->turn_limit, speed);
+  const float k_slow =
+      smgi_steer_curve_of(p->turn_limit, speed * p->slow_share);
+  const float k_cut =
+      smgi_steer_curve_of(p->cut_turn_limit, speed * p->cut_share);
+  const float slide = p->slide_ratio * u;
+  const float slowed = 0.5f * (slide + 0.5f * k_slow * u * u);
+  const float cutting = 0.5f * (p->cut_slide_ratio * u + 0.5f * k_cut * u * u);
+  const float reach = slowed > cutting ? slowed : cutting;
+  const float turn = 0.5f * k * u;
+  *d = smgi_steer_discount(e, 0.5f * (slide + turn * u));
+  *a = smgi_steer_discount(*a, turn);
+  return e > reach ? e - reach : 0.0f;
 }
 
 #endif /* SMG_STEER_ENVELOPE_H */

@@ -49,9 +49,10 @@
                                     the steering's reach (m) over which the
                                     wanted style yields to the agile one */
 #define SMGI_YIELD_DRIFT 0.25f   /* ... or the character's distance from
-                                    the path (m): failing to follow
-                                    (a run's bound is its own cut,
-                                    planner.c yield_drift) */
+                                    the path (m) while the best sequence
+                                    stays as far off beyond the reach:
+                                    failing to follow (a run's bound is
+                                    its own cut, planner.c yield_drift) */
 #define SMGI_SEQ_COMMIT_FRAMES 12.0f /* frames of the best sequence
                                         committed at once */
 

@@ -31,11 +31,14 @@ static void usage(void) {
           "usage: smg-eval [--shared DIR] [--out results.md] [--img DIR]\n"
           "                [--manifest data/cmu.manifest] [--keep DIR]\n"
           "                [--bandai-manifest data/bandai.manifest]\n"
+          "                [--bandai-dir DIR]\n"
           "       smg-eval --check [--shared DIR] [--default-blob FILE]\n"
           "--keep DIR also writes the baked blobs and per-path CSV traces "
           "to DIR\n"
           "--only follow|behaviour runs just the bake and that section "
-          "(report to --out)\n");
+          "(report to --out)\n"
+          "--bandai-dir DIR reads the Bandai Namco manifest's clips from DIR "
+          "(default:\n  SHARED/mocap/bandai-namco)\n");
 }
 
 /* First line of a command's output (trailing newline removed). */
@@ -185,6 +188,7 @@ static int file_readable(const char* path) {
 int main(int argc, char** argv) {
   eval_ctx ctx;
   const char* shared = NULL;
+  const char* bandai_dir = NULL; /* --bandai-dir: another folder of clips */
   const char* out_path = "docs/results.md";
   const char* img_dir = "docs/img";
   char probe[1200], tmp_out[1200];
@@ -212,6 +216,8 @@ int main(int argc, char** argv) {
       ctx.manifest = argv[++i];
     else if (!strcmp(argv[i], "--bandai-manifest") && i + 1 < argc)
       ctx.bandai_manifest = argv[++i];
+    else if (!strcmp(argv[i], "--bandai-dir") && i + 1 < argc)
+      bandai_dir = argv[++i];
     else if (!strcmp(argv[i], "--only") && i + 1 < argc)
       ctx.only = argv[++i];
     else if (!strcmp(argv[i], "--check"))
@@ -236,8 +242,11 @@ int main(int argc, char** argv) {
   snprintf(ctx.cmu_dir, sizeof(ctx.cmu_dir), "%s/mocap/cmu", shared);
   eval_cmu_clip(&ctx, "09_12", probe, sizeof(probe));
   ctx.have_cmu = file_readable(probe);
-  snprintf(ctx.bandai_dir, sizeof(ctx.bandai_dir), "%s/mocap/bandai-namco",
-           shared);
+  if (bandai_dir)
+    snprintf(ctx.bandai_dir, sizeof(ctx.bandai_dir), "%s", bandai_dir);
+  else
+    snprintf(ctx.bandai_dir, sizeof(ctx.bandai_dir), "%s/mocap/bandai-namco",
+             shared);
   snprintf(probe, sizeof(probe), "%s/dataset-2_walk_normal_001.bvh",
            ctx.bandai_dir);
   ctx.have_bandai = file_readable(probe);
