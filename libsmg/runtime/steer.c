@@ -711,10 +711,13 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
  * the correction (unit steps, so a turn slowing down is not judged by
  * its faster way in), beyond the sway's residue, is turned out of the
  * pose alone, about the ground point, at most body_max (the angle the
- * slide bound lets the body crab) and over SMGI_STEER_HEADING_TIME; the
- * plan and the ground transform are left alone (turning them would
- * turn the travel with the body). Angles this small are taken as their
- * sines. `fade` scales it (0: back to none, as at the end). */
+ * slide bound lets the body crab); the plan and the ground transform are
+ * left alone (turning them would turn the travel with the body). The two
+ * low-passes already smooth it: a further one delayed it past the
+ * lead's changes (a turning step coming in), and the body swung late
+ * (other performers' p95 up to 10.6 degrees, 8.6 without). Angles this
+ * small are taken as their sines. `fade` scales it (0: back to none, as
+ * at the end). */
 static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float ox,
                              float oz, float dt, float fade) {
   const float kl = dt / (SMGI_STEER_LEAD_SMOOTH + dt);
@@ -738,10 +741,9 @@ static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float ox,
       want = -fade * (off > 0.0f ? (beyond < s->body_max ? beyond : s->body_max)
                                  : -(beyond < s->body_max ? beyond : s->body_max));
   }
-  s->body_turn += (want - s->body_turn) * dt / (SMGI_STEER_HEADING_TIME + dt);
-  /* back to none: exactly none, and nothing to turn */
-  if (want == 0.0f && fabsf(s->body_turn) < SMGI_STEER_BODY_REST)
-    s->body_turn = 0.0f;
+  /* at most as fast as the heading correction turns: no pop where the
+   * low-passed directions start to count (a walk's first steps) */
+  s->body_turn = approach(s->body_turn, want, s->turn_limit * dt);
   if (s->body_turn == 0.0f) return;
   /* the half angle's sine and cosine by their series (|x| <= 0.13: the
    * next terms are below 1e-8), the turn's by the double angle */

@@ -28,7 +28,7 @@
  * without mirrors so that it leads one way all along: what the slide
  * leaves is turned out of the body's pose (steer.c, body_onto_travel),
  * 95th percentile within WIDE_LINE_DEG and WIDE_CURVE_DEG. Without that,
- * 6.0 and 6.3 degrees; with it, 2.7 and 3.0.
+ * 6.0 and 6.3 degrees; with it, 2.6 and 2.9.
  *
  * Walking off 90 degrees to either side after a walk of 6-11 m, its stop
  * and 2 s standing (a turn on the spot, then the walk): the same 95th
