@@ -175,13 +175,16 @@ static inline void smgi_quat_unpack4_sse(const unsigned char* p, __m128* x,
   *w = _mm_xor_ps(S, drs);
 }
 
-static inline void smgi_pose_nlerp4_sse(const unsigned char* a,
-                                        const unsigned char* b, float t,
-                                        float* out) {
-  __m128 ax, ay, az, aw, bx, by, bz, bw, d, s, u, ox, oy, oz, ow, inv;
+/* The nlerp half of smgi_pose_nlerp4_sse: out[0 .. 16) = nlerp of the
+ * rotations given as x, y, z, w vectors (lane k = joint k), as decoded by
+ * smgi_quat_unpack4_sse (what a caller that keeps decoded records hands
+ * in). */
+static inline void smgi_nlerp4_sse(__m128 ax, __m128 ay, __m128 az,
+                                   __m128 aw, __m128 bx, __m128 by,
+                                   __m128 bz, __m128 bw, float t,
+                                   float* out) {
+  __m128 d, s, u, ox, oy, oz, ow, inv;
   const __m128 tv = _mm_set1_ps(t);
-  smgi_quat_unpack4_sse(a, &ax, &ay, &az, &aw);
-  smgi_quat_unpack4_sse(b, &bx, &by, &bz, &bw);
   d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)),
                             _mm_mul_ps(az, bz)),
                  _mm_mul_ps(aw, bw));
@@ -208,6 +211,15 @@ static inline void smgi_pose_nlerp4_sse(const unsigned char* a,
   _mm_storeu_ps(out + 4, oy);
   _mm_storeu_ps(out + 8, oz);
   _mm_storeu_ps(out + 12, ow);
+}
+
+static inline void smgi_pose_nlerp4_sse(const unsigned char* a,
+                                        const unsigned char* b, float t,
+                                        float* out) {
+  __m128 ax, ay, az, aw, bx, by, bz, bw;
+  smgi_quat_unpack4_sse(a, &ax, &ay, &az, &aw);
+  smgi_quat_unpack4_sse(b, &bx, &by, &bz, &bw);
+  smgi_nlerp4_sse(ax, ay, az, aw, bx, by, bz, bw, t, out);
 }
 #endif
 

@@ -19,8 +19,8 @@
 static size_t align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
 typedef struct layout {
-  size_t constraints, events, queue, rot, tmp, snap, wpos, wrot, legs, xz, cum,
-      total;
+  size_t constraints, events, queue, rot, tmp, snap, wpos, wrot, decoded,
+      legs, xz, cum, total;
 } layout;
 
 /* Hot data first: what every step touches (the struct, the pose and its
@@ -37,6 +37,8 @@ static void compute_layout(uint32_t J, uint32_t path_cap, uint32_t cons_cap,
   o += align16(sizeof(float) * 3u * J);
   l->wrot = o;
   o += align16(sizeof(float) * 4u * J);
+  l->decoded = o;
+  o += align16(sizeof(float) * 2u * smgi_decoded_floats(J));
   l->legs = o;
   o += align16(sizeof(uint32_t) * 2u * J);
   l->queue = o;
@@ -195,6 +197,9 @@ SMG_API smg_result smg_character_create(smg_graph* graph,
   ch->upper.snap = (float*)(mem + l.snap);
   ch->pose.wpos = (float*)(mem + l.wpos);
   ch->pose.wrot = (float*)(mem + l.wrot);
+  ch->pose.decoded.rot =
+      smgi_decoded_floats(J) ? (float*)(mem + l.decoded) : NULL;
+  ch->pose.decoded.frame[0] = ch->pose.decoded.frame[1] = SMGI_NONE;
   ch->ik.leg_joints = (uint32_t*)(mem + l.legs);
   /* the crossfade snapshot (4J floats, unused until the first switch) as
    * J bytes of scratch: ch->pose.tmp no longer exists for skeletons that fit

@@ -67,6 +67,27 @@ typedef enum smgi_joint_set {
   SMGI_JOINTS_UPPER      /* SMG_BODY_UPPER joints only */
 } smgi_joint_set;
 
+/* The last POSE records a character's pose decoded (smgi_sample_frames),
+ * kept as four-joint groups of x, y, z, w vectors: at 60 steps a second
+ * on 30 fps data each record is sampled on about four steps (twice as
+ * either end of the blend), and decoding was most of the sampling's cost.
+ * Slots are filled on demand; `rot` is NULL where records are not kept
+ * (no SSE2, or fewer than five joints). */
+typedef struct smgi_decoded {
+  uint32_t frame[2]; /* SMGI_NONE: empty */
+  float* rot;        /* 2 * smgi_decoded_floats(J), or NULL */
+} smgi_decoded;
+
+/* Floats one slot of smgi_decoded takes for a skeleton of J joints (0:
+ * records are not kept). */
+uint32_t smgi_decoded_floats(uint32_t joint_count);
+
+/* smgi_sample_joints of POSE records fa and fb, the same bits, decoding
+ * through `dec` (straight from the records when its buffer is NULL). */
+void smgi_sample_frames(const smg_graph* g, uint32_t fa, uint32_t fb,
+                        float t, smgi_joint_set set, smgi_decoded* dec,
+                        float* out);
+
 /* out[4j .. 4j+4) = nlerp of joint j's rotations in POSE records ra and rb
  * at t, for the joints of `set` (others untouched); packed rotations are
  * decoded straight into the nlerp, four joints at a time where four

@@ -95,18 +95,128 @@ static void compute_hops(const smgi_node* nodes, uint32_t node_count,
   }
 }
 
-/* edge_hops (graph_derived.h): per style, each lower edge's from and to
- * hop counts of lower_hops, edge by edge. */
-static void build_edge_hops(const smgi_graph_data* d, const uint8_t* hops,
-                            uint8_t* edge_hops) {
-  const size_t S = d->style_count, E = d->lower_edge_count;
-  for (size_t st = 0; st < S; ++st) {
-    uint8_t* o = edge_hops + 2u * E * st;
-    for (size_t e = 0; e < E; ++e) {
-      o[2u * e] = hops[S * d->lower_edges[e].from + st];
-      o[2u * e + 1u] = hops[S * d->lower_edges[e].to + st];
+/* edge_style_time's value for `frames` of motion at `fps`: in steps of
+ * 1 / SMGI_STYLE_TIME_HZ s, rounded to nearest, capped at
+ * SMGI_STYLE_TIME_FAR. */
+static uint8_t style_time_steps(uint32_t frames, double fps) {
+  const double q = floor((double)frames * (SMGI_STYLE_TIME_HZ / fps) + 0.5);
+  return q < (double)SMGI_STYLE_TIME_FAR ? (uint8_t)q
+                                         : (uint8_t)SMGI_STYLE_TIME_FAR;
+}
+
+/* The fewest frames of motion that edge_style_time holds as
+ * SMGI_STYLE_TIME_FAR: the searches below stop there. */
+static uint32_t style_time_limit(double fps) {
+  uint32_t f = 0;
+  while (style_time_steps(f, fps) < SMGI_STYLE_TIME_FAR) ++f;
+  return f;
+}
+
+/* edge_style_time (graph_derived.h): per style a Dijkstra over reversed
+ * lower edges, weighted by their frame counts, from every node with an
+ * out-edge of the style, up to `limit` frames (style_time_limit). The
+ * distances are whole frames below `limit`, so the queue is a bucket per
+ * frame (Dial's algorithm): node n waits in a doubly linked list
+ * (next[n], prev[n]) from head[dist[n]], and a shorter distance moves it
+ * (a binary heap took twice as long here on a big graph). `in_first` /
+ * `in_from` / `in_frames` is the reverse adjacency (build_reverse_frames),
+ * `dist`, `next` and `prev` node_count scratch each, `head` `limit` and
+ * `steps_of` `limit` bytes (each distance's value, computed once); `hops`
+ * (lower_hops) tells "far" from "unreachable". Returns the hop equivalent
+ * of one step (style_time_hop, graph_derived.h). */
+static float build_edge_style_time(const smgi_graph_data* d,
+                                   const uint8_t* hops, uint32_t limit,
+                                   const uint32_t* in_first,
+                                   const uint32_t* in_from,
+                                   const uint32_t* in_frames, uint32_t* dist,
+                                   uint32_t* next, uint32_t* prev,
+                                   uint32_t* head, uint8_t* steps_of,
+                                   uint8_t* out) {
+  const uint32_t N = d->lower_node_count, S = d->style_count;
+  const uint32_t E = d->lower_edge_count;
+  const smgi_edge* edges = d->lower_edges;
+  const double fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0;
+  uint64_t sum_hops = 0, sum_steps = 0;
+  for (uint32_t f = 0; f < limit; ++f) steps_of[f] = style_time_steps(f, fps);
+  for (uint32_t st = 0; st < S; ++st) {
+    for (uint32_t f = 0; f < limit; ++f) head[f] = SMGI_NONE;
+    for (uint32_t n = 0; n < N; ++n) {
+      dist[n] = UINT32_MAX;
+      if (hops[(size_t)n * S + st] != 0u) continue;
+      dist[n] = 0;
+      prev[n] = SMGI_NONE;
+      next[n] = head[0];
+      if (head[0] != SMGI_NONE) prev[head[0]] = n;
+      head[0] = n;
+    }
+    for (uint32_t f = 0; f < limit; ++f) {
+      while (head[f] != SMGI_NONE) {
+        const uint32_t n = head[f];
+        head[f] = next[n];
+        if (next[n] != SMGI_NONE) prev[next[n]] = SMGI_NONE;
+        for (uint32_t k = in_first[n]; k < in_first[n + 1u]; ++k) {
+          const uint32_t from = in_from[k], w = in_frames[k];
+          if (w >= limit - f || f + w >= dist[from]) continue;
+          if (dist[from] != UINT32_MAX) { /* waiting: out of its bucket */
+            const uint32_t p = prev[from], x = next[from];
+            if (p != SMGI_NONE)
+              next[p] = x;
+            else
+              head[dist[from]] = x;
+            if (x != SMGI_NONE) prev[x] = p;
+          }
+          dist[from] = f + w;
+          prev[from] = SMGI_NONE;
+          next[from] = head[f + w];
+          if (head[f + w] != SMGI_NONE) prev[head[f + w]] = from;
+          head[f + w] = from;
+        }
+      }
+    }
+    /* each node's value once (in the links' place, free now), then the
+     * edges' pairs from it; nodes a step or more away and within the cap
+     * tell what one step is worth in hops, on average */
+    uint8_t* col = (uint8_t*)next;
+    for (uint32_t n = 0; n < N; ++n) {
+      const uint8_t h = hops[(size_t)n * S + st];
+      uint8_t t = SMGI_HOPS_UNREACHABLE;
+      if (h != SMGI_HOPS_UNREACHABLE)
+        t = dist[n] < limit ? steps_of[dist[n]] : SMGI_STYLE_TIME_FAR;
+      col[n] = t;
+      if (t > 0u && t < SMGI_STYLE_TIME_FAR) {
+        sum_hops += h;
+        sum_steps += t;
+      }
+    }
+    uint8_t* o = out + 2u * (size_t)E * st;
+    for (uint32_t e = 0; e < E; ++e) {
+      o[2u * (size_t)e] = col[edges[e].from];
+      o[2u * (size_t)e + 1u] = col[edges[e].to];
     }
   }
+  return sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps)
+                        : 1.0f;
+}
+
+/* The lower graph's reverse adjacency with each edge's frame count: the
+ * edges into n come from in_from[k] and last in_frames[k] frames, k in
+ * [in_first[n], in_first[n + 1]) (in_first node_count + 1 entries, the
+ * others edge_count). Side by side, so that the searches below read them
+ * in order: an edge record per relaxation was a cache miss of its own on
+ * a big graph (76k edges of 48 bytes, read once per style). */
+static void build_reverse_frames(const smgi_edge* edges, uint32_t edge_count,
+                                 uint32_t node_count, uint32_t* in_first,
+                                 uint32_t* in_from, uint32_t* in_frames) {
+  memset(in_first, 0, sizeof(uint32_t) * ((size_t)node_count + 1u));
+  for (uint32_t e = 0; e < edge_count; ++e) in_first[edges[e].to + 1u]++;
+  for (uint32_t n = 0; n < node_count; ++n) in_first[n + 1u] += in_first[n];
+  for (uint32_t e = 0; e < edge_count; ++e) {
+    const uint32_t k = in_first[edges[e].to]++; /* cursor, restored below */
+    in_from[k] = edges[e].from;
+    in_frames[k] = edges[e].frame_count;
+  }
+  for (uint32_t n = node_count; n > 0; --n) in_first[n] = in_first[n - 1u];
+  in_first[0] = 0;
 }
 
 /* Reverse adjacency of one graph into caller scratch: the nodes with an
@@ -903,8 +1013,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   /* node_next first: 64-byte aligned records at the tables' start */
   size_t off_nx = 0;
   size_t off_lh = off_nx + sizeof(smgi_node_next) * (size_t)LN;
-  size_t off_eh = off_lh + align16((size_t)LN * S);
-  size_t off_uh = off_eh + align16((size_t)d->lower_edge_count * 2u * S);
+  size_t off_et = off_lh + align16((size_t)LN * S);
+  size_t off_uh = off_et + align16((size_t)d->lower_edge_count * 2u * S);
   size_t off_sf = off_uh + align16((size_t)UN * A);
   size_t off_af = off_sf + align16(sizeof(uint32_t) * ((size_t)F + 1u));
   size_t off_se = off_af + align16(sizeof(uint32_t) * (size_t)A);
@@ -925,6 +1035,15 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   size_t walk_size = sizeof(walk_step) * (size_t)LN;
   size_t turn_size = turn_scratch_size(d);
   if (turn_size == 0) return SMG_ERROR_OUT_OF_MEMORY;
+  /* edge_style_time: reverse adjacency with frame counts, dist, the
+   * buckets' links and heads, each distance's value */
+  const uint32_t time_limit = style_time_limit(
+      d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0);
+  size_t time_size =
+      sizeof(uint32_t) * (4u * (size_t)LN + 1u +
+                          2u * (size_t)d->lower_edge_count + time_limit) +
+      time_limit;
+  if (time_size > scratch_size) scratch_size = time_size;
   if (walk_size > scratch_size) scratch_size = walk_size;
   if (turn_size > scratch_size) scratch_size = turn_size;
 
@@ -944,7 +1063,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   uint8_t* base =
       mem + block + ((64u - ((uintptr_t)(mem + block) & 63u)) & 63u);
   uint8_t* lower_hops = base + off_lh;
-  uint8_t* edge_hops = base + off_eh;
+  uint8_t* edge_style_time = base + off_et;
   uint8_t* upper_hops = base + off_uh;
   uint32_t* splice_first = (uint32_t*)(base + off_sf);
   uint32_t* action_first = (uint32_t*)(base + off_af);
@@ -967,7 +1086,17 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   build_reverse(d->lower_edges, d->lower_edge_count, LN, in_first, in_from);
   compute_hops(d->lower_nodes, LN, d->lower_edges, S, in_first, in_from,
                queue, col, lower_hops);
-  build_edge_hops(d, lower_hops, edge_hops);
+  {
+    uint32_t* rev_from = in_first + LN + 1u;
+    uint32_t* rev_frames = rev_from + d->lower_edge_count;
+    uint32_t* dist = rev_frames + d->lower_edge_count;
+    build_reverse_frames(d->lower_edges, d->lower_edge_count, LN, in_first,
+                         rev_from, rev_frames);
+    dv->style_time_hop = build_edge_style_time(
+        d, lower_hops, time_limit, in_first, rev_from, rev_frames, dist,
+        dist + LN, dist + 2u * (size_t)LN, dist + 3u * (size_t)LN,
+        (uint8_t*)(dist + 3u * (size_t)LN + time_limit), edge_style_time);
+  }
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,
                queue, col, upper_hops);
@@ -998,7 +1127,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   dv->node_next = nx;
 
   dv->lower_hops = lower_hops;
-  dv->edge_hops = edge_hops;
+  dv->edge_style_time = edge_style_time;
   dv->upper_hops = upper_hops;
   dv->splice_first = splice_first;
   dv->action_first_edge = action_first;

@@ -17,6 +17,9 @@
 #include "tuning.h"
 
 #define SMGI_HOPS_UNREACHABLE 255u
+/* edge_style_time's unit (1 / this seconds) and its cap (8.5 s) */
+#define SMGI_STYLE_TIME_HZ 30.0
+#define SMGI_STYLE_TIME_FAR 254u
 
 /* What the sequence search reads of lower node n where it stops choosing
  * (smgi_seq_leaf), in one 128-byte record aligned to 64 bytes (two cache
@@ -87,19 +90,33 @@ typedef struct smgi_derived {
   /* lower_hops[node * style_count + style]: number of edges to traverse
    * from `node` before an out-edge labelled `style` is available (0: the
    * node itself has one); SMGI_HOPS_UNREACHABLE when none can be reached.
-   * Drives transition planning: near a transition point the planner
-   * prefers edges whose `to` node is fewer hops from the target style. */
+   * What tells edge_style_time's "far" from "unreachable", and its hop
+   * worth (style_time_hop). */
   const uint8_t* lower_hops;
-  /* lower_hops again per style and lower edge, of the edge's from node
-   * (edge_hops[2 * (style * lower_edge_count + edge)]) and its to node
-   * (the byte after): the search's style term reads both for an edge it
-   * weighs against the wanted style. A node's out-edges are contiguous,
-   * so their pairs are too (on a big graph every `to` row in lower_hops
-   * was a cache miss of its own), and a style's pairs for all edges are
-   * 2 bytes an edge: for the few styles a crowd wants at once they stay
-   * in the cache (rows per edge, all styles side by side, were 2 *
-   * style_count bytes an edge, most of them never read). */
-  const uint8_t* edge_hops;
+  /* Per style and lower edge, how much motion lies between the edge's
+   * from node (edge_style_time[2 * (style * lower_edge_count + edge)]) and
+   * its to node (the byte after) and an out-edge of the style: the
+   * shortest sum of edge durations to a node that has one, in steps of
+   * 1 / SMGI_STYLE_TIME_HZ s (rounded; SMGI_STYLE_TIME_FAR at and beyond
+   * that, SMGI_HOPS_UNREACHABLE where lower_hops says no path exists).
+   * The search's style term reads both for an edge it weighs against the
+   * wanted style, in hops (style_time_hop). Time, not edges: a clip's
+   * edges are many and short where transitions leave it often, so a hop
+   * count made a detour through a third style (a few long edges, each
+   * near the wanted style) look nearer than the direct transition a few
+   * short edges along the old style. A node's out-edges are contiguous,
+   * so their pairs are too (on a big graph every `to` row of a node table
+   * was a cache miss of its own), and a style's pairs for all edges are 2
+   * bytes an edge: for the few styles a crowd wants at once they stay in
+   * the cache. */
+  const uint8_t* edge_style_time;
+  /* What one step of edge_style_time weighs in hops: the graph's hop
+   * counts over its times, summed over every node and style a step or
+   * more (and less than the cap) away. The search's style weight was set
+   * per hop; in these units the same weight holds on average on any
+   * graph, and hop for hop (to the steps' rounding) on one whose edges
+   * all last as long. */
+  float style_time_hop;
   /* Same as lower_hops for the upper graph and actions. */
   const uint8_t* upper_hops;
   /* Splices at lower frame f are splices[splice_first[f] ..

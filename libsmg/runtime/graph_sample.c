@@ -2,7 +2,9 @@
  * graph_sample.c - joint rotations of two of the graph's POSE records
  * blended at t (graph_data.h): what the pose (lower body) and the
  * upper body sample their frames with. Packed rotations are decoded
- * straight into the nlerp, four joints at a time with SSE2 (pose_simd.h).
+ * straight into the nlerp, four joints at a time with SSE2 (pose_simd.h);
+ * the pose's own records go through the two decoded slots a character
+ * keeps (smgi_sample_frames), since each is blended on about four steps.
  */
 #include <string.h>
 
@@ -59,4 +61,94 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
     smgi_q_nlerp(ja, jb, t, out + 4u * j);
   }
 #undef WANTED
+}
+
+uint32_t smgi_decoded_floats(uint32_t joint_count) {
+#if SMGI_QPACK_SSE
+  /* one group per four joints from joint 1, the last moved back to end
+   * at J (smgi_sample_joints' grouping) */
+  if (joint_count >= 5u) return 16u * ((joint_count - 1u + 3u) / 4u);
+#endif
+  (void)joint_count;
+  return 0u;
+}
+
+#if SMGI_QPACK_SSE
+/* The slot holding record `frame`, or SMGI_NONE. */
+static uint32_t find_record(const smgi_decoded* dec, uint32_t frame) {
+  return dec->frame[0] == frame ? 0u : dec->frame[1] == frame ? 1u : SMGI_NONE;
+}
+
+/* Decode record `frame` into slot k. */
+static void decode_record(const smg_graph* g, smgi_decoded* dec,
+                          uint32_t frame, uint32_t k) {
+  const uint32_t J = g->data.joint_count;
+  float* v = dec->rot + (size_t)k * smgi_decoded_floats(J);
+  const unsigned char* q = smgi_pose_rot(smgi_graph_pose(g, frame), 0);
+  for (uint32_t j = 1; j < J; j += 4u, v += 16) {
+    const uint32_t base = j + 4u <= J ? j : J - 4u;
+    __m128 x, y, z, w;
+    smgi_quat_unpack4_sse(q + SMGI_QPACK_BYTES * base, &x, &y, &z, &w);
+    _mm_storeu_ps(v, x);
+    _mm_storeu_ps(v + 4, y);
+    _mm_storeu_ps(v + 8, z);
+    _mm_storeu_ps(v + 12, w);
+  }
+  dec->frame[k] = frame;
+}
+#endif
+
+void smgi_sample_frames(const smg_graph* g, uint32_t fa, uint32_t fb,
+                        float t, smgi_joint_set set, smgi_decoded* dec,
+                        float* out) {
+#if SMGI_QPACK_SSE
+  const uint32_t J = g->data.joint_count;
+  if (dec->rot != NULL && smgi_decoded_floats(J) != 0u) {
+    const smgi_joint* joints = g->data.joints;
+    const uint32_t n = smgi_decoded_floats(J);
+    /* a record not held goes into the slot the other end is not in: on
+     * to the next frame, the newer of the two stays */
+    uint32_t sa = find_record(dec, fa);
+    if (sa == SMGI_NONE) {
+      sa = find_record(dec, fb) == 0u ? 1u : 0u;
+      decode_record(g, dec, fa, sa);
+    }
+    uint32_t sb = find_record(dec, fb);
+    if (sb == SMGI_NONE) {
+      sb = sa ^ 1u;
+      decode_record(g, dec, fb, sb);
+    }
+    const float* va = dec->rot + (size_t)sa * n;
+    const float* vb = dec->rot + (size_t)sb * n;
+    const int all = set == SMGI_JOINTS_ALL;
+    for (uint32_t j = 1, i = 0; j < J; j += 4u, ++i) {
+      const uint32_t base = j + 4u <= J ? j : J - 4u;
+      unsigned want = 15u;
+      if (!all) {
+        want = 0u;
+        for (uint32_t k = 0; k < 4u; ++k)
+          if ((set == SMGI_JOINTS_UPPER) ==
+              (joints[base + k].body_part == SMG_BODY_UPPER))
+            want |= 1u << k;
+        if (want == 0u) continue;
+      }
+      float q[16];
+      const float* a = va + 16u * i;
+      const float* b = vb + 16u * i;
+      smgi_nlerp4_sse(_mm_loadu_ps(a), _mm_loadu_ps(a + 4),
+                      _mm_loadu_ps(a + 8), _mm_loadu_ps(a + 12),
+                      _mm_loadu_ps(b), _mm_loadu_ps(b + 4),
+                      _mm_loadu_ps(b + 8), _mm_loadu_ps(b + 12), t,
+                      want == 15u ? out + 4u * base : q);
+      if (want != 15u)
+        for (uint32_t k = 0; k < 4u; ++k)
+          if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
+    }
+    return;
+  }
+#else
+  (void)dec;
+#endif
+  smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), t,
+                     set, out);
 }

@@ -104,4 +104,11 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
       out->floor = fminf(p[0][1], p[1][1]) - info->ground_height;
     }
   }
+  /* how far the chosen stretch's hips stray from where it begins */
+  const float* a = d->frames[out->first].root2d;
+  for (uint32_t i = 1; i < out->count; ++i) {
+    const float* b = d->frames[out->first + i].root2d;
+    const float dx = b[0] - a[0], dz = b[1] - a[1];
+    out->sway = fmaxf(out->sway, sqrtf(dx * dx + dz * dz));
+  }
 }

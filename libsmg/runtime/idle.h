@@ -26,6 +26,10 @@ typedef struct smgi_idle {
   float toe[2][2];
   float floor;           /* the lower toe's height there (POSE space less
                             the ground height): where the motion's floor is */
+  /* how far its hips' ground point strays from where it stands at
+   * `first` (m, most over the stretch): a performer shifting weight while
+   * waving stands a few centimetres off the spot the settling aims for */
+  float sway;
   /* how long a foot swings in the graph's locomotion (median of its
    * labelled swings, seconds): the steps made at rest take as long */
   float swing_seconds;

@@ -122,6 +122,13 @@ void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
   if (heading) *heading = segment_heading(p, i);
 }
 
+uint32_t smgi_path_find(const smgi_path* p, float s, uint32_t hint) {
+  if (p->count < 2u) return 0u;
+  if (s < 0.0f) s = 0.0f;
+  if (s > p->length) s = p->length;
+  return find_segment(p, s, hint);
+}
+
 float smgi_path_heading(const smgi_path* p, uint32_t seg) {
   if (p->count < 2u) return 0.0f;
   return segment_heading(p, seg <= p->count - 2u ? seg : p->count - 2u);

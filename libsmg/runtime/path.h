@@ -17,13 +17,28 @@ typedef struct smgi_path {
 } smgi_path;
 
 void smgi_path_reset(smgi_path* p);
+/* The segment arc length s (clamped to [0, length]) lies on: the last i
+ * with cum[i] <= s, walked to from segment `hint`; 0 for a path of fewer
+ * than two points. */
+uint32_t smgi_path_find(const smgi_path* p, float s, uint32_t hint);
+/* The heading smgi_path_eval reports on segment `seg` (an atan2: callers
+ * that evaluate several points on one segment ask once). */
+float smgi_path_heading(const smgi_path* p, uint32_t seg);
+
+/* smgi_path_find, answered inline when s lies on the hint's own segment:
+ * queries move a little at a time (steering, planning, rest), so most do. */
+static inline uint32_t smgi_path_segment(const smgi_path* p, float s,
+                                         uint32_t hint) {
+  if (hint + 1u < p->count && s >= p->cum[hint] && s <= p->cum[hint + 1u] &&
+      s <= p->length)
+    return hint;
+  return smgi_path_find(p, s, hint);
+}
+
 /* Point and tangent heading at arc length s (clamped); *seg is a hint in
  * and the segment out. */
 void smgi_path_eval(const smgi_path* p, float s, uint32_t* seg, float* x,
                     float* z, float* heading);
-/* The heading smgi_path_eval reports on segment `seg` (an atan2: callers
- * that evaluate several points on one segment ask once). */
-float smgi_path_heading(const smgi_path* p, uint32_t seg);
 /* Nearest point search starting at segment *seg, walking while the
  * distance shrinks (bounded steps). Returns arc length, writes *seg and the
  * distance. */

@@ -9,14 +9,24 @@
 #include <math.h>
 #include <string.h>
 
+/* The small helpers below run for every root sample or edge the search
+ * weighs: inlined even where the compiler's size heuristics would make
+ * calls of them (which they did as sample_cost grew). */
+#if defined(__GNUC__) || defined(__clang__)
+#define SAMPLE_INLINE static inline __attribute__((always_inline))
+#else
+#define SAMPLE_INLINE static inline
+#endif
+
 /* atan2 for the search's heading terms: a degree-11 minimax polynomial
  * on [0, 1] (max error about 1e-5 rad, i.e. micrometres at these
  * weights) instead of libm's atan2f, which was a fifth of all planning
- * instructions. (0, 0) gives 0; NaN propagates (the cost turns infinite). */
-static inline float fast_atan2(float y, float x) {
+ * instructions. (y, x) must not be (0, 0): every caller asks only for
+ * the direction of a vector it found longer than a centimetre. NaN
+ * propagates (the cost turns infinite). */
+SAMPLE_INLINE float fast_atan2(float y, float x) {
   float ax = fabsf(x), ay = fabsf(y);
   float mx = ax > ay ? ax : ay, mn = ax > ay ? ay : ax;
-  if (mx == 0.0f) return 0.0f;
   float a = mn / mx, t = a * a;
   float r = a * (0.99997726f +
                  t * (-0.33262347f +
@@ -28,13 +38,14 @@ static inline float fast_atan2(float y, float x) {
   return y < 0.0f ? -r : r;
 }
 
-/* Point at arc s on segment i, which holds it: smgi_path_eval's
- * arithmetic, so the same result. */
-static inline void seg_point(const smgi_path* p, uint32_t i, float s,
-                             float* x, float* z) {
+/* Point at arc s on segment i, which holds it (cum[i] <= s <= cum[i +
+ * 1]): smgi_path_eval's arithmetic, so the same result. Its clamp of the
+ * segment parameter to [0, 1] is left out: rounding is monotonic, so
+ * s - cum[i] lies in [0, len] and the quotient in [0, 1] already. */
+SAMPLE_INLINE void seg_point(const smgi_path* p, uint32_t i, float s,
+                            float* x, float* z) {
   float len = p->cum[i + 1u] - p->cum[i];
   float u = len > 1e-9f ? (s - p->cum[i]) / len : 0.0f;
-  u = smgi_clampf(u, 0.0f, 1.0f);
   const float* a = &p->xz[2u * i];
   *x = a[0] + u * (a[2] - a[0]);
   *z = a[1] + u * (a[3] - a[1]);
@@ -43,8 +54,8 @@ static inline void seg_point(const smgi_path* p, uint32_t i, float s,
 /* smgi_path_eval without the call when the hint segment already holds s
  * (almost every query of a search: samples advance a little at a time);
  * same arithmetic, so the same result. */
-static inline void path_at(const smgi_path* p, float s, uint32_t* seg,
-                           float* x, float* z) {
+SAMPLE_INLINE void path_at(const smgi_path* p, float s, uint32_t* seg,
+                          float* x, float* z) {
   uint32_t i = *seg;
   if (p->count >= 2u && i + 1u < p->count && s >= p->cum[i] &&
       s <= p->cum[i + 1u] && s <= p->length) {
@@ -59,8 +70,8 @@ static inline void path_at(const smgi_path* p, float s, uint32_t* seg,
  * often does (a quarter of all pursuit points on a path of 8 m segments
  * went through smgi_path_eval). An s strictly inside a segment lies on no
  * other, so smgi_path_eval would find that segment too: same result. */
-static inline void path_ahead(const smgi_path* p, float s, uint32_t* seg,
-                              float* x, float* z) {
+SAMPLE_INLINE void path_ahead(const smgi_path* p, float s, uint32_t* seg,
+                             float* x, float* z) {
   const uint32_t i = *seg, n = i + 1u;
   if (p->count >= 2u && n < p->count && s >= p->cum[i] && s <= p->cum[n] &&
       s <= p->length) {
@@ -105,21 +116,27 @@ static void end_target(const smgi_step_in* in, float* x, float* z) {
   }
 }
 
+/* Penalty of an edge from which the wanted style cannot be reached. */
+#define SMGI_STYLE_OUT_OF_REACH (4.0f * SMGI_STYLE_WEIGHT)
+
 /* Style penalty of lower edge ei, labelled `label`, when `desired` is
- * wanted. */
+ * wanted: one style weight for being out of style, and one more per hop's
+ * worth of motion from the edge's end until the wanted style can be taken
+ * (edge_style_time, style_time_hop: graph_derived.h). */
 static float style_penalty(const smg_graph* g, uint32_t label, uint32_t ei,
                            uint32_t desired) {
   uint32_t S = g->data.style_count;
   if (desired >= S || label == desired) return 0.0f;
-  /* the hop counts of the edge's from and to nodes, side by side */
-  const uint8_t* hops =
-      smgi_derived_of(g)->edge_hops +
+  /* the edge's from and to nodes' times, side by side */
+  const uint8_t* t =
+      smgi_derived_of(g)->edge_style_time +
       2u * ((size_t)desired * g->data.lower_edge_count + ei);
-  if (hops[0] == SMGI_HOPS_UNREACHABLE)
+  if (t[0] == SMGI_HOPS_UNREACHABLE)
     return 0.0f; /* cannot get there from here: ignore */
-  uint8_t h = hops[1];
-  if (h == SMGI_HOPS_UNREACHABLE) return 4.0f * SMGI_STYLE_WEIGHT;
-  return SMGI_STYLE_WEIGHT * (1.0f + (float)h);
+  uint8_t h = t[1];
+  if (h == SMGI_HOPS_UNREACHABLE) return SMGI_STYLE_OUT_OF_REACH;
+  return SMGI_STYLE_WEIGHT *
+         (1.0f + (float)h * smgi_derived_of(g)->style_time_hop);
 }
 
 /* Distance of a planned ground position from the path point at s. */
@@ -150,18 +167,17 @@ static float lost_style_penalty(const smg_graph* g, uint32_t label,
 }
 
 /* Error of one root sample at (x, z) facing h, after arc u, having moved
- * (mx, mz) since the previous sample over w frames. *dist gets its
- * distance from the path (or the end point), *beyond the part of that
- * distance the root steering cannot remove. */
+ * (mx, mz) since the previous sample over w frames. *beyond gets the part
+ * of its distance from the path (or the end point) that the root steering
+ * cannot remove. */
 static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
                          float u, float mx, float mz, float w,
-                         uint32_t* seg, float* dist, float* beyond) {
+                         uint32_t* seg, float* beyond) {
   const smgi_path* p = c->track;
   float m2 = mx * mx + mz * mz;
   if (!c->following) {
     float dx = x - c->tx, dz = z - c->tz;
     float d = sqrtf(dx * dx + dz * dz);
-    *dist = d;
     *beyond = d;
     /* at the end prefer motion that travels least and, there being no
      * idle clips, turns back towards the end point (circles around it
@@ -182,7 +198,6 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
   if (sr > p->length) extend_past_end(p, sr - p->length, &rx, &rz);
   float dx = x - rx, dz = z - rz;
   float d = sqrtf(dx * dx + dz * dz);
-  *dist = d;
   float ha = 0.0f; /* heading error towards the pursuit point */
   if (sr < p->length) {
     float qx, qz;
@@ -211,19 +226,58 @@ static float sample_cost(const smgi_seq_ctx* c, float x, float z, float h,
 }
 
 /* Style penalty of lower edge ei (labelled `label`) at arc lengths
- * [a, b] of the path. */
-static float seq_pen(const smgi_seq_ctx* c, uint32_t label, uint32_t ei,
-                     float a, float b) {
-  if (!c->following)
-    return c->yield ? 10.0f * lost_style_penalty(c->g, label, ei)
-                    : 10.0f * style_penalty(c->g, label, ei, c->style0);
-  if (c->lost || c->yield) return lost_style_penalty(c->g, label, ei);
+ * [a, b] of the path, while following it. */
+static inline float follow_pen(const smgi_seq_ctx* c, uint32_t label,
+                               uint32_t ei, float a, float b) {
   /* s0 <= a <= b: before the next constraint the wanted style is the one
    * at s0 (what edge_style_penalty would find with two scans) */
   if (b < c->style_end)
     return label == c->style0 ? 0.0f
                               : style_penalty(c->g, label, ei, c->style0);
   return edge_style_penalty(c, label, ei, a, b);
+}
+
+SAMPLE_INLINE float seq_pen(const smgi_seq_ctx* c, uint32_t label,
+                            uint32_t ei, float a, float b) {
+  if (!c->following)
+    return c->yield ? 10.0f * lost_style_penalty(c->g, label, ei)
+                    : 10.0f * style_penalty(c->g, label, ei, c->style0);
+  if (c->lost || c->yield) return lost_style_penalty(c->g, label, ei);
+  float p = follow_pen(c, label, ei, a, b);
+  /* While the style changes (the motion playing is not what is wanted
+   * everywhere ahead), a third style - neither the one playing nor one
+   * wanted - is a detour nobody asked for: it costs what a wanted style
+   * out of reach costs on top of its distance, so the search takes one
+   * only where staying in the old style until a transition to the new is
+   * more than that (four hops' worth of motion) longer. By distance alone
+   * a run, near every walk, was the cheaper way from one walk to another
+   * and the character ran through the point where it was to change. */
+  if (p > 0.0f && label != c->style_now && label != c->style_next &&
+      (c->style_now != c->style_next || c->style_now != c->style0))
+    p += SMGI_STYLE_OUT_OF_REACH;
+  return p;
+}
+
+/* One root sample of smgi_seq_step, `du` metres along the edge, standing
+ * for w frames of the window: adds its cost and its distance beyond the
+ * steering's reach to *out. Returns 0, with *out pruned, once cost plus
+ * the penalty so far reaches the bound: costs and penalties only grow
+ * (every term is >= 0), so the caller prunes it either way. */
+static inline int step_sample(const smgi_seq_ctx* c, const smgi_seq_state* in,
+                              smgi_seq_state* out, float x, float z, float h,
+                              float du, float mx, float mz, float frames,
+                              float w, float bound) {
+  float b;
+  const float sc =
+      sample_cost(c, x, z, h, in->u + du, mx, mz, frames, &out->seg, &b);
+  out->cost += sc * w / c->T;
+  out->beyond += b * w / c->T;
+  if (out->cost + in->pen >= bound) {
+    out->cost = INFINITY;
+    out->pen = in->pen;
+    return 0;
+  }
+  return 1;
 }
 
 /* Append edge `ei` to the sequence in `in`: root samples at the edge's
@@ -265,44 +319,40 @@ void smgi_seq_step(smgi_seq_ctx* c, const smgi_seq_state* in, float cw,
   out->seg = in->seg;
   out->cost = in->cost;
   out->beyond = in->beyond;
+  /* the mid sample (edges of 4+ frames), then the end, while inside the
+   * window */
   const uint32_t fc = e->frame_count;
-  uint32_t ks[2];
-  uint32_t nk = 0;
-  if (fc >= 4u) ks[nk++] = fc / 2u;
-  ks[nk++] = fc;
+  const float ffc = (float)fc;
+  const float room = c->T - in->f; /* frames left in the window */
   float px = in->W.x, pz = in->W.z, kprev = 0.0f;
-  float room = c->T - in->f; /* frames left in the window */
-  for (uint32_t i = 0; i < nk; ++i) {
-    float k = (float)ks[i];
-    float w = (k < room ? k : room) - (kprev < room ? kprev : room);
-    if (w <= 0.0f) break;
-    float x, z, h;
-    if (ks[i] == fc) {
-      x = out->W.x;
-      z = out->W.z;
-      h = out->W.h;
+  int inside = 1;
+  if (fc >= 4u) {
+    const float k = (float)(fc / 2u);
+    const float w = (k < room ? k : room) - (kprev < room ? kprev : room);
+    if (w <= 0.0f) {
+      inside = 0;
     } else {
-      /* the mid sample relative to the edge's start */
+      /* relative to the edge's start */
       const float* r = e->mid;
-      x = in->W.x + (cw * r[0] + sw * r[1]);
-      z = in->W.z + (-sw * r[0] + cw * r[1]);
-      h = in->W.h + r[2];
+      const float x = in->W.x + (cw * r[0] + sw * r[1]);
+      const float z = in->W.z + (-sw * r[0] + cw * r[1]);
+      const float h = in->W.h + r[2];
+      if (!step_sample(c, in, out, x, z, h, e->arc_length * k / ffc, x - px,
+                       z - pz, k - kprev, w, bound))
+        return;
+      px = x;
+      pz = z;
+      kprev = k;
     }
-    float d, b;
-    float sc = sample_cost(c, x, z, h, in->u + e->arc_length * k / (float)fc,
-                           x - px, z - pz, k - kprev, &out->seg, &d, &b);
-    out->cost += sc * w / c->T;
-    out->beyond += b * w / c->T;
-    if (out->cost + in->pen >= bound) {
-      /* already no better than the bound: costs and penalties only grow
-       * (every term is >= 0), so the caller prunes it either way */
-      out->cost = INFINITY;
-      out->pen = in->pen;
+  }
+  if (inside) {
+    const float k = ffc;
+    const float w = (k < room ? k : room) - (kprev < room ? kprev : room);
+    if (w > 0.0f &&
+        !step_sample(c, in, out, out->W.x, out->W.z, out->W.h,
+                     e->arc_length * k / ffc, out->W.x - px, out->W.z - pz,
+                     k - kprev, w, bound))
       return;
-    }
-    px = x;
-    pz = z;
-    kprev = k;
   }
   if (!isfinite(out->cost)) out->cost = INFINITY;
 }
@@ -365,9 +415,9 @@ float smgi_seq_leaf(smgi_seq_ctx* c, smgi_seq_state st, float bound) {
     const float ex = st.W.x + (cw * lx + sw * lz);
     const float ez = st.W.z + (-sw * lx + cw * lz);
     const float eh = smgi_wrap_angle(st.W.h + tr[4u * k + 2u]);
-    float d, b;
+    float b;
     float sc = sample_cost(c, ex, ez, eh, u0 + tr[4u * k + 3u], ex - px,
-                           ez - pz, fk - pf, &st.seg, &d, &b);
+                           ez - pz, fk - pf, &st.seg, &b);
     st.cost += sc * w / c->T;
     st.beyond += b * w / c->T;
     st.f = f0 + (fk < room ? fk : room);
@@ -462,8 +512,8 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
 }
 
 void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
-                   const smgi_steer_envelope* steer, smgi_xform2 W, float s,
-                   uint32_t seg) {
+                   const smgi_steer_envelope* steer, uint32_t node,
+                   smgi_xform2 W, float s, uint32_t seg) {
   c->g = in->graph;
   c->track = in->path;
   c->cons = in->cons;
@@ -479,6 +529,8 @@ void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
   end_target(in, &c->tx, &c->tz);
   c->style0 = smgi_style_at(in->cons, s);
   c->style_end = smgi_next_constraint_arc(in->cons, s);
+  c->style_next = smgi_style_at(in->cons, c->style_end);
+  c->style_now = in->graph->data.lower_nodes[node].label;
   c->budget = smgi_seq_budget(steer);
 }
 

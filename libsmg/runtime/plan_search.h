@@ -46,6 +46,8 @@ typedef struct smgi_seq_ctx {
   float tx, tz;      /* where to stay when not following */
   uint32_t style0;   /* wanted style at s0 ... */
   float style_end;   /* ... which holds until this arc (next constraint) */
+  uint32_t style_next; /* wanted style from style_end on */
+  uint32_t style_now;  /* style of the node the sequences start at */
   uint32_t budget;   /* edge evaluations left */
   uint32_t path[SMGI_SEQ_PATH_CAP];      /* edges of the sequence being built */
   uint32_t best_path[SMGI_SEQ_PATH_CAP]; /* and of the best one so far */
@@ -79,11 +81,12 @@ static inline uint32_t smgi_seq_budget(const smgi_steer_envelope* steer) {
 /* Distance of a planned ground position W from the path point at s. */
 float smgi_plan_start_error(const smgi_path* path, smgi_xform2 W, float s,
                             uint32_t seg);
-/* A search starting at ground transform W, path arc s (segment hint seg):
- * following or staying, lost or not, the wanted style, a full budget. */
+/* A search starting at lower node `node`, ground transform W, path arc s
+ * (segment hint seg): following or staying, lost or not, the wanted
+ * style, a full budget. */
 void smgi_seq_init(smgi_seq_ctx* c, const smgi_step_in* in,
-                   const smgi_steer_envelope* steer, smgi_xform2 W, float s,
-                   uint32_t seg);
+                   const smgi_steer_envelope* steer, uint32_t node,
+                   smgi_xform2 W, float s, uint32_t seg);
 /* Append edge `ei` to the sequence in `in` (cw, sw: cosine and sine of
  * in->W.h); `pen_scale` weighs its style penalty. Once cost plus penalty
  * reaches `bound` it stops early with an infinite cost (and only u, f

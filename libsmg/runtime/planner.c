@@ -8,7 +8,7 @@
  *  - rank_pass scores every out-edge by the best edge sequence starting
  *    with it that covers SMGI_SEQ_SECONDS (plan_search.c: path distance,
  *    heading and travel terms along the sequence, style penalties from
- *    the derived hop counts, branch and bound under a budget);
+ *    the derived time to each style, branch and bound under a budget);
  *  - rank_node ranks again with the style yielding to the graph's most
  *    agile one when even the best sequence in the wanted style stays off
  *    the path by more than SMGI_YIELD_ERROR on average beyond what the
@@ -190,7 +190,7 @@ static uint32_t rank_pass(const job* j, uint32_t node,
   uint32_t count = n->edge_count < SMGI_MAX_CANDIDATES ? n->edge_count
                                                        : SMGI_MAX_CANDIDATES;
   smgi_seq_ctx sc;
-  smgi_seq_init(&sc, j->in, j->steer, W, s, seg);
+  smgi_seq_init(&sc, j->in, j->steer, node, W, s, seg);
   sc.best_len = 0;
   sc.yield = yield;
   slow_to_stop(j, &sc, s);

@@ -89,10 +89,10 @@ void smgi_pose_compose(smgi_pose* pose, const smgi_lower* lower,
   /* Decode both frames' joints straight into their nlerps, four joints at
    * a time. While an action plays, its sample replaces every upper-body
    * joint below, so the locomotion's own are not sampled at all. */
-  smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), a,
+  smgi_sample_frames(g, fa, fb, a,
                      upper->action != 0 ? SMGI_JOINTS_NOT_UPPER
-                                     : SMGI_JOINTS_ALL,
-                     pose->rot);
+                                        : SMGI_JOINTS_ALL,
+                     &pose->decoded, pose->rot);
   uint32_t flags = g->data.frames[a < 0.5f ? fa : fb].flags;
   pose->contacts = ((flags & SMGI_FRAME_LEFT_CONTACT) ? SMG_STATE_LEFT_CONTACT
                                                      : 0u) |

@@ -26,6 +26,7 @@ typedef struct smgi_pose {
                         otherwise: the stack is used) */
   float* wpos;       /* 3J: world joint positions */
   float* wrot;       /* 4J: world joint rotations */
+  smgi_decoded decoded; /* the lower body's last two records, decoded */
 } smgi_pose;
 
 /* Sample the lower body at the playhead, place it, lay the upper body on

@@ -198,10 +198,12 @@ static inline void smgi_mat4_world_sse(const float* q, const float* p,
                                        float* m) {
   smgi_mat4_rot_sse(_mm_loadu_ps(q), _mm_loadu_ps(q + 4),
                     _mm_loadu_ps(q + 8), _mm_loadu_ps(q + 12), m);
-  for (int k = 0; k < 4; ++k) {
-    memcpy(m + 16 * k + 12, p + 3 * k, 3u * sizeof(float));
-    m[16 * k + 15] = 1.0f;
-  }
+  /* written out: GCC -O2 kept the four as a loop */
+  memcpy(m + 12, p, 3u * sizeof(float));
+  memcpy(m + 28, p + 3, 3u * sizeof(float));
+  memcpy(m + 44, p + 6, 3u * sizeof(float));
+  memcpy(m + 60, p + 9, 3u * sizeof(float));
+  m[15] = m[31] = m[47] = m[63] = 1.0f;
 }
 
 /* The same in character space: the inverse of the ground placement first

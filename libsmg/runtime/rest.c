@@ -143,9 +143,18 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
   r->settle_seconds = smgi_clampf(2.0f * way / v, SMGI_REST_SETTLE_MIN,
                                   SMGI_REST_SETTLE_MAX);
   /* the foot lands while the hips still move: a short last step, no
-   * longer than a swing */
+   * longer than a swing, down before the hips have less than
+   * SMGI_REST_LAND_LEFT leg lengths to go, plus the standing motion's
+   * sway (the hips stand anywhere within it: with it left out, an active
+   * performer's weight shift brought them to stand, as seen from the
+   * poses, with the foot still 2-3 cm up). The hips ease out, their way
+   * left at u of the settling is (1 - u)^2 of it. */
+  const float left = SMGI_REST_LAND_LEFT * info->leg_length + idle->sway;
+  const float land =
+      way > left ? fminf(SMGI_REST_STEP_SHARE, 1.0f - sqrtf(left / way))
+                 : 0.0f;
   r->step_seconds = fminf(step_seconds(io),
-                          SMGI_REST_STEP_SHARE * r->settle_seconds);
+                          fmaxf(SMGI_REST_STEP_MIN, land * r->settle_seconds));
   r->foot = sp.step;
   r->from[0] = r->hold[sp.step][0];
   r->from[1] = r->hold[sp.step][1];

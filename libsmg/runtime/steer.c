@@ -82,7 +82,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->stride = 1.0f;
   s->cutting = 0;
   s->drift_turn = s->drift_move = 0.0f;
-  s->heading_seg = SMGI_NONE;
+  s->heading_seg[0] = s->heading_seg[1] = SMGI_NONE;
   s->data_stop = 0;
 }
 
@@ -100,7 +100,7 @@ void smgi_steer_path_changed(smgi_steer* s) {
   if (s->mode == SMGI_STEER_REST && s->rate < SMGI_STEER_BRAKE_FLOOR)
     s->rate = SMGI_STEER_BRAKE_FLOOR;
   s->mode = SMGI_STEER_FOLLOW;
-  s->heading_seg = SMGI_NONE;
+  s->heading_seg[0] = s->heading_seg[1] = SMGI_NONE;
   s->drift_turn = s->drift_move = 0.0f; /* the planner starts afresh */
   s->data_stop = 0;
 }
@@ -404,14 +404,21 @@ static float brake_stride(const smgi_steer* s, const smgi_lower* lower,
   return smgi_clampf(wanted / motion, stride_floor(s, in, lower->style), 1.0f);
 }
 
-/* The heading of path segment seg, remembered for the next call. */
+/* The heading of path segment seg, remembered for the next calls: the
+ * look-ahead asks for the segment at the character and, near its end,
+ * the next one, every step (one remembered heading was recomputed
+ * twice a step there). */
 static float segment_heading(smgi_steer* st, const smgi_path* p,
                              uint32_t seg) {
-  if (seg != st->heading_seg) {
-    st->heading = smgi_path_heading(p, seg);
-    st->heading_seg = seg;
-  }
-  return st->heading;
+  if (seg == st->heading_seg[0]) return st->heading[0];
+  const uint32_t other = st->heading_seg[0];
+  const float other_h = st->heading[0];
+  st->heading[0] = seg == st->heading_seg[1] ? st->heading[1]
+                                             : smgi_path_heading(p, seg);
+  st->heading_seg[0] = seg;
+  st->heading_seg[1] = other;
+  st->heading[1] = other_h;
+  return st->heading[0];
 }
 
 /* The share of the motion's full speed `full` (m/s) at which the steering
@@ -456,9 +463,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
                          uint32_t seg, float full, float speed,
                          uint32_t* cut) {
   const float half = 0.5f * SMGI_STEER_CURVE_AHEAD;
-  float x, z;
-  uint32_t sg = seg;
-  smgi_path_eval(p, s, &sg, &x, &z, NULL);
+  uint32_t sg = smgi_path_segment(p, s, seg);
   /* how far on the slowest share is reached from the full speed: no
    * turn beyond that can ask for more slowing now */
   const float slowest = SMGI_STEER_RATE_MIN * (1.0f - st->slide_ratio);
@@ -467,8 +472,7 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
   *cut = 0;
   for (uint32_t i = 1u; i <= SMGI_STEER_AHEAD_SAMPLES; ++i) {
     const float d = (float)i * half;
-    uint32_t s1 = sg;
-    smgi_path_eval(p, s + d, &s1, &x, &z, NULL);
+    const uint32_t s1 = smgi_path_segment(p, s + d, sg);
     /* one heading per segment: the points mostly share one or two */
     float h1 = s1 == sg ? h0 : segment_heading(st, p, s1);
     float k = smgi_wrap_angle(h1 - h0) / half;

@@ -59,11 +59,12 @@ typedef struct smgi_steer {
                            * hairpin) lies within the look-ahead or is
                            * being taken: cut like a runner (steer.c
                            * share_ahead) */
-  /* the heading of the path segment last looked at (an atan2; the
-   * curvature ahead mostly looks at the same segment step after step),
-   * forgotten when the path changes */
-  uint32_t heading_seg;   /* SMGI_NONE: none */
-  float heading;
+  /* the headings of the two path segments last looked at (an atan2
+   * each; the curvature ahead mostly looks at the same one or two
+   * segments step after step), the latest first, forgotten when the path
+   * changes */
+  uint32_t heading_seg[2]; /* SMGI_NONE: none */
+  float heading[2];
   /* correction applied since the planned edges were chosen: the plan
    * moves with the character, so beyond a bound it is chosen again */
   float drift_turn;       /* radians */

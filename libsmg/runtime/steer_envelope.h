@@ -89,6 +89,11 @@ typedef struct smgi_steer_plan {
   float cut_share;       /* smgi_steer_cut_floor of the slide ratio */
   float cut_turn_limit;  /* turn_limit * SMGI_STEER_CUT_TURN */
   float cut_slide_ratio; /* slide_ratio * SMGI_STEER_CUT_SLIDE */
+  /* 1 when the slowed and cutting envelopes turn no less per metre than
+   * the plain one wherever it turns its most (shares of the speed <= 1,
+   * the cut's limit >= the plain one) and slide no more (slide ratio >=
+   * 0): smgi_steer_plan_view's shortcut */
+  uint32_t nested;
 } smgi_steer_plan;
 
 static inline smgi_steer_plan smgi_steer_plan_of(const smgi_steer_envelope* s) {
@@ -100,6 +105,9 @@ static inline smgi_steer_plan smgi_steer_plan_of(const smgi_steer_envelope* s) {
   p.cut_share = smgi_steer_cut_floor(s->slide_ratio);
   p.cut_turn_limit = s->turn_limit * SMGI_STEER_CUT_TURN;
   p.cut_slide_ratio = s->slide_ratio * SMGI_STEER_CUT_SLIDE;
+  p.nested = p.slow_share <= 1.0f && p.cut_share <= 1.0f &&
+             p.cut_turn_limit >= p.turn_limit && p.slide_ratio >= 0.0f &&
+             p.cut_slide_ratio <= p.slide_ratio;
   return p;
 }
 
@@ -124,6 +132,18 @@ static inline float smgi_steer_plan_view(const smgi_steer_plan* p, float u,
   const float e = *d;
   if (!p->enabled || u <= 0.0f) return e > 0.0f ? e : 0.0f;
   const float k = smgi_steer_curve_of(p->turn_limit, speed);
+  if (p->nested && k == 1.0f / SMGI_STEER_TURN_RADIUS) {
+    /* the plain envelope turns its most (most samples: the limit allows
+     * more than the radius at the motion's speed); a slower speed and a
+     * larger limit only allow more, so the slowed and the cutting turn
+     * their most too, and the cut, sliding less, reaches less far than
+     * the slowing: the same values without two divisions. With k = 2,
+     * 0.5 k u is u exactly, and both reaches are half of slide u + u^2. */
+    const float reach = 0.5f * (p->slide_ratio * u + u * u);
+    *d = smgi_steer_discount(e, reach);
+    *a = smgi_steer_discount(*a, u);
+    return e > reach ? e - reach : 0.0f;
+  }
   const float k_slow =
       smgi_steer_curve_of(p->turn_limit, speed * p->slow_share);
   const float k_cut =

@@ -265,8 +265,15 @@
                                      fade in), at least ... */
 #define SMGI_REST_SETTLE_MAX 1.0f /* ... and at most */
 #define SMGI_REST_STEP_SHARE 0.55f /* of that time the settling step takes
-                                      at most: the foot is down before the
-                                      hips' last few centimetres */
+                                      at most ... */
+#define SMGI_REST_LAND_LEFT 0.05f  /* ... and it lands while the hips still
+                                      have at least this many leg lengths
+                                      (4 cm) to go, besides the standing
+                                      motion's own sway: they come to stand
+                                      over both feet */
+#define SMGI_REST_STEP_MIN \
+  (SMGI_REST_STEP_SHARE * SMGI_REST_SETTLE_MIN) /* s: the quickest
+                                                   settling step */
 #define SMGI_REST_FADE_OUT 0.6f  /* s: the standing motion and the glide
                                     fade out as the walk begins */
 #define SMGI_REST_LIFT 0.08f     /* leg lengths a stepping foot rises at

@@ -58,6 +58,10 @@ void smgi_graph_derived_free(smg_graph* g);
 
 typedef struct ref_tables {
   uint8_t *lower_hops, *upper_hops;
+  /* per style and lower node: steps of motion to the style (as in
+   * edge_style_time), and what a step weighs in hops */
+  uint8_t* style_time;
+  float style_time_hop;
   uint32_t *splice_first, *action_first;
   uint32_t *natural, *trail_edge;
   float *trail, *trail_frames, *turn, *edge_mid;
@@ -104,6 +108,54 @@ static void ref_hops(const smgi_node* nodes, uint32_t N, const smgi_edge* edges,
     }
   }
   free(queue);
+}
+
+/* style_time[st * N + n]: the least frames of motion from node n to one
+ * with an out-edge labelled st (relaxing every edge until nothing
+ * changes), in steps of 1 / SMGI_STYLE_TIME_HZ s rounded to nearest and
+ * capped; SMGI_HOPS_UNREACHABLE where lower_hops has no path. The hop
+ * worth of a step: the hops over the steps of every node and style a
+ * step or more and less than the cap away. */
+static void ref_style_time(const smgi_graph_data* d, const uint8_t* hops,
+                           ref_tables* r) {
+  const uint32_t N = d->lower_node_count, S = d->style_count;
+  const double fps = ref_fps(d);
+  uint64_t* dist = (uint64_t*)malloc(sizeof(uint64_t) * (N + 1u));
+  uint64_t sum_hops = 0, sum_steps = 0;
+  assert_non_null(dist);
+  r->style_time = (uint8_t*)calloc((size_t)N * S + 1u, 1);
+  assert_non_null(r->style_time);
+  for (uint32_t st = 0; st < S; ++st) {
+    for (uint32_t n = 0; n < N; ++n)
+      dist[n] = hops[(size_t)n * S + st] == 0u ? 0u : UINT64_MAX;
+    for (int changed = 1; changed;) {
+      changed = 0;
+      for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
+        const smgi_edge* E = &d->lower_edges[e];
+        if (dist[E->to] == UINT64_MAX) continue;
+        if (dist[E->to] + E->frame_count < dist[E->from]) {
+          dist[E->from] = dist[E->to] + E->frame_count;
+          changed = 1;
+        }
+      }
+    }
+    for (uint32_t n = 0; n < N; ++n) {
+      uint8_t t = SMGI_HOPS_UNREACHABLE;
+      if (dist[n] != UINT64_MAX) {
+        double q = floor((double)dist[n] * (SMGI_STYLE_TIME_HZ / fps) + 0.5);
+        t = q < (double)SMGI_STYLE_TIME_FAR ? (uint8_t)q
+                                            : (uint8_t)SMGI_STYLE_TIME_FAR;
+        if (t > 0u && t < SMGI_STYLE_TIME_FAR) {
+          sum_hops += hops[(size_t)n * S + st];
+          sum_steps += t;
+        }
+      }
+      r->style_time[(size_t)st * N + n] = t;
+    }
+  }
+  r->style_time_hop =
+      sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps) : 1.0f;
+  free(dist);
 }
 
 static void ref_natural(const smgi_graph_data* d, uint32_t* natural) {
@@ -241,6 +293,7 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
            r->lower_hops);
   ref_hops(d->upper_nodes, UN, d->upper_edges, d->upper_edge_count, A,
            r->upper_hops);
+  ref_style_time(d, r->lower_hops, r);
   for (uint32_t i = 0; i < d->splice_count; ++i)
     if (d->splices[i].lower_frame < F)
       r->splice_first[d->splices[i].lower_frame + 1u]++;
@@ -314,6 +367,7 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
 
 static void ref_free(ref_tables* r) {
   free(r->lower_hops);
+  free(r->style_time);
   free(r->upper_hops);
   free(r->splice_first);
   free(r->action_first);
@@ -390,14 +444,16 @@ static void compare(const char* name, const smgi_graph_data* d,
   for (uint32_t st = 0; st < S; ++st) {
     for (uint32_t e = 0; e < d->lower_edge_count; ++e) {
       const smgi_edge* E = &d->lower_edges[e];
-      const uint8_t* h =
-          dv->edge_hops + 2u * ((size_t)st * d->lower_edge_count + e);
-      EXPECT_SAME("edge_hops (from)", h,
-                  r->lower_hops + (size_t)S * E->from + st, 1u);
-      EXPECT_SAME("edge_hops (to)", h + 1,
-                  r->lower_hops + (size_t)S * E->to + st, 1u);
+      const uint8_t* t =
+          dv->edge_style_time + 2u * ((size_t)st * d->lower_edge_count + e);
+      EXPECT_SAME("edge_style_time (from)", t,
+                  r->style_time + (size_t)st * LN + E->from, 1u);
+      EXPECT_SAME("edge_style_time (to)", t + 1,
+                  r->style_time + (size_t)st * LN + E->to, 1u);
     }
   }
+  EXPECT_SAME("style_time_hop", &dv->style_time_hop, &r->style_time_hop,
+              sizeof(float));
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
   EXPECT_SAME("action_first_edge", dv->action_first_edge, r->action_first,

@@ -199,6 +199,40 @@ static void test_eval_from_any_hint(void** state) {
   }
 }
 
+/* smgi_path_segment (inline for a hint that already holds s) and
+ * smgi_path_find give the segment smgi_path_eval puts s on, from any hint:
+ * on and between segment ends (also of zero-length segments), before the
+ * start and past the end. */
+static void test_segment_lookup_is_eval_s(void** state) {
+  (void)state;
+  static buf b;
+  static float pts[2 * 600];
+  smgi_path p = make(&b);
+  const uint32_t n = 600;
+  float x = 0, z = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    float step = (i % 7 == 0) ? 0.0f : 0.05f + 2.0f * frand();
+    x += step * 0.6f;
+    z += step * 0.8f;
+    pts[2 * i] = x;
+    pts[2 * i + 1] = z;
+  }
+  uint32_t seg = 0;
+  float d;
+  smgi_path_load(&p, pts, 0, n, 0, 0, 0, &seg, &d);
+  for (int q = 0; q < 40000; ++q) {
+    const uint32_t r = smgi_xorshift(&rng) % 4u;
+    float s = (p.length + 2.0f) * frand() - 1.0f;
+    if (r == 0) s = p.cum[smgi_xorshift(&rng) % n]; /* exactly on an end */
+    const uint32_t hint = smgi_xorshift(&rng) % (n + 3u);
+    float ex, ez;
+    seg = hint;
+    smgi_path_eval(&p, s, &seg, &ex, &ez, NULL);
+    assert_int_equal(smgi_path_segment(&p, s, hint), seg);
+    assert_int_equal(smgi_path_find(&p, s, hint), seg);
+  }
+}
+
 static void test_local_projection(void** state) {
   (void)state;
   static buf b;
@@ -285,6 +319,7 @@ int main(void) {
       cmocka_unit_test(test_projection_matches_brute_force),
       cmocka_unit_test(test_projection_is_the_rule),
       cmocka_unit_test(test_eval_from_any_hint),
+      cmocka_unit_test(test_segment_lookup_is_eval_s),
       cmocka_unit_test(test_local_projection),
       cmocka_unit_test(test_coords_ok),
       cmocka_unit_test(test_wrap_angle),

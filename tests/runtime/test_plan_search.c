@@ -52,7 +52,7 @@ static float view_ref(const smgi_steer_envelope* s, float u, float speed,
 static void test_plan_view_matches_envelope(void** state) {
   (void)state;
   static const float limits[] = {0.0f, 0.3f, 1.0f, 2.5f, 6.0f};
-  static const float slides[] = {0.0f, 0.1f, 0.35f, 0.7f, 1.0f};
+  static const float slides[] = {-0.5f, 0.0f, 0.1f, 0.35f, 0.7f, 1.0f, 1.6f};
   static const float us[] = {-1.0f, 0.0f, 0.01f, 0.5f, 1.7f, 4.0f};
   static const float speeds[] = {0.0f, 5e-4f, 0.3f, 1.4f, 3.9f, 8.0f};
   static const float ds[] = {0.0f, 0.02f, 0.3f, 2.0f};
@@ -150,7 +150,7 @@ static void check_bounds_from(smgi_seq_ctx* c, const smgi_seq_state* st,
 static void check_search(stage_rig* r, uint32_t node, smgi_xform2 W, float s,
                          uint32_t* pruned, uint32_t* kept) {
   smgi_seq_ctx c;
-  smgi_seq_init(&c, &r->in, &r->steer, W, s, 0u);
+  smgi_seq_init(&c, &r->in, &r->steer, node, W, s, 0u);
   const smgi_node* n = &r->g->data.lower_nodes[node];
   smgi_seq_state root = {node, W, 0.0f, 0.0f, 0.0f, 0.0f, 0u, 0.0f,
                          n->first_edge, n->edge_count};

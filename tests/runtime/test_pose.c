@@ -171,11 +171,64 @@ static void test_action_and_crossfade(void** state) {
         assert_true(fabsf(x.rot[4u * j + k] - x.snap[4u * j + k]) < TOL);
 }
 
+/* Sampling through the decoded-record slots (smgi_sample_frames, what the
+ * pose samples with) gives smgi_sample_joints' bits for any sequence of
+ * frame pairs: advancing as playback does (each pair on two steps), the
+ * two ends swapped or equal, jumps (a re-plan, a new edge), every joint
+ * set; joints outside the set are left alone. */
+static void test_decoded_records_sample_the_same(void** state) {
+  (void)state;
+  smg_graph* g = rt_default_graph();
+  if (!g) {
+    fail_msg("build/default.smg missing: run `make` first");
+    return;
+  }
+  const uint32_t nj = g->data.joint_count, frames = g->data.frame_count;
+  const uint32_t n = smgi_decoded_floats(nj);
+  float* buf = (float*)malloc(sizeof(float) * (2u * n + 1u));
+  float* ref = (float*)malloc(sizeof(float) * 4u * nj);
+  float* got = (float*)malloc(sizeof(float) * 4u * nj);
+  assert_non_null(buf);
+  assert_non_null(ref);
+  assert_non_null(got);
+  smgi_decoded dec;
+  dec.rot = n ? buf : NULL;
+  dec.frame[0] = dec.frame[1] = SMGI_NONE;
+  uint32_t rng = 99u, f = 0u;
+  for (uint32_t it = 0; it < 20000u; ++it) {
+    const uint32_t r = smgi_xorshift(&rng);
+    if (it % 2u == 0u) f = (f + 1u) % (frames - 1u); /* playback */
+    if (r % 17u == 0u) f = (r >> 8) % (frames - 1u);  /* a jump */
+    uint32_t fa = f, fb = f + 1u;
+    if (r % 13u == 0u) fb = fa;                      /* a dead end */
+    if (r % 11u == 0u) {                             /* swapped */
+      fa = f + 1u;
+      fb = f;
+    }
+    const float t = (r % 7u == 0u) ? 0.0f
+                    : (r % 7u == 1u) ? 1.0f
+                                     : (float)((r >> 12) % 1000u) / 1000.0f;
+    const smgi_joint_set set = (smgi_joint_set)((r >> 4) % 3u);
+    for (uint32_t k = 0; k < 4u * nj; ++k) ref[k] = got[k] = (float)k;
+    smgi_sample_joints(g, smgi_graph_pose(g, fa), smgi_graph_pose(g, fb), t,
+                       set, ref);
+    smgi_sample_frames(g, fa, fb, t, set, &dec, got);
+    if (memcmp(ref, got, sizeof(float) * 4u * nj) != 0)
+      fail_msg("step %u: frames %u, %u at %g (set %d) differ", (unsigned)it,
+               (unsigned)fa, (unsigned)fb, (double)t, (int)set);
+  }
+  free(buf);
+  free(ref);
+  free(got);
+  smg_graph_destroy(g);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_lower_between_frames),
       cmocka_unit_test(test_across_edges),
       cmocka_unit_test(test_action_and_crossfade),
+      cmocka_unit_test(test_decoded_records_sample_the_same),
   };
   return cmocka_run_group_tests(tests, rt_fixture_setup, rt_fixture_teardown);
 }
