@@ -122,23 +122,24 @@ static uint32_t style_time_limit(double fps) {
  * `in_from` / `in_frames` is the reverse adjacency (build_reverse_frames),
  * `dist`, `next` and `prev` node_count scratch each, `head` `limit` and
  * `steps_of` `limit` bytes (each distance's value, computed once); `hops`
- * (lower_hops) tells "far" from "unreachable". Returns the hop equivalent
- * of one step (style_time_hop, graph_derived.h). */
-static float build_edge_style_time(const smgi_graph_data* d,
+ * (lower_hops) tells "far" from "unreachable". Writes the hop
+ * equivalent of one step per style to `time_hop` (style_time_hop,
+ * graph_derived.h). */
+static void build_edge_style_time(const smgi_graph_data* d,
                                    const uint8_t* hops, uint32_t limit,
                                    const uint32_t* in_first,
                                    const uint32_t* in_from,
                                    const uint32_t* in_frames, uint32_t* dist,
                                    uint32_t* next, uint32_t* prev,
                                    uint32_t* head, uint8_t* steps_of,
-                                   uint8_t* out) {
+                                   uint8_t* out, float* time_hop) {
   const uint32_t N = d->lower_node_count, S = d->style_count;
   const uint32_t E = d->lower_edge_count;
   const smgi_edge* edges = d->lower_edges;
   const double fps = d->info->frame_rate > 0.0f ? d->info->frame_rate : 30.0;
-  uint64_t sum_hops = 0, sum_steps = 0;
   for (uint32_t f = 0; f < limit; ++f) steps_of[f] = style_time_steps(f, fps);
   for (uint32_t st = 0; st < S; ++st) {
+    uint64_t sum_hops = 0, sum_steps = 0;
     for (uint32_t f = 0; f < limit; ++f) head[f] = SMGI_NONE;
     for (uint32_t n = 0; n < N; ++n) {
       dist[n] = UINT32_MAX;
@@ -175,7 +176,7 @@ static float build_edge_style_time(const smgi_graph_data* d,
     }
     /* each node's value once (in the links' place, free now), then the
      * edges' pairs from it; nodes a step or more away and within the cap
-     * tell what one step is worth in hops, on average */
+     * tell what one step towards the style is worth in hops, on average */
     uint8_t* col = (uint8_t*)next;
     for (uint32_t n = 0; n < N; ++n) {
       const uint8_t h = hops[(size_t)n * S + st];
@@ -188,14 +189,15 @@ static float build_edge_style_time(const smgi_graph_data* d,
         sum_steps += t;
       }
     }
+    time_hop[st] = sum_steps > 0u ? (float)((double)sum_hops /
+                                            (double)sum_steps)
+                                  : 1.0f;
     uint8_t* o = out + 2u * (size_t)E * st;
     for (uint32_t e = 0; e < E; ++e) {
       o[2u * (size_t)e] = col[edges[e].from];
       o[2u * (size_t)e + 1u] = col[edges[e].to];
     }
   }
-  return sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps)
-                        : 1.0f;
 }
 
 /* The lower graph's reverse adjacency with each edge's frame count: the
@@ -1022,7 +1024,8 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
                                    (size_t)d->lower_edge_count);
   size_t off_sfs = off_sn + align16(sizeof(uint32_t) * (size_t)LN);
   size_t off_cs = off_sfs + align16(sizeof(uint32_t) * ((size_t)S + 1u));
-  size_t total = off_cs + align16((size_t)S);
+  size_t off_th = off_cs + align16((size_t)S);
+  size_t total = off_th + align16(sizeof(float) * (size_t)S);
   size_t block = align16(sizeof(smgi_derived));
 
   /* One scratch block for the phases below, sized for the largest. */
@@ -1070,6 +1073,7 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   smgi_node_next* nx = (smgi_node_next*)(base + off_nx);
   smgi_search_edge* search_edges = (smgi_search_edge*)(base + off_se);
   uint8_t* can_stop = base + off_cs;
+  float* time_hop = (float*)(base + off_th);
   uint32_t* start_nodes = (uint32_t*)(base + off_sn);
   uint32_t* start_first = (uint32_t*)(base + off_sfs);
 
@@ -1092,10 +1096,12 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
     uint32_t* dist = rev_frames + d->lower_edge_count;
     build_reverse_frames(d->lower_edges, d->lower_edge_count, LN, in_first,
                          rev_from, rev_frames);
-    dv->style_time_hop = build_edge_style_time(
+    build_edge_style_time(
         d, lower_hops, time_limit, in_first, rev_from, rev_frames, dist,
         dist + LN, dist + 2u * (size_t)LN, dist + 3u * (size_t)LN,
-        (uint8_t*)(dist + 3u * (size_t)LN + time_limit), edge_style_time);
+        (uint8_t*)(dist + 3u * (size_t)LN + time_limit), edge_style_time,
+        time_hop);
+    dv->style_time_hop = time_hop;
   }
   build_reverse(d->upper_edges, d->upper_edge_count, UN, in_first, in_from);
   compute_hops(d->upper_nodes, UN, d->upper_edges, A, in_first, in_from,

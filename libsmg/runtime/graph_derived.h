@@ -110,13 +110,14 @@ typedef struct smgi_derived {
    * bytes an edge: for the few styles a crowd wants at once they stay in
    * the cache. */
   const uint8_t* edge_style_time;
-  /* What one step of edge_style_time weighs in hops: the graph's hop
-   * counts over its times, summed over every node and style a step or
-   * more (and less than the cap) away. The search's style weight was set
-   * per hop; in these units the same weight holds on average on any
-   * graph, and hop for hop (to the steps' rounding) on one whose edges
-   * all last as long. */
-  float style_time_hop;
+  /* style_time_hop[style]: what one step of edge_style_time towards the
+   * style weighs in hops: the graph's hop counts to it over its times,
+   * summed over every node a step or more (and less than the cap) away.
+   * The search's style weight was set per hop; in these units the same
+   * weight holds on average for each wanted style on any graph, and hop
+   * for hop (to the steps' rounding) on one whose edges all last as
+   * long. */
+  const float* style_time_hop;
   /* Same as lower_hops for the upper graph and actions. */
   const uint8_t* upper_hops;
   /* Splices at lower frame f are splices[splice_first[f] ..

@@ -136,7 +136,7 @@ static float style_penalty(const smg_graph* g, uint32_t label, uint32_t ei,
   uint8_t h = t[1];
   if (h == SMGI_HOPS_UNREACHABLE) return SMGI_STYLE_OUT_OF_REACH;
   return SMGI_STYLE_WEIGHT *
-         (1.0f + (float)h * smgi_derived_of(g)->style_time_hop);
+         (1.0f + (float)h * smgi_derived_of(g)->style_time_hop[desired]);
 }
 
 /* Distance of a planned ground position from the path point at s. */

@@ -59,9 +59,9 @@ void smgi_graph_derived_free(smg_graph* g);
 typedef struct ref_tables {
   uint8_t *lower_hops, *upper_hops;
   /* per style and lower node: steps of motion to the style (as in
-   * edge_style_time), and what a step weighs in hops */
+   * edge_style_time), and per style what a step weighs in hops */
   uint8_t* style_time;
-  float style_time_hop;
+  float* style_time_hop;
   uint32_t *splice_first, *action_first;
   uint32_t *natural, *trail_edge;
   float *trail, *trail_frames, *turn, *edge_mid;
@@ -114,18 +114,20 @@ static void ref_hops(const smgi_node* nodes, uint32_t N, const smgi_edge* edges,
  * with an out-edge labelled st (relaxing every edge until nothing
  * changes), in steps of 1 / SMGI_STYLE_TIME_HZ s rounded to nearest and
  * capped; SMGI_HOPS_UNREACHABLE where lower_hops has no path. The hop
- * worth of a step: the hops over the steps of every node and style a
+ * worth of a step per style: the hops over the steps of every node a
  * step or more and less than the cap away. */
 static void ref_style_time(const smgi_graph_data* d, const uint8_t* hops,
                            ref_tables* r) {
   const uint32_t N = d->lower_node_count, S = d->style_count;
   const double fps = ref_fps(d);
   uint64_t* dist = (uint64_t*)malloc(sizeof(uint64_t) * (N + 1u));
-  uint64_t sum_hops = 0, sum_steps = 0;
   assert_non_null(dist);
   r->style_time = (uint8_t*)calloc((size_t)N * S + 1u, 1);
+  r->style_time_hop = (float*)calloc((size_t)S + 1u, sizeof(float));
   assert_non_null(r->style_time);
+  assert_non_null(r->style_time_hop);
   for (uint32_t st = 0; st < S; ++st) {
+    uint64_t sum_hops = 0, sum_steps = 0;
     for (uint32_t n = 0; n < N; ++n)
       dist[n] = hops[(size_t)n * S + st] == 0u ? 0u : UINT64_MAX;
     for (int changed = 1; changed;) {
@@ -152,9 +154,9 @@ static void ref_style_time(const smgi_graph_data* d, const uint8_t* hops,
       }
       r->style_time[(size_t)st * N + n] = t;
     }
+    r->style_time_hop[st] =
+        sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps) : 1.0f;
   }
-  r->style_time_hop =
-      sum_steps > 0u ? (float)((double)sum_hops / (double)sum_steps) : 1.0f;
   free(dist);
 }
 
@@ -368,6 +370,7 @@ static void ref_build(const smgi_graph_data* d, ref_tables* r) {
 static void ref_free(ref_tables* r) {
   free(r->lower_hops);
   free(r->style_time);
+  free(r->style_time_hop);
   free(r->upper_hops);
   free(r->splice_first);
   free(r->action_first);
@@ -452,8 +455,8 @@ static void compare(const char* name, const smgi_graph_data* d,
                   r->style_time + (size_t)st * LN + E->to, 1u);
     }
   }
-  EXPECT_SAME("style_time_hop", &dv->style_time_hop, &r->style_time_hop,
-              sizeof(float));
+  EXPECT_SAME("style_time_hop", dv->style_time_hop, r->style_time_hop,
+              sizeof(float) * (size_t)S);
   EXPECT_SAME("splice_first", dv->splice_first, r->splice_first,
               4u * ((size_t)F + 1u));
   EXPECT_SAME("action_first_edge", dv->action_first_edge, r->action_first,
