@@ -178,20 +178,19 @@ static inline void smgi_quat_unpack4_sse(const unsigned char* p, __m128* x,
 /* The nlerp half of smgi_pose_nlerp4_sse: out[0 .. 16) = nlerp of the
  * rotations given as x, y, z, w vectors (lane k = joint k), as decoded by
  * smgi_quat_unpack4_sse (what a caller that keeps decoded records hands
- * in). */
+ * in), at tv = t and u = 1 - t in every lane (a caller's loop makes them
+ * once). */
 static inline void smgi_nlerp4_sse(__m128 ax, __m128 ay, __m128 az,
                                    __m128 aw, __m128 bx, __m128 by,
-                                   __m128 bz, __m128 bw, float t,
-                                   float* out) {
-  __m128 d, s, u, ox, oy, oz, ow, inv;
-  const __m128 tv = _mm_set1_ps(t);
+                                   __m128 bz, __m128 bw, __m128 tv,
+                                   __m128 u, float* out) {
+  __m128 d, s, ox, oy, oz, ow, inv;
   d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)),
                             _mm_mul_ps(az, bz)),
                  _mm_mul_ps(aw, bw));
   /* d < 0 ? -t : t: flip t's sign bit where d < 0 */
   s = _mm_xor_ps(tv, _mm_and_ps(_mm_cmplt_ps(d, _mm_setzero_ps()),
                                 _mm_set1_ps(-0.0f)));
-  u = _mm_set1_ps(1.0f - t);
   ox = _mm_add_ps(_mm_mul_ps(u, ax), _mm_mul_ps(s, bx));
   oy = _mm_add_ps(_mm_mul_ps(u, ay), _mm_mul_ps(s, by));
   oz = _mm_add_ps(_mm_mul_ps(u, az), _mm_mul_ps(s, bz));
@@ -219,7 +218,8 @@ static inline void smgi_pose_nlerp4_sse(const unsigned char* a,
   __m128 ax, ay, az, aw, bx, by, bz, bw;
   smgi_quat_unpack4_sse(a, &ax, &ay, &az, &aw);
   smgi_quat_unpack4_sse(b, &bx, &by, &bz, &bw);
-  smgi_nlerp4_sse(ax, ay, az, aw, bx, by, bz, bw, t, out);
+  smgi_nlerp4_sse(ax, ay, az, aw, bx, by, bz, bw, _mm_set1_ps(t),
+                  _mm_set1_ps(1.0f - t), out);
 }
 #endif
 

@@ -121,6 +121,7 @@ void smgi_sample_frames(const smg_graph* g, uint32_t fa, uint32_t fb,
     const float* va = dec->rot + (size_t)sa * n;
     const float* vb = dec->rot + (size_t)sb * n;
     const int all = set == SMGI_JOINTS_ALL;
+    const __m128 tv = _mm_set1_ps(t), u = _mm_set1_ps(1.0f - t);
     for (uint32_t j = 1, i = 0; j < J; j += 4u, ++i) {
       const uint32_t base = j + 4u <= J ? j : J - 4u;
       unsigned want = 15u;
@@ -138,7 +139,7 @@ void smgi_sample_frames(const smg_graph* g, uint32_t fa, uint32_t fb,
       smgi_nlerp4_sse(_mm_loadu_ps(a), _mm_loadu_ps(a + 4),
                       _mm_loadu_ps(a + 8), _mm_loadu_ps(a + 12),
                       _mm_loadu_ps(b), _mm_loadu_ps(b + 4),
-                      _mm_loadu_ps(b + 8), _mm_loadu_ps(b + 12), t,
+                      _mm_loadu_ps(b + 8), _mm_loadu_ps(b + 12), tv, u,
                       want == 15u ? out + 4u * base : q);
       if (want != 15u)
         for (uint32_t k = 0; k < 4u; ++k)

@@ -188,21 +188,10 @@ static inline void qmul_conj(const float* a, const float* b, float* o) {
 #endif
 }
 
-#if IK_SSE
-/* ((m0 + m1) + m2) + m3: a sum of four lanes in the plain code's order */
-static inline float hsum4(__m128 m) {
-  __m128 t = _mm_add_ss(m, SMGI_SHUF(m, 1, 1, 1, 1));
-  t = _mm_add_ss(t, SMGI_SHUF(m, 2, 2, 2, 2));
-  return _mm_cvtss_f32(_mm_add_ss(t, SMGI_SHUF(m, 3, 3, 3, 3)));
-}
-#endif
-
 /* smgi_q_normalize, the same bits */
 static inline quat qnorm(quat q) {
 #if IK_SSE
-  const float n = hsum4(_mm_mul_ps(q, q));
-  if (n > 1e-20f && isfinite(n)) return _mm_mul_ps(q, _mm_set1_ps(1.0f / sqrtf(n)));
-  return _mm_loadu_ps(k_identity);
+  return smgi_q_normalize_sse(q);
 #else
   smgi_q_normalize(q.q);
   return q;
@@ -217,7 +206,7 @@ static inline void blend_local(float* rot, const float* local, float w) {
 #if IK_SSE
     /* the sign flip as a sign-bit flip: -1 * x is -x */
     const __m128 l = _mm_loadu_ps(local);
-    const float d = hsum4(_mm_mul_ps(_mm_loadu_ps(rot), l));
+    const float d = smgi_hsum4_sse(_mm_mul_ps(_mm_loadu_ps(rot), l));
     _mm_storeu_ps(rot, d < 0.0f ? _mm_xor_ps(l, _mm_set1_ps(-0.0f)) : l);
 #else
     float s = dot3(rot, local) + rot[3] * local[3] < 0.0f ? -1.0f : 1.0f;
@@ -227,9 +216,14 @@ static inline void blend_local(float* rot, const float* local, float w) {
     rot[3] = s * local[3];
 #endif
   } else {
+#if IK_SSE
+    _mm_storeu_ps(rot, smgi_q_nlerp_sse(_mm_loadu_ps(rot),
+                                        _mm_loadu_ps(local), w));
+#else
     float out[4];
     smgi_q_nlerp(rot, local, w, out);
     memcpy(rot, out, sizeof out);
+#endif
   }
 }
 

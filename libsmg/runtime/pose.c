@@ -50,7 +50,11 @@ static void place(const smg_graph* g, uint32_t frame, const placement* pl,
   pos[2] = z;
   /* raw decode: the caller's nlerp normalises */
   smgi_quat_unpack_raw(smgi_pose_rot(rec, 0), r0);
+#if SMGI_POSE_SSE
+  _mm_storeu_ps(rot, smgi_q_mul_sse(_mm_loadu_ps(pl->yaw), _mm_loadu_ps(r0)));
+#else
   smgi_q_mul(pl->yaw, r0, rot);
+#endif
   const float* r = g->data.frames[frame].root2d;
   placement_point(pl, r[0], r[1], gx, gz);
   *gh = pl->M.h + r[2];
@@ -82,7 +86,12 @@ void smgi_pose_compose(smgi_pose* pose, const smgi_lower* lower,
   place(g, fa, &pa_pl, pa, ra, &gax, &gaz, &gah);
   place(g, fb, plb, pb, rb, &gbx, &gbz, &gbh);
   for (int k = 0; k < 3; ++k) pose->root[k] = pa[k] + a * (pb[k] - pa[k]);
+#if SMGI_POSE_SSE
+  _mm_storeu_ps(pose->rot,
+                smgi_q_nlerp_sse(_mm_loadu_ps(ra), _mm_loadu_ps(rb), a));
+#else
   smgi_q_nlerp(ra, rb, a, pose->rot);
+#endif
   pose->ground[0] = gax + a * (gbx - gax);
   pose->ground[1] = gaz + a * (gbz - gaz);
   pose->heading = smgi_wrap_angle(gah + a * smgi_wrap_angle(gbh - gah));

@@ -111,6 +111,29 @@ static inline __m128 smgi_q_rotate_sse(__m128 q, __m128 v) {
                  _mm_mul_ps(q_zxy, SMGI_SHUF(t, 1, 2, 0, 3))));
 }
 
+/* ((m0 + m1) + m2) + m3: four lanes summed in the plain code's order */
+static inline float smgi_hsum4_sse(__m128 m) {
+  __m128 t = _mm_add_ss(m, SMGI_SHUF(m, 1, 1, 1, 1));
+  t = _mm_add_ss(t, SMGI_SHUF(m, 2, 2, 2, 2));
+  return _mm_cvtss_f32(_mm_add_ss(t, SMGI_SHUF(m, 3, 3, 3, 3)));
+}
+
+/* smgi_q_normalize */
+static inline __m128 smgi_q_normalize_sse(__m128 q) {
+  const float n = smgi_hsum4_sse(_mm_mul_ps(q, q));
+  if (n > 1e-20f && isfinite(n))
+    return _mm_mul_ps(q, _mm_set1_ps(1.0f / sqrtf(n)));
+  return _mm_setr_ps(0.0f, 0.0f, 0.0f, 1.0f);
+}
+
+/* smgi_q_nlerp */
+static inline __m128 smgi_q_nlerp_sse(__m128 a, __m128 b, float t) {
+  const float d = smgi_hsum4_sse(_mm_mul_ps(a, b));
+  const __m128 s = _mm_set1_ps(d < 0.0f ? -t : t);
+  return smgi_q_normalize_sse(
+      _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.0f - t), a), _mm_mul_ps(s, b)));
+}
+
 /* Three floats out of lanes 0..2, nothing written beyond them. */
 static inline void smgi_store3_sse(float* p, __m128 v) {
   _mm_storel_epi64((__m128i*)(void*)p, _mm_castps_si128(v));

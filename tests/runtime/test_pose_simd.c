@@ -74,6 +74,24 @@ static void test_joint_math(void** state) {
     _mm_storeu_ps(back, pos_out);
     assert_same_bits(back, pos_c, 3, "fk returned position", it);
   }
+  /* nlerp and normalisation (the pose's root, foot IK), also of
+   * degenerate and non-finite quaternions */
+  for (uint32_t it = 0; it < 20000u; ++it) {
+    float a[4], b[4], ref[4], got[4];
+    rand_quat(a);
+    rand_quat(b);
+    if (it % 50u == 0u) a[0] = a[1] = a[2] = a[3] = 0.0f;
+    if (it % 50u == 1u) b[1] = INFINITY;
+    if (it % 50u == 2u) b[0] = b[1] = b[2] = b[3] = 1e-12f;
+    const float t = it % 7u == 0u ? 1.0f : frand(0.0f, 1.0f);
+    smgi_q_nlerp(a, b, t, ref);
+    _mm_storeu_ps(got, smgi_q_nlerp_sse(_mm_loadu_ps(a), _mm_loadu_ps(b), t));
+    assert_same_bits(got, ref, 4, "nlerp", it);
+    memcpy(ref, b, sizeof ref);
+    smgi_q_normalize(ref);
+    _mm_storeu_ps(got, smgi_q_normalize_sse(_mm_loadu_ps(b)));
+    assert_same_bits(got, ref, 4, "normalize", it);
+  }
   for (uint32_t it = 0; it < 5000u; ++it) {
     float q[16], p[12], m[64], ref[64], yaw[4];
     for (int k = 0; k < 4; ++k) rand_quat(q + 4 * k);
