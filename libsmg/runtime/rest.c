@@ -155,6 +155,16 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
                  : 0.0f;
   r->step_seconds = fminf(step_seconds(io),
                           fmaxf(SMGI_REST_STEP_MIN, land * r->settle_seconds));
+  /* a stop that arrives with the hips already near where they stand (a
+   * run's stop in mid-stance over the front foot, the rear foot still in
+   * its swing) cannot land that quickly: the hips then keep `left` of
+   * their way until the foot is down, and go the rest after it (with
+   * the ease-out alone, a run's corner stop had its hips stand 2 frames
+   * into the step, the swinging toe 6 cm up) */
+  r->hips_cap = 1.0f;
+  if (way > 0.0f &&
+      way * (1.0f - ease_out(r->step_seconds / r->settle_seconds)) < left)
+    r->hips_cap = fmaxf(1.0f - left / way, 0.0f);
   r->foot = sp.step;
   r->from[0] = r->hold[sp.step][0];
   r->from[1] = r->hold[sp.step][1];
@@ -164,6 +174,26 @@ static void begin_settle(smgi_rest* r, const smgi_rest_io* io) {
   r->dir = 1.0f;
   r->phase = SMGI_REST_SETTLE;
   r->t = 0.0f;
+}
+
+/* The share of their way the hips have gone t into the settling: an
+ * ease-out over settle_seconds; where that would take them past
+ * hips_cap before the step lands, the same shape scaled down to reach
+ * hips_cap at the landing, and from there an ease-out over the rest of
+ * the way, as long again. */
+static float hips_share(const smgi_rest* r, float t) {
+  const float g = ease_out(t / r->settle_seconds);
+  if (r->hips_cap >= 1.0f) return g;
+  if (t < r->step_seconds)
+    return r->hips_cap * g / ease_out(r->step_seconds / r->settle_seconds);
+  return r->hips_cap + (1.0f - r->hips_cap) *
+                           ease_out((t - r->step_seconds) / r->settle_seconds);
+}
+
+/* When the hips stand. */
+static float settle_end(const smgi_rest* r) {
+  return r->hips_cap >= 1.0f ? r->settle_seconds
+                             : r->step_seconds + r->settle_seconds;
 }
 
 static void begin_turn(smgi_rest* r, const smgi_rest_io* io, float angle) {
@@ -321,10 +351,10 @@ int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
   const smgi_idle* idle = &smgi_derived_of(io->in->graph)->idle;
   switch (r->phase) {
     case SMGI_REST_SETTLE: {
-      const float g = ease_out(r->t / r->settle_seconds);
+      const float g = hips_share(r, r->t);
       r->glided = g;
       r->w = idle->count ? g : 0.0f;
-      if (r->t >= r->settle_seconds && r->t >= r->step_seconds) {
+      if (r->t >= settle_end(r) && r->t >= r->step_seconds) {
         r->phase = SMGI_REST_STAND;
         r->t = 0.0f;
       }

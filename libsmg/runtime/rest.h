@@ -41,6 +41,8 @@ typedef struct smgi_rest {
   float glide_from;     /* glided when the fade out began */
   float settle_seconds; /* how long the hips take to come to stand */
   float step_seconds;   /* how long the settling step takes */
+  float hips_cap;       /* share of their way the hips go before the step
+                           lands (1: as far as their ease-out takes them) */
   float pivot[2];       /* turning: about this ground point */
   float turn;           /* radians to turn in all (+ = left) */
   float turned;         /* radians turned so far */
