@@ -16,7 +16,10 @@
  *    without any (the CMU walks) the rear foot steps to hip width beside
  *    the front one and the stop pose stays, held by the IK;
  *  - standing: the standing motion plays on, forwards and backwards (no
- *    seam), under whatever action the upper body performs; the feet stay
+ *    seam), under whatever action the upper body performs; with none, the
+ *    upper body stands with it (not the stop pose's), for standing motion
+ *    from an action with the arms as they hang there lowest (idle.h:
+ *    its arms would wave unasked); the feet stay
  *    where they were placed;
  *  - a new path: where it starts ahead the locomotion takes over again
  *    (the standing motion fades out); where it starts behind the
@@ -250,12 +253,22 @@ static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   const unsigned char* rb = smgi_graph_pose(g, fb);
   float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
   float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : io->pose->tmp;
-  /* the upper body: the action's, or the standing motion's own when it
-   * comes from locomotion (an action's arms would wave unasked) */
-  const smgi_joint_set set = io->action != 0 || !idle->whole
-                                 ? SMGI_JOINTS_NOT_UPPER
-                                 : SMGI_JOINTS_ALL;
-  smgi_sample_joints(g, ra, rb, a, set, tmp);
+  const smgi_joint* joints = g->data.joints;
+  /* the upper body: the action's; else the standing motion's own, but
+   * for one from an action (whose arms would wave unasked) with the arms
+   * as they hang there lowest (idle.h) */
+  const int action = io->upper->action != 0;
+  smgi_sample_joints(g, ra, rb, a,
+                     action ? SMGI_JOINTS_NOT_UPPER : SMGI_JOINTS_ALL, tmp);
+  if (!action && !idle->whole) {
+    const unsigned char* arms = smgi_graph_pose(g, idle->arms);
+    for (uint32_t j = 1; j < J; ++j) {
+      if (joints[j].body_part != SMG_BODY_UPPER || smgi_idle_trunk(joints, j))
+        continue;
+      smgi_quat_unpack_raw(smgi_pose_rot(arms, j), tmp + 4u * j);
+      smgi_q_normalize(tmp + 4u * j);
+    }
+  }
   /* the root, placed in the world */
   float pa[3], pb[3], qa[4], qb[4], q[4], yaw[4], root[4], x, z;
   smgi_pose_root(ra, pa);
@@ -274,12 +287,29 @@ static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   io->pose->root[2] += w * (z - io->pose->root[2]);
   smgi_q_nlerp(io->pose->rot, root, w, q);
   memcpy(io->pose->rot, q, sizeof q);
-  const smgi_joint* joints = g->data.joints;
+  /* the standing upper body comes in as the upper body's crossfade back
+   * from an action goes (the pose has the fade from the action to the
+   * locomotion's own): not at once where the action ends at rest */
+  const float f = io->upper->fade;
+  const float uw = w * (f >= 1.0f ? 1.0f : smooth(f));
   for (uint32_t j = 1; j < J; ++j) {
-    if (set == SMGI_JOINTS_NOT_UPPER && joints[j].body_part == SMG_BODY_UPPER)
-      continue;
-    smgi_q_nlerp(io->pose->rot + 4u * j, tmp + 4u * j, w, q);
+    const int upper = joints[j].body_part == SMG_BODY_UPPER;
+    if (upper && action) continue;
+    smgi_q_nlerp(io->pose->rot + 4u * j, tmp + 4u * j, upper ? uw : w, q);
     memcpy(io->pose->rot + 4u * j, q, sizeof q);
+  }
+}
+
+/* Forwards and backwards through `count` frames (no seam). */
+static void ping_pong(float* at, float* dir, float frames, uint32_t count) {
+  const float last = (float)(count - 1u);
+  *at += *dir * frames;
+  if (*at > last) {
+    *at = fmaxf(2.0f * last - *at, 0.0f);
+    *dir = -1.0f;
+  } else if (*at < 0.0f) {
+    *at = fminf(-*at, last);
+    *dir = 1.0f;
   }
 }
 
@@ -373,16 +403,7 @@ int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
     io->pose->contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
   }
   if (idle->count > 1u && r->w > 0.0f) {
-    /* forwards and backwards through the standing motion */
-    const float last = (float)(idle->count - 1u);
-    r->at += r->dir * dt * io->in->fps;
-    if (r->at > last) {
-      r->at = fmaxf(2.0f * last - r->at, 0.0f);
-      r->dir = -1.0f;
-    } else if (r->at < 0.0f) {
-      r->at = fminf(-r->at, last);
-      r->dir = 1.0f;
-    }
+    ping_pong(&r->at, &r->dir, dt * io->in->fps, idle->count);
     overlay(r, io, r->w);
   }
   return replan;
