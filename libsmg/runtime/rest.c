@@ -300,19 +300,6 @@ static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   }
 }
 
-/* Forwards and backwards through `count` frames (no seam). */
-static void ping_pong(float* at, float* dir, float frames, uint32_t count) {
-  const float last = (float)(count - 1u);
-  *at += *dir * frames;
-  if (*at > last) {
-    *at = fmaxf(2.0f * last - *at, 0.0f);
-    *dir = -1.0f;
-  } else if (*at < 0.0f) {
-    *at = fminf(-*at, last);
-    *dir = 1.0f;
-  }
-}
-
 float smgi_rest_frames(const smgi_rest* r, float frames) {
   return r->phase == SMGI_REST_TURN ? 0.0f : frames;
 }
@@ -403,7 +390,16 @@ int smgi_rest_pose(smgi_rest* r, const smgi_rest_io* io, float dt) {
     io->pose->contacts = SMG_STATE_LEFT_CONTACT | SMG_STATE_RIGHT_CONTACT;
   }
   if (idle->count > 1u && r->w > 0.0f) {
-    ping_pong(&r->at, &r->dir, dt * io->in->fps, idle->count);
+    /* forwards and backwards through the standing motion */
+    const float last = (float)(idle->count - 1u);
+    r->at += r->dir * dt * io->in->fps;
+    if (r->at > last) {
+      r->at = fmaxf(2.0f * last - r->at, 0.0f);
+      r->dir = -1.0f;
+    } else if (r->at < 0.0f) {
+      r->at = fminf(-r->at, last);
+      r->dir = 1.0f;
+    }
     overlay(r, io, r->w);
   }
   return replan;
