@@ -20,6 +20,8 @@
 #include "graph_data.h"
 
 #define SMGI_IDLE_STANCE 0.5f /* leg lengths between the toes, at most */
+#define SMGI_IDLE_TRUNK_SECONDS 1.0f /* from an action: the trunk averaged
+                                        over this long (rest.c) */
 #define SMGI_IDLE_SWING_DEFAULT 0.4f /* s a step takes in a graph without
                                         labelled swings */
 
