@@ -9,9 +9,9 @@
  *
  * The graph is baked here from the synthetic clips (bake_synthetic.h):
  * its standing motion comes from its actions performed standing, whose
- * right arm waves (so only their lower body is standing motion) while the
- * body twists on the hips. On the runtime that kept the stop pose's upper body at
- * rest, every upper-body joint held still (0.0 deg in every 2 s).
+ * right arm waves (the arms must not: they hold still) while the body
+ * twists on the hips. On the runtime that kept the stop pose's upper
+ * body at rest, every upper-body joint held still (0.0 deg in every 2 s).
  */
 #include <setjmp.h>
 #include <stdarg.h>
