@@ -68,6 +68,41 @@ static float swing_seconds(const smg_graph* g) {
   return (float)k / d->info->frame_rate;
 }
 
+/* The arms at rest for standing motion from an action (idle.h): the
+ * stretch's frame in which the arms' end joints (the hands, or the
+ * fingers where the rig has them) hang lowest below the hips, summed (the
+ * first of equals). Bounded by the stretch's length times the skeleton's. */
+static void choose_arms(const smg_graph* g, smgi_idle* out) {
+  const smgi_graph_data* d = &g->data;
+  const uint32_t J = d->joint_count;
+  /* the arms' end joints (up to 64 of them) */
+  uint32_t ends[64], m = 0;
+  for (uint32_t j = 1; j < J && m < 64u; ++j) {
+    if (d->joints[j].body_part != SMG_BODY_UPPER ||
+        smgi_idle_trunk(d->joints, j))
+      continue;
+    int end = 1; /* no joint below it */
+    for (uint32_t k = j + 1u; k < J && end; ++k)
+      end = d->joints[k].parent != (int32_t)j;
+    if (end) ends[m++] = j;
+  }
+  out->arms = out->first;
+  float lowest = INFINITY;
+  for (uint32_t i = 0; i < out->count && m > 0u; ++i) {
+    const uint32_t f = out->first + i;
+    float hips[3], p[3], hang = 0.0f;
+    smgi_frame_joint(g, f, 0u, hips);
+    for (uint32_t k = 0; k < m; ++k) {
+      smgi_frame_joint(g, f, ends[k], p);
+      hang += p[1] - hips[1];
+    }
+    if (hang < lowest) {
+      lowest = hang;
+      out->arms = f;
+    }
+  }
+}
+
 void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
   const smgi_graph_data* d = &g->data;
   const smgi_info* info = d->info;
@@ -111,4 +146,5 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
     const float dx = b[0] - a[0], dz = b[1] - a[1];
     out->sway = fmaxf(out->sway, sqrtf(dx * dx + dz * dz));
   }
+  if (out->count > 0 && !out->whole) choose_arms(g, out);
 }

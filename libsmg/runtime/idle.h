@@ -4,6 +4,13 @@
  * finds in the pool: the longest one whose feet stand naturally close
  * (toes at most SMGI_IDLE_STANCE leg lengths apart), one from a
  * locomotion clip (the whole body stands) before one from an action.
+ *
+ * From an action the arms would wave unasked, so at rest its trunk (the
+ * upper-body joints without a mirror partner: spine, neck, head) plays
+ * with its lower body, frame for frame (the spine's turn on the hips
+ * belongs to the hips' own sway), and the arms (the upper-body joints
+ * with a partner) hold their rotations of the stretch's frame in which
+ * their ends hang lowest: before the arms rise or after they come down.
  */
 #ifndef SMG_IDLE_H
 #define SMG_IDLE_H
@@ -13,6 +20,8 @@
 #include "graph_data.h"
 
 #define SMGI_IDLE_STANCE 0.5f /* leg lengths between the toes, at most */
+#define SMGI_IDLE_TRUNK_SECONDS 1.0f /* from an action: the trunk averaged
+                                        over this long (rest.c) */
 #define SMGI_IDLE_SWING_DEFAULT 0.4f /* s a step takes in a graph without
                                         labelled swings */
 
@@ -24,6 +33,8 @@ typedef struct smgi_idle {
   /* left and right toe (x, z) at `first`, in that frame's ground frame
    * (FRMI root2d): where the feet stand relative to the hips */
   float toe[2][2];
+  uint32_t arms;         /* whole 0: the pool frame whose arms the upper
+                            body holds at rest (see above) */
   float floor;           /* the lower toe's height there (POSE space less
                             the ground height): where the motion's floor is */
   /* how far its hips' ground point strays from where it stands at
@@ -34,6 +45,12 @@ typedef struct smgi_idle {
    * labelled swings, seconds): the steps made at rest take as long */
   float swing_seconds;
 } smgi_idle;
+
+/* Whether joint j is part of the trunk: an upper-body joint without a
+ * mirror partner (spine, neck, head; an arm's joints have one). */
+static inline int smgi_idle_trunk(const smgi_joint* joints, uint32_t j) {
+  return joints[j].body_part == SMG_BODY_UPPER && joints[j].mirror == j;
+}
 
 /* Clip-space position of joint j in pool frame f (the chain from the root
  * composed joint by joint: a leg is a handful of joints). */

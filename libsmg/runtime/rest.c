@@ -16,7 +16,10 @@
  *    without any (the CMU walks) the rear foot steps to hip width beside
  *    the front one and the stop pose stays, held by the IK;
  *  - standing: the standing motion plays on, forwards and backwards (no
- *    seam), under whatever action the upper body performs; the feet stay
+ *    seam), under whatever action the upper body performs; with none, the
+ *    upper body stands with it (not the stop pose's), for standing motion
+ *    from an action with the arms as they hang there lowest (idle.h:
+ *    its arms would wave unasked); the feet stay
  *    where they were placed;
  *  - a new path: where it starts ahead the locomotion takes over again
  *    (the standing motion fades out); where it starts behind the
@@ -266,6 +269,44 @@ static void turn_step(smgi_rest* r, const smgi_rest_io* io) {
   }
 }
 
+/* Standing motion from an action: its trunk above the spine base (whose
+ * turn on the hips belongs to the hips' own sway, played as is) averaged
+ * over SMGI_IDLE_TRUNK_SECONDS about frame i0 + a (a box over the frames,
+ * the edge ones weighted by a; the stretch's ends repeated): a
+ * performer's trunk follows the action's beat (an energetic wave bobs
+ * the chest 3-4 deg at 2 Hz), its slower sway is standing. Bounded: the
+ * window's frames times the trunk's joints. */
+static void calm_trunk(const smg_graph* g, const smgi_idle* idle,
+                       uint32_t i0, float a, float* tmp) {
+  const smgi_joint* joints = g->data.joints;
+  const uint32_t J = g->data.joint_count;
+  const uint32_t sb = g->data.info->spine_base_joint;
+  const int32_t K = (int32_t)(0.5f * SMGI_IDLE_TRUNK_SECONDS *
+                                  g->data.info->frame_rate +
+                              0.5f);
+  const int32_t last = (int32_t)idle->count - 1;
+  for (uint32_t j = 1; j < J; ++j) {
+    if (j == sb || !smgi_idle_trunk(joints, j)) continue;
+    const float* ref = tmp + 4u * j;
+    float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int32_t k = -K; k <= K + 1; ++k) {
+      const float w = k == -K ? 1.0f - a : k == K + 1 ? a : 1.0f;
+      int32_t i = (int32_t)i0 + k;
+      i = i < 0 ? 0 : i > last ? last : i;
+      float q[4];
+      smgi_quat_unpack_raw(
+          smgi_pose_rot(smgi_graph_pose(g, idle->first + (uint32_t)i), j), q);
+      const float s =
+          q[0] * ref[0] + q[1] * ref[1] + q[2] * ref[2] + q[3] * ref[3] < 0.0f
+              ? -w
+              : w;
+      for (int c = 0; c < 4; ++c) sum[c] += s * q[c];
+    }
+    smgi_q_normalize(sum);
+    memcpy(tmp + 4u * j, sum, sizeof sum);
+  }
+}
+
 /* The standing motion at r->at laid over the pose with weight w. */
 static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   const smg_graph* g = io->in->graph;
@@ -280,12 +321,23 @@ static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   const unsigned char* rb = smgi_graph_pose(g, fb);
   float stack_tmp[4u * SMGI_POSE_STACK_JOINTS];
   float* tmp = J <= SMGI_POSE_STACK_JOINTS ? stack_tmp : io->pose->tmp;
-  /* the upper body: the action's, or the standing motion's own when it
-   * comes from locomotion (an action's arms would wave unasked) */
-  const smgi_joint_set set = io->action != 0 || !idle->whole
-                                 ? SMGI_JOINTS_NOT_UPPER
-                                 : SMGI_JOINTS_ALL;
-  smgi_sample_joints(g, ra, rb, a, set, tmp);
+  const smgi_joint* joints = g->data.joints;
+  /* the upper body: the action's; else the standing motion's own, but
+   * for one from an action (whose arms would wave unasked) with the arms
+   * as they hang there lowest (idle.h) */
+  const int action = io->upper->action != 0;
+  smgi_sample_joints(g, ra, rb, a,
+                     action ? SMGI_JOINTS_NOT_UPPER : SMGI_JOINTS_ALL, tmp);
+  if (!action && !idle->whole) {
+    calm_trunk(g, idle, i0, a, tmp);
+    const unsigned char* arms = smgi_graph_pose(g, idle->arms);
+    for (uint32_t j = 1; j < J; ++j) {
+      if (joints[j].body_part != SMG_BODY_UPPER || smgi_idle_trunk(joints, j))
+        continue;
+      smgi_quat_unpack_raw(smgi_pose_rot(arms, j), tmp + 4u * j);
+      smgi_q_normalize(tmp + 4u * j);
+    }
+  }
   /* the root, placed in the world */
   float pa[3], pb[3], qa[4], qb[4], q[4], yaw[4], root[4], x, z;
   smgi_pose_root(ra, pa);
@@ -304,11 +356,15 @@ static void overlay(smgi_rest* r, const smgi_rest_io* io, float w) {
   io->pose->root[2] += w * (z - io->pose->root[2]);
   smgi_q_nlerp(io->pose->rot, root, w, q);
   memcpy(io->pose->rot, q, sizeof q);
-  const smgi_joint* joints = g->data.joints;
+  /* the standing upper body comes in as the upper body's crossfade back
+   * from an action goes (the pose has the fade from the action to the
+   * locomotion's own): not at once where the action ends at rest */
+  const float f = io->upper->fade;
+  const float uw = w * (f >= 1.0f ? 1.0f : smooth(f));
   for (uint32_t j = 1; j < J; ++j) {
-    if (set == SMGI_JOINTS_NOT_UPPER && joints[j].body_part == SMG_BODY_UPPER)
-      continue;
-    smgi_q_nlerp(io->pose->rot + 4u * j, tmp + 4u * j, w, q);
+    const int upper = joints[j].body_part == SMG_BODY_UPPER;
+    if (upper && action) continue;
+    smgi_q_nlerp(io->pose->rot + 4u * j, tmp + 4u * j, upper ? uw : w, q);
     memcpy(io->pose->rot + 4u * j, q, sizeof q);
   }
 }

@@ -15,6 +15,7 @@
 #include "smg.h"
 #include "steer.h"
 #include "step_in.h"
+#include "upper.h"
 
 #define SMGI_REST_OFF 0u    /* following the locomotion */
 #define SMGI_REST_SETTLE 1u /* the last step: feet beside each other, hips
@@ -60,14 +61,16 @@ typedef struct smgi_rest {
  * inputs (graph, path, progress), the steering (its mode and the motion's
  * speed; the turn on the spot moves the pose and plan through it), the
  * pose, the lower timeline (turned with the pose), the foot IK (where the
- * feet are shown; this stage places them) and the upper body's action. */
+ * feet are shown; this stage places them) and the upper body (its
+ * action, and its crossfade back to none: the standing upper body fades
+ * in with it). */
 typedef struct smgi_rest_io {
   const smgi_step_in* in;
   smgi_steer* steer;
   smgi_pose* pose;
   smgi_lower* lower;
   smgi_ik* ik;
-  uint32_t action;
+  const smgi_upper* upper;
 } smgi_rest_io;
 
 /* Frames the lower body advances this step, given what the steering

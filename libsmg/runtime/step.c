@@ -185,7 +185,7 @@ smg_result smgi_step(smg_character* ch, float dt) {
     smgi_steer_apply(&ch->steer, &ch->pose, &ch->lower, &in, dt);
   /* standing still: settling, standing motion, turning on the spot */
   const smgi_rest_io rest = {&in,       &ch->steer, &ch->pose,
-                             &ch->lower, &ch->ik,    ch->upper.action};
+                             &ch->lower, &ch->ik,    &ch->upper};
   if (smgi_rest_pose(&ch->rest, &rest, dt)) smgi_character_replan(ch);
   /* world transforms are cached: IK needs them, and the getters then
    * only convert (model matrices) or copy (local pose) */

@@ -20,7 +20,9 @@
  *    the frames moving faster than 0.5 m/s), the cadence (longest over
  *    median swing of both toes until the hips stop) and the rest after
  *    the end (toe heights, ankle spacing, the smallest joint-rotation
- *    range over any 2 s);
+ *    range over any 2 s; the same among the upper-body joints alone, and
+ *    the hands' median mean speed over 2 s on the body, in the pelvis's
+ *    frame: a standing upper body that moves, calmly);
  *  - start and a path behind a standing character: after an 8 m walk and
  *    a rest, a 12 m path ahead of the pelvis, and (in a second run) an
  *    8 m path behind it.
@@ -75,6 +77,7 @@ typedef struct bh_graph {
   smg_graph* g;
   const char* key, *name;
   eval_joints j;
+  unsigned char* upper; /* per joint: 1 for an upper-body joint */
   uint32_t walk, run;
   int have_run;
   double walk_speed, run_speed, threshold;
@@ -256,7 +259,20 @@ typedef struct bh_path_result {
   double swing_ratio, swing_longest, swing_median;
   double swing_ratio_path; /* the same before the last BH_BEFORE_END_M */
   double rest_s, rest_toe_cm, rest_ankles_m, rest_motion_deg;
+  double rest_upper_deg, rest_hands_cms;
 } bh_path_result;
+
+/* Joint h in the pelvis's frame at frame i: where a hand is on the body,
+ * whatever the body's own sway over the feet. */
+static void hand_on_pelvis(const bh_rec* r, const bh_graph* bg, size_t i,
+                           uint32_t h, double* out) {
+  const double* p = jp(r, i, h);
+  const double* o = jp(r, i, bg->j.hips);
+  const double* q = r->hipq + 4 * i;
+  const double inv[4] = {-q[0], -q[1], -q[2], q[3]};
+  const double v[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+  em_quat_rotate(inv, v, out);
+}
 
 /* Rest measures over frames [first, last). */
 static void rest_measures(const bh_rec* r, const bh_graph* bg, size_t first,
@@ -264,7 +280,8 @@ static void rest_measures(const bh_rec* r, const bh_graph* bg, size_t first,
   const uint32_t toe[2] = {bg->j.ltoe, bg->j.rtoe};
   const size_t win = (size_t)(2.0 * BH_RATE), hop = (size_t)(BH_RATE / 2);
   double top = 0.0, apart = 0.0, least = INFINITY;
-  size_t i, k, a;
+  double least_upper = INFINITY, hands[64];
+  size_t i, k, a, nw = 0;
   out->rest_s = (double)(last - first) * BH_DT;
   for (k = 0; k < 2; ++k) {
     double level = eval_feet_floor_level(r->pos + toe[k] * 3, 3 * r->J,
@@ -289,6 +306,41 @@ static void rest_measures(const bh_rec* r, const bh_graph* bg, size_t first,
     }
     if (most < least) least = most;
   }
+  /* the upper body alone (the legs stand still or shift the weight; is
+   * the rest of the body a stop frame?), and the hands' mean speed on the
+   * body (in the pelvis's frame) over the same windows: a wave is not a
+   * calm stand */
+  for (a = first; a + win <= last; a += hop) {
+    double most = 0.0, path = 0.0;
+    int nh = 0;
+    for (k = 0; k < r->J; ++k) {
+      double v;
+      if (!bg->upper || !bg->upper[k]) continue;
+      v = eval_gait_rotation_range_deg(r->loc + a * 4 * r->J + 4 * k,
+                                       4 * r->J, win);
+      if (v > most) most = v;
+    }
+    if (most < least_upper) least_upper = most;
+    for (k = 0; k < 2; ++k) {
+      uint32_t h = k ? bg->j.rhand : bg->j.lhand;
+      if (h >= r->J) continue;
+      for (i = a + 1; i < a + win; ++i) {
+        double p[3], q[3];
+        hand_on_pelvis(r, bg, i - 1, h, p);
+        hand_on_pelvis(r, bg, i, h, q);
+        path += sqrt((q[0] - p[0]) * (q[0] - p[0]) +
+                     (q[1] - p[1]) * (q[1] - p[1]) +
+                     (q[2] - p[2]) * (q[2] - p[2]));
+      }
+      nh++;
+    }
+    if (nh && nw < 64)
+      hands[nw++] = 100.0 * path / nh / ((double)(win - 1) * BH_DT);
+  }
+  out->rest_upper_deg = isfinite(least_upper) ? least_upper : NAN;
+  /* the median window: the first holds the end of the settling, arms
+   * coming to hang from their stride */
+  out->rest_hands_cms = nw ? eval_gait_median(hands, nw) : NAN;
   out->rest_toe_cm = last > first ? 100.0 * top : NAN;
   out->rest_ankles_m = last > first ? apart : NAN;
   out->rest_motion_deg = isfinite(least) ? least : NAN;
@@ -693,6 +745,7 @@ typedef struct bh_summary {
   double swing_ratio;                   /* largest */
   double swing_ratio_path;              /* largest, before the last 2 m */
   double rest_toe_cm, rest_ankles_m, rest_motion_deg;
+  double rest_upper_deg, rest_hands_cms;
   double start_swing_ratio, start_reach_s;
   double face_s, face_moved_m, face_toes_cms;
   double smooth_mean_cm, tight_max_cm, feet_cms, pelvis_deg;
@@ -710,14 +763,15 @@ static double worse_min(double a, double b) {
 static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
                          bh_summary* s) {
   static double path[2 * BH_MAX_POINTS];
-  char b[13][24];
+  char b[14][24];
   size_t k, n;
   int st;
   s->measured = 1;
   s->held_smooth = s->held_tight = INFINITY;
   s->swing_ratio = s->swing_ratio_path = 0.0;
   s->rest_toe_cm = s->rest_ankles_m = 0.0;
-  s->rest_motion_deg = INFINITY;
+  s->rest_motion_deg = s->rest_upper_deg = INFINITY;
+  s->rest_hands_cms = 0.0;
   s->smooth_mean_cm = s->tight_max_cm = s->feet_cms = s->pelvis_deg = 0.0;
   n = eval_read_path("data/paths/straight.txt", path, BH_MAX_POINTS);
   s->walk_speed = n >= 2 ? steady_speed(bg, path, n, bg->walk, 1) : NAN;
@@ -759,8 +813,9 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
           "pelvis vs travel p95 deg | swings: longest / median s (ratio) | "
           "ratio before the last 2 m | "
           "at rest: s | toes above floor cm | ankles apart m | least "
-          "rotation range in 2 s deg |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|\n");
+          "rotation range in 2 s deg | the same, upper body | hands on the "
+          "body, median 2 s mean cm/s |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (k = 0; k < BH_PATHS; ++k) {
     char file[256];
     snprintf(file, sizeof(file), "data/paths/%s.txt", k_paths[k].key);
@@ -771,20 +826,21 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
       memset(&r, 0, sizeof(r));
       if (n >= 2) path_run(bg, path, n, st ? bg->run : bg->walk, &r);
       if (!r.ok) {
-        eval_md(ctx, "| %s | %s | run failed | | | | | | | | |\n",
+        eval_md(ctx, "| %s | %s | run failed | | | | | | | | | | |\n",
                 k_paths[k].title, st ? "run" : "walk");
         s->swing_ratio = INFINITY;
         continue;
       }
       eval_log("behaviour %s %-12s %-4s err %.1f/%.1f feet %.1f pelvis %.1f "
-               "swing %.2f/%.2f rest %.1f s toe %.1f ankles %.2f motion %.2f",
+               "swing %.2f/%.2f rest %.1f s toe %.1f ankles %.2f motion %.2f "
+               "upper %.2f hands %.1f",
                bg->key, k_paths[k].key, st ? "run" : "walk", r.mean_cm,
                r.max_cm, r.feet_cms, r.pelvis_p95_deg, r.swing_longest,
                r.swing_median, r.rest_s, r.rest_toe_cm, r.rest_ankles_m,
-               r.rest_motion_deg);
+               r.rest_motion_deg, r.rest_upper_deg, r.rest_hands_cms);
       eval_md(ctx,
               "| %s | %s | %s / %s | %s | %s | %s / %s (%s) | %s | %s | %s | "
-              "%s | %s |\n",
+              "%s | %s | %s | %s |\n",
               k_paths[k].title, st ? "run" : "walk",
               eval_fmt(b[0], sizeof(b[0]), "%.1f", r.mean_cm),
               eval_fmt(b[1], sizeof(b[1]), "%.1f", r.max_cm),
@@ -797,12 +853,16 @@ static void behave_graph(eval_ctx* ctx, bh_graph* bg, int figures,
               eval_fmt(b[7], sizeof(b[7]), "%.1f", r.rest_s),
               eval_fmt(b[8], sizeof(b[8]), "%.1f", r.rest_toe_cm),
               eval_fmt(b[9], sizeof(b[9]), "%.2f", r.rest_ankles_m),
-              eval_fmt(b[10], sizeof(b[10]), "%.2f", r.rest_motion_deg));
+              eval_fmt(b[10], sizeof(b[10]), "%.2f", r.rest_motion_deg),
+              eval_fmt(b[12], sizeof(b[12]), "%.2f", r.rest_upper_deg),
+              eval_fmt(b[13], sizeof(b[13]), "%.1f", r.rest_hands_cms));
       s->swing_ratio = worse_max(s->swing_ratio, r.swing_ratio);
       s->swing_ratio_path = worse_max(s->swing_ratio_path, r.swing_ratio_path);
       s->rest_toe_cm = worse_max(s->rest_toe_cm, r.rest_toe_cm);
       s->rest_ankles_m = worse_max(s->rest_ankles_m, r.rest_ankles_m);
       s->rest_motion_deg = worse_min(s->rest_motion_deg, r.rest_motion_deg);
+      s->rest_upper_deg = worse_min(s->rest_upper_deg, r.rest_upper_deg);
+      s->rest_hands_cms = worse_max(s->rest_hands_cms, r.rest_hands_cms);
       s->feet_cms = worse_max(s->feet_cms, r.feet_cms);
       s->pelvis_deg = worse_max(s->pelvis_deg, r.pelvis_p95_deg);
       if (k_paths[k].tight)
@@ -888,6 +948,10 @@ static const bh_target k_targets[] = {
     {"at rest: ankles apart (m, largest)", 0, 0.40, "%.2f", 0},
     {"at rest: least rotation range of any 2 s (deg; graphs with standing "
      "motion)", 1, 1.0, "%.2f", 0},
+    {"at rest: the same among the upper-body joints (deg; graphs with "
+     "standing motion)", 1, 0.5, "%.2f", 0},
+    {"at rest: hands' mean speed on the body, median 2 s (cm/s, largest; "
+     "diagnostic: a wave moves them tens of cm/s)", 0, 0.0, "%.1f", 1},
     {"start: longest swing in the first 2 s / steady median swing", 0, 1.5,
      "%.2f", 0},
     {"start: 80 % of the steady speed after (s)", 0, 1.5, "%.2f", 0},
@@ -913,14 +977,16 @@ static double target_value(const bh_summary* s, size_t t) {
     case 4: return s->rest_toe_cm;
     case 5: return s->rest_ankles_m;
     case 6: return s->rest_motion_deg;
-    case 7: return s->start_swing_ratio;
-    case 8: return s->start_reach_s;
-    case 9: return s->face_s;
-    case 10: return s->face_moved_m;
-    case 11: return s->face_toes_cms;
-    case 12: return s->smooth_mean_cm;
-    case 13: return s->tight_max_cm;
-    case 14: return s->feet_cms;
+    case 7: return s->rest_upper_deg;
+    case 8: return s->rest_hands_cms;
+    case 9: return s->start_swing_ratio;
+    case 10: return s->start_reach_s;
+    case 11: return s->face_s;
+    case 12: return s->face_moved_m;
+    case 13: return s->face_toes_cms;
+    case 14: return s->smooth_mean_cm;
+    case 15: return s->tight_max_cm;
+    case 16: return s->feet_cms;
     default: return s->pelvis_deg;
   }
 }
@@ -941,6 +1007,30 @@ static const bh_graph_spec k_graphs[] = {
     {"bandai", "Bandai Namco graph", NULL, 2, 0, 1},
 };
 #define BH_GRAPHS (sizeof(k_graphs) / sizeof(k_graphs[0]))
+
+/* Per joint, 1 for an upper-body joint (malloc'd; NULL when out of
+ * memory or the graph cannot say). */
+static unsigned char* upper_joints(const smg_graph* g) {
+  smg_graph_info info;
+  unsigned char* up;
+  uint32_t k;
+  memset(&info, 0, sizeof(info));
+  info.struct_size = sizeof(info);
+  if (smg_graph_get_info(g, &info) != SMG_OK || info.joint_count == 0)
+    return NULL;
+  up = (unsigned char*)calloc(info.joint_count, 1);
+  for (k = 0; up && k < info.joint_count; ++k) {
+    smg_joint_info ji;
+    memset(&ji, 0, sizeof(ji));
+    ji.struct_size = sizeof(ji);
+    if (smg_graph_get_joint(g, k, &ji) != SMG_OK) {
+      free(up);
+      return NULL;
+    }
+    up[k] = ji.body_part == SMG_BODY_UPPER;
+  }
+  return up;
+}
 
 void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
                             size_t cmu_size) {
@@ -981,7 +1071,11 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
           "rest (after the stop) the toes' height above their floor level "
           "over the run (5th percentile), "
           "the ankles' horizontal distance and the least, over 2 s windows "
-          "every 0.5 s, of the largest rotation range of any joint. Start: "
+          "every 0.5 s, of the largest rotation range of any joint, the "
+          "same among the upper-body joints alone (is the upper body a "
+          "stop frame?), and the median over those windows of the hands' "
+          "(wrists') mean speed in the pelvis's frame (a calm stand, not a "
+          "wave; the first window holds the end of the settling). Start: "
           "an 8 m walk, %.0f s standing, then a 12 m path ahead of the "
           "pelvis; 80 %% of the steady speed (median window speed 3 m after "
           "the start to 4 m before the end) is reached when the hips' mean "
@@ -1021,8 +1115,10 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
       eval_md(ctx, "**%s**: not available in this run.\n\n", gs->name);
     } else {
       bg.have_run = smg_graph_find_style(bg.g, "run", &bg.run) == SMG_OK;
+      bg.upper = upper_joints(bg.g);
       behave_graph(ctx, &bg, gs->figures, &sum[k]);
     }
+    free(bg.upper);
     if (bg.g) smg_graph_destroy(bg.g);
     free(owned);
   }
@@ -1058,7 +1154,7 @@ void eval_section_behaviour(eval_ctx* ctx, const void* cmu_blob,
         eval_md(ctx, " %s |", v);
         continue;
       }
-      if (t == 6 && !sum[k].standing) {
+      if ((t == 6 || t == 7) && !sum[k].standing) {
         eval_md(ctx, " %s (no standing motion in the data) |", v);
         continue;
       }

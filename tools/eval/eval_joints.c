@@ -47,6 +47,12 @@ int eval_find_joints(const smg_graph* g, eval_joints* j) {
         j->ltoe = (uint32_t)r.joint[SMGB_ROLE_LEFT_TOES];
         j->rfoot = (uint32_t)r.joint[SMGB_ROLE_RIGHT_FOOT];
         j->rtoe = (uint32_t)r.joint[SMGB_ROLE_RIGHT_TOES];
+        j->lhand = r.joint[SMGB_ROLE_LEFT_HAND] >= 0
+                       ? (uint32_t)r.joint[SMGB_ROLE_LEFT_HAND]
+                       : UINT32_MAX;
+        j->rhand = r.joint[SMGB_ROLE_RIGHT_HAND] >= 0
+                       ? (uint32_t)r.joint[SMGB_ROLE_RIGHT_HAND]
+                       : UINT32_MAX;
       }
     }
   }

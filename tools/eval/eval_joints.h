@@ -1,6 +1,6 @@
 /*
  * eval_joints.h - the joints the evaluation measures (pelvis, both feet and
- * toes) found in a loaded graph by their body roles (bake_roles.h), so the
+ * toes, both hands) found in a loaded graph by their body roles (bake_roles.h), so the
  * metrics work on any rig the baker accepts (CMU's LeftToeBase, Bandai
  * Namco's Toes_L, Mixamo's mixamorig:LeftToeBase, ...).
  */
@@ -13,6 +13,7 @@
 
 typedef struct eval_joints {
   uint32_t hips, lfoot, ltoe, rfoot, rtoe;
+  uint32_t lhand, rhand; /* wrists; UINT32_MAX where not recognised */
 } eval_joints;
 
 /* Fills *j from the graph's skeleton; 0 when a role is not recognised (or
