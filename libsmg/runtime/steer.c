@@ -21,7 +21,10 @@
  *    turning step whose body leads the turn) is slid out as it happens,
  *    within the same bound, so that the path is walked facing it;
  *  - both rates change by a bounded amount per second, so the correction
- *    never pops when it starts, saturates or stops.
+ *    never pops when it starts, saturates or stops;
+ *  - body: what that leaves of the body facing off the way the character
+ *    really goes (a lead beyond the slide bound, a tight curl) is turned
+ *    out of the pose alone, about the ground point (body_onto_travel).
  * The correction is applied to the pose just composed and to the queued
  * edges' placements (the two the pose samples at once, further ones
  * through the correction pending for them, smgi_lag_apply, when read), so
@@ -71,6 +74,8 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->own_turn = s->own_speed = 0.0f;
   s->own_face[0] = s->own_face[1] = 0.0f;
   s->own_travel[0] = s->own_travel[1] = 0.0f;
+  s->out_travel[0] = s->out_travel[1] = 0.0f;
+  s->body_turn = 0.0f;
   s->turn = 0.0f;
   s->slide[0] = s->slide[1] = 0.0f;
   s->rate = 1.0f;
@@ -86,6 +91,7 @@ void smgi_steer_set_limits(smgi_steer* s, float turn_limit,
   s->turn_limit = turn_limit;
   s->slide_ratio = slide_ratio;
   s->stop_seconds = stop_seconds;
+  s->body_max = slide_ratio / sqrtf(1.0f + slide_ratio * slide_ratio);
 }
 
 void smgi_steer_path_changed(smgi_steer* s) {
@@ -695,9 +701,70 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
    * walk off after a turn on the spot read the turn as a lead) */
   turn_vec(s->own_face, &d);
   turn_vec(s->own_travel, &d);
+  turn_vec(s->out_travel, &d);
   s->prev_x = pose->ground[0];
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;
+}
+
+/* What the lead's removal leaves (a lead the slide bound cannot slide
+ * out, a body turning no faster than its bound in a tight curl, the
+ * slide back to the path bending the travel): the body is turned onto
+ * the way the character really goes, (ox, oz) this step. The motion's
+ * low-passed facing against the low-passed direction of its travel after
+ * the correction (unit steps, so a turn slowing down is not judged by
+ * its faster way in), beyond the sway's residue, is turned out of the
+ * pose alone, about the ground point, at most body_max (the angle the
+ * slide bound lets the body crab) and over SMGI_STEER_HEADING_TIME; the
+ * plan and the ground transform are left alone (turning them would
+ * turn the travel with the body). Angles this small are taken as their
+ * sines. `fade` scales it (0: back to none, as at the end). */
+static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float ox,
+                             float oz, float dt, float fade) {
+  const float kl = dt / (SMGI_STEER_LEAD_SMOOTH + dt);
+  float* t = s->out_travel;
+  const float o2 = ox * ox + oz * oz;
+  if (o2 > SMGI_STEER_LEAD_SPEED * SMGI_STEER_LEAD_SPEED * dt * dt) {
+    const float inv = 1.0f / sqrtf(o2);
+    t[0] += kl * (ox * inv - t[0]);
+    t[1] += kl * (oz * inv - t[1]);
+  }
+  const float* f = s->own_face;
+  const float f2 = f[0] * f[0] + f[1] * f[1];
+  const float t2 = t[0] * t[0] + t[1] * t[1];
+  const float min2 = SMGI_STEER_LEAD_MIN * SMGI_STEER_LEAD_MIN;
+  float want = 0.0f;
+  if (fade > 0.0f && s->own_speed > SMGI_STEER_LEAD_SPEED && f2 > min2 &&
+      t2 > min2 && t[0] * f[0] + t[1] * f[1] > 0.0f) {
+    const float off = (t[1] * f[0] - t[0] * f[1]) / sqrtf(f2 * t2);
+    const float beyond = fabsf(off) - SMGI_STEER_LEAD_SWAY;
+    if (beyond > 0.0f)
+      want = -fade * (off > 0.0f ? (beyond < s->body_max ? beyond : s->body_max)
+                                 : -(beyond < s->body_max ? beyond : s->body_max));
+  }
+  s->body_turn += (want - s->body_turn) * dt / (SMGI_STEER_HEADING_TIME + dt);
+  /* back to none: exactly none, and nothing to turn */
+  if (want == 0.0f && fabsf(s->body_turn) < SMGI_STEER_BODY_REST)
+    s->body_turn = 0.0f;
+  if (s->body_turn == 0.0f) return;
+  /* the half angle's sine and cosine by their series (|x| <= 0.13: the
+   * next terms are below 1e-8), the turn's by the double angle */
+  const float x = 0.5f * s->body_turn, x2 = x * x;
+  const float sh = x * (1.0f - x2 * (1.0f / 6.0f) * (1.0f - x2 * 0.05f));
+  const float chh = 1.0f - x2 * 0.5f * (1.0f - x2 * (1.0f / 12.0f));
+  const float sn = 2.0f * sh * chh, c = 1.0f - 2.0f * sh * sh;
+  const float rx = pose->root[0] - pose->ground[0];
+  const float rz = pose->root[2] - pose->ground[1];
+  pose->root[0] = pose->ground[0] + c * rx + sn * rz;
+  pose->root[2] = pose->ground[1] - sn * rx + c * rz;
+  /* the yaw (0, sh, 0, chh) times the root's rotation */
+  float* r = pose->rot;
+  const float qx = chh * r[0] + sh * r[2], qy = chh * r[1] + sh * r[3];
+  const float qz = chh * r[2] - sh * r[0], qw = chh * r[3] - sh * r[1];
+  r[0] = qx;
+  r[1] = qy;
+  r[2] = qz;
+  r[3] = qw;
 }
 
 void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
@@ -729,6 +796,16 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   /* the motion's low-passed travel turned onto its low-passed facing:
    * the slide that removes its sideways drift (lead: the angle between) */
   float lead = 0.0f, drift_x = 0.0f, drift_z = 0.0f;
+  /* none over the last braking distance: the stop is chosen and braked
+   * onto along the motion's own line (gone over the second braking
+   * distance before it) */
+  float end_fade = 1.0f;
+  {
+    const float brake = s->own_speed * s->stop_seconds;
+    if (brake > 0.0f)
+      end_fade = smgi_clampf((in->path->length - in->progress) / brake - 1.0f,
+                             0.0f, 1.0f);
+  }
   {
     const float* f = s->own_face;
     const float* t = s->own_travel;
@@ -743,13 +820,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
       float keep = al > SMGI_STEER_LEAD_SWAY
                        ? (al - SMGI_STEER_LEAD_SWAY) / al
                        : 0.0f;
-      /* none over the last braking distance: the stop is chosen and
-       * braked onto along the motion's own line (gone over the second
-       * braking distance before it) */
-      const float brake = s->own_speed * s->stop_seconds;
-      if (brake > 0.0f)
-        keep *= smgi_clampf((in->path->length - in->progress) / brake - 1.0f,
-                            0.0f, 1.0f);
+      keep *= end_fade;
       lead *= keep;
       drift_x = keep * (tl * f[0] / fl - t[0]);
       drift_z = keep * (tl * f[1] / fl - t[1]);
@@ -862,6 +933,8 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   d.pz = gz;
   d.tx = s->slide[0] * dt + back_x;
   d.tz = s->slide[1] * dt + back_z;
+  const float before_x = s->have_prev ? gx - travel_x : gx;
+  const float before_z = s->have_prev ? gz - travel_z : gz;
   move(pose, lower, &d);
   s->drift_turn += fabsf(d.da);
   /* shorter strides move the plan back along the path with the
@@ -871,6 +944,12 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   s->prev_x = pose->ground[0];
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;
+  body_onto_travel(s, pose, pose->ground[0] - before_x,
+                   pose->ground[1] - before_z, dt,
+                   s->enabled && p->count >= 2u &&
+                           s->mode == SMGI_STEER_FOLLOW
+                       ? end_fade
+                       : 0.0f);
 }
 
 void smgi_lag_follow(smgi_lag* l, float c, float sn, float da, float px,

@@ -39,6 +39,14 @@ typedef struct smgi_steer {
    * faces off the way it goes, without the sway and twist of each step */
   float own_face[2];
   float own_travel[2];
+  /* the way the character really goes (its ground velocity after the
+   * correction, m/s), low-passed the same way, and the body's turn onto
+   * it about the ground point (radians, applied to the pose alone: the
+   * plan and the ground transform keep the motion's facing) */
+  float out_travel[2];
+  float body_turn;
+  float body_max;         /* the largest body_turn: the angle the slide
+                           * ratio crabs the body by (its sine) */
   /* the correction, continuous (its rate of change is bounded) */
   float turn;             /* heading correction, rad/s */
   float slide[2];         /* translation correction, m/s (x, z) */

@@ -199,6 +199,9 @@
                                     sway (a stride's hips swing +-8 deg
                                     about the travel, a third of it
                                     passes): a lead within it is noise */
+#define SMGI_STEER_BODY_REST 1e-4f   /* rad: the body's turn onto its
+                                    travel (steer.c) this near none
+                                    fading out is none */
 #define SMGI_STEER_LEAD_MIN 0.5f      /* the low-passed facing's length below
                                     which it is no direction (a spin) */
 #define SMGI_STEER_LEAD_SPEED 0.2f    /* m/s: travel slower than this has no
