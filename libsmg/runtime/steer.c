@@ -423,14 +423,15 @@ static float segment_heading(smgi_steer* st, const smgi_path* p,
 
 /* The share of the motion's full speed `full` (m/s) at which the steering
  * turns as tightly as a path turning `kappa` radians per metre: the turn
- * the path asks for beyond the motion's own `own_turn` within the turn
- * limit, and the body's sideways acceleration within what friction gives
- * (SMGI_STEER_GRIP: the speed round a radius r is at most sqrt(a r)). */
-static float turn_share(const smgi_steer* st, float kappa, float full,
+ * the path asks for beyond the motion's own `own_turn` within `limit`
+ * (rad/s: the turn limit, or a cut's), and the body's sideways
+ * acceleration within what friction gives (SMGI_STEER_GRIP: the speed
+ * round a radius r is at most sqrt(a r)). */
+static float turn_share(float limit, float kappa, float full,
                         float own_turn) {
   float want = 1.0f;
   const float need = fabsf(kappa * full - own_turn);
-  if (need > st->turn_limit) want = st->turn_limit / need;
+  if (need > limit) want = limit / need;
   const float k = fabsf(kappa);
   if (k * full * full > SMGI_STEER_GRIP * SMGI_GRAVITY)
     want = fminf(want, sqrtf(SMGI_STEER_GRIP * SMGI_GRAVITY / k) / full);
@@ -441,11 +442,16 @@ static float turn_share(const smgi_steer* st, float kappa, float full,
  * `kappa` radians per metre, `at` metres ahead, as a cut (share_ahead):
  * braking at what the grip gives (friction bounds the push along the
  * ground as it bounds the sideways one) down to the speed the turn
- * allows, no slower than smgi_steer_cut_floor. */
+ * allows, no slower than smgi_steer_cut_floor. The turn allowed is the
+ * cut's own (SMGI_STEER_CUT_TURN times the limit, as smgi_steer_apply
+ * turns while cutting): bounding it by the plain limit slowed a runner
+ * to half its speed for each of the scribble's curls, below the walk's
+ * speed for a second on graphs whose walk is fast for their run. */
 static float cut_share(const smgi_steer* st, float kappa, float full,
                        float own_turn, float at) {
   if (!(full > 1e-3f)) return 1.0f;
-  const float v = fmaxf(turn_share(st, kappa, full, own_turn),
+  const float v = fmaxf(turn_share(SMGI_STEER_CUT_TURN * st->turn_limit,
+                                   kappa, full, own_turn),
                         smgi_steer_cut_floor(st->slide_ratio)) * full;
   return sqrtf(v * v + 2.0f * SMGI_STEER_GRIP * SMGI_GRAVITY * at) / full;
 }
@@ -484,7 +490,8 @@ static float share_ahead(smgi_steer* st, const smgi_path* p, float s,
       const float room =
           speed > 1e-3f ? SMGI_STEER_RATE_ACCEL * lead / speed : INFINITY;
       const float share =
-          turn_share(st, kk, full, i == 2u ? st->own_turn : 0.0f);
+          turn_share(st->turn_limit, kk, full,
+                     i == 2u ? st->own_turn : 0.0f);
       if (share >= slowest) {
         want = fminf(want, share + room);
       } else {
@@ -915,9 +922,14 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     want_sx *= sb / wl;
     want_sz *= sb / wl;
   }
-  /* continuous: the correction's rates change by bounded steps */
-  s->turn = smgi_clampf(
-      approach(s->turn, want_turn, SMGI_STEER_TURN_ACCEL * dt), -tb, tb);
+  /* continuous: the correction's rates change by bounded steps; a pivot
+   * reaches its doubled turn in the time a plain turn reaches its own
+   * (at the plain rate of change the curl was passed before the pivot
+   * turned at the rate its speed was chosen for) */
+  const float turn_accel =
+      (s->cutting ? SMGI_STEER_CUT_TURN : 1.0f) * SMGI_STEER_TURN_ACCEL;
+  s->turn = smgi_clampf(approach(s->turn, want_turn, turn_accel * dt), -tb,
+                        tb);
   s->slide[0] = approach(s->slide[0], want_sx, SMGI_STEER_SLIDE_ACCEL * dt);
   s->slide[1] = approach(s->slide[1], want_sz, SMGI_STEER_SLIDE_ACCEL * dt);
   float sl = sqrtf(s->slide[0] * s->slide[0] + s->slide[1] * s->slide[1]);
