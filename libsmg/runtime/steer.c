@@ -736,10 +736,17 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
  * curl was passed (the scribble run's pelvis p95 up to 9.9 degrees). The
  * facing is low-passed here, apart from the lead's (own_face), which
  * steers the heading and keeps its time. Angles this small are taken as
- * their sines. `fade` scales it (0: back to none, as at the end). */
+ * their sines. `on` 0 takes it back to none (at rest, steering off).
+ * It stays on while braking onto the stop: the slide onto the stop
+ * point crabs the body there, at a speed the turn still acts on (the
+ * Bandai Namco scribble run faced 9-11 degrees off its travel for the
+ * last second; the lead's removal fades out there so the stop is braked
+ * along the motion's own line, which turning the pose alone leaves as
+ * it is), and a stop slows the travel below SMGI_STEER_LEAD_SPEED, where
+ * the turn is already going back to none, before the rest. */
 static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float fs,
                              float fc, float ox, float oz, float dt,
-                             float fade) {
+                             int on) {
   const float kl =
       dt / ((s->cutting ? SMGI_STEER_LEAD_SMOOTH / SMGI_STEER_CUT_TURN
                         : SMGI_STEER_LEAD_SMOOTH) + dt);
@@ -757,13 +764,13 @@ static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float fs,
   const float t2 = t[0] * t[0] + t[1] * t[1];
   const float min2 = SMGI_STEER_LEAD_MIN * SMGI_STEER_LEAD_MIN;
   float want = 0.0f;
-  if (fade > 0.0f && s->own_speed > SMGI_STEER_LEAD_SPEED && f2 > min2 &&
+  if (on && s->own_speed > SMGI_STEER_LEAD_SPEED && f2 > min2 &&
       t2 > min2 && t[0] * f[0] + t[1] * f[1] > 0.0f) {
     const float off = (t[1] * f[0] - t[0] * f[1]) / sqrtf(f2 * t2);
     const float beyond = fabsf(off) - SMGI_STEER_LEAD_SWAY;
     if (beyond > 0.0f)
-      want = -fade * (off > 0.0f ? (beyond < s->body_max ? beyond : s->body_max)
-                                 : -(beyond < s->body_max ? beyond : s->body_max));
+      want = off > 0.0f ? -(beyond < s->body_max ? beyond : s->body_max)
+                         : (beyond < s->body_max ? beyond : s->body_max);
   }
   /* at most as fast as the heading correction turns: no pop where the
    * low-passed directions start to count (a walk's first steps) */
@@ -975,9 +982,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   body_onto_travel(s, pose, fs, fc, pose->ground[0] - before_x,
                    pose->ground[1] - before_z, dt,
                    s->enabled && p->count >= 2u &&
-                           s->mode == SMGI_STEER_FOLLOW
-                       ? end_fade
-                       : 0.0f);
+                       s->mode != SMGI_STEER_REST);
 }
 
 void smgi_lag_follow(smgi_lag* l, float c, float sn, float da, float px,
