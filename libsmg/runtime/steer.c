@@ -75,6 +75,7 @@ void smgi_steer_init(smgi_steer* s, uint32_t enabled, float turn_limit,
   s->own_face[0] = s->own_face[1] = 0.0f;
   s->own_travel[0] = s->own_travel[1] = 0.0f;
   s->out_travel[0] = s->out_travel[1] = 0.0f;
+  s->body_face[0] = s->body_face[1] = 0.0f;
   s->body_turn = 0.0f;
   s->turn = 0.0f;
   s->slide[0] = s->slide[1] = 0.0f;
@@ -709,6 +710,7 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   turn_vec(s->own_face, &d);
   turn_vec(s->own_travel, &d);
   turn_vec(s->out_travel, &d);
+  turn_vec(s->body_face, &d);
   s->prev_x = pose->ground[0];
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;
@@ -718,39 +720,57 @@ void smgi_steer_move(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
  * out, a body turning no faster than its bound in a tight curl, the
  * slide back to the path bending the travel): the body is turned onto
  * the way the character really goes, (ox, oz) this step. The motion's
- * low-passed facing against the low-passed direction of its travel after
- * the correction (unit steps, so a turn slowing down is not judged by
- * its faster way in), beyond the sway's residue, is turned out of the
- * pose alone, about the ground point, at most body_max (the angle the
- * slide bound lets the body crab); the plan and the ground transform are
- * left alone (turning them would turn the travel with the body). The two
+ * low-passed facing ((fs, fc): the sine and cosine of its heading this
+ * step) against the low-passed direction of its travel after the
+ * correction (unit steps, so a turn slowing down is not judged by its
+ * faster way in), beyond the sway's residue, is turned out of the pose
+ * alone, about the ground point, at most body_max (the angle the slide
+ * bound lets the body crab); the plan and the ground transform are left
+ * alone (turning them would turn the travel with the body). The two
  * low-passes already smooth it: a further one delayed it past the
  * lead's changes (a turning step coming in), and the body swung late
- * (other performers' p95 up to 10.6 degrees, 8.6 without). Angles this
- * small are taken as their sines. `fade` scales it (0: back to none, as
- * at the end). */
-static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float ox,
-                             float oz, float dt, float fade) {
-  const float kl = dt / (SMGI_STEER_LEAD_SMOOTH + dt);
+ * (other performers' p95 up to 10.6 degrees, 8.6 without). While
+ * cutting, the heading turns and its turn rate changes SMGI_STEER_CUT_TURN
+ * times as fast, so both low-passes are that much shorter: at the plain
+ * time the facing's lead built up over a curl was seen only once the
+ * curl was passed (the scribble run's pelvis p95 up to 9.9 degrees). The
+ * facing is low-passed here, apart from the lead's (own_face), which
+ * steers the heading and keeps its time. Angles this small are taken as
+ * their sines. `on` 0 takes it back to none (at rest, steering off).
+ * It stays on while braking onto the stop: the slide onto the stop
+ * point crabs the body there, at a speed the turn still acts on (the
+ * Bandai Namco scribble run faced 9-11 degrees off its travel for the
+ * last second; the lead's removal fades out there so the stop is braked
+ * along the motion's own line, which turning the pose alone leaves as
+ * it is), and a stop slows the travel below SMGI_STEER_LEAD_SPEED, where
+ * the turn is already going back to none, before the rest. */
+static void body_onto_travel(smgi_steer* s, smgi_pose* pose, float fs,
+                             float fc, float ox, float oz, float dt,
+                             int on) {
+  const float kl =
+      dt / ((s->cutting ? SMGI_STEER_LEAD_SMOOTH / SMGI_STEER_CUT_TURN
+                        : SMGI_STEER_LEAD_SMOOTH) + dt);
   float* t = s->out_travel;
+  float* f = s->body_face;
+  f[0] += kl * (fs - f[0]);
+  f[1] += kl * (fc - f[1]);
   const float o2 = ox * ox + oz * oz;
   if (o2 > SMGI_STEER_LEAD_SPEED * SMGI_STEER_LEAD_SPEED * dt * dt) {
     const float inv = 1.0f / sqrtf(o2);
     t[0] += kl * (ox * inv - t[0]);
     t[1] += kl * (oz * inv - t[1]);
   }
-  const float* f = s->own_face;
   const float f2 = f[0] * f[0] + f[1] * f[1];
   const float t2 = t[0] * t[0] + t[1] * t[1];
   const float min2 = SMGI_STEER_LEAD_MIN * SMGI_STEER_LEAD_MIN;
   float want = 0.0f;
-  if (fade > 0.0f && s->own_speed > SMGI_STEER_LEAD_SPEED && f2 > min2 &&
+  if (on && s->own_speed > SMGI_STEER_LEAD_SPEED && f2 > min2 &&
       t2 > min2 && t[0] * f[0] + t[1] * f[1] > 0.0f) {
     const float off = (t[1] * f[0] - t[0] * f[1]) / sqrtf(f2 * t2);
     const float beyond = fabsf(off) - SMGI_STEER_LEAD_SWAY;
     if (beyond > 0.0f)
-      want = -fade * (off > 0.0f ? (beyond < s->body_max ? beyond : s->body_max)
-                                 : -(beyond < s->body_max ? beyond : s->body_max));
+      want = off > 0.0f ? -(beyond < s->body_max ? beyond : s->body_max)
+                         : (beyond < s->body_max ? beyond : s->body_max);
   }
   /* at most as fast as the heading correction turns: no pop where the
    * low-passed directions start to count (a walk's first steps) */
@@ -785,6 +805,8 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   /* the motion's own speed and turning this step, low-passed */
   float k = dt / (SMGI_STEER_SMOOTH + dt);
   float travel_x = 0.0f, travel_z = 0.0f; /* the motion's, this step */
+  float fs, fc;
+  smgi_sincosf(gh, &fs, &fc);
   if (s->have_prev) {
     travel_x = gx - s->prev_x;
     travel_z = gz - s->prev_z;
@@ -793,8 +815,7 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
     float w = smgi_wrap_angle(gh - s->prev_h) / dt;
     s->own_speed += k * (v - s->own_speed);
     s->own_turn += k * (w - s->own_turn);
-    float fs, fc, kl = dt / (SMGI_STEER_LEAD_SMOOTH + dt);
-    smgi_sincosf(gh, &fs, &fc);
+    float kl = dt / (SMGI_STEER_LEAD_SMOOTH + dt);
     s->own_face[0] += kl * (fs - s->own_face[0]);
     s->own_face[1] += kl * (fc - s->own_face[1]);
     s->own_travel[0] += kl * (vx / dt - s->own_travel[0]);
@@ -958,12 +979,10 @@ void smgi_steer_apply(smgi_steer* s, smgi_pose* pose, smgi_lower* lower,
   s->prev_x = pose->ground[0];
   s->prev_z = pose->ground[1];
   s->prev_h = pose->heading;
-  body_onto_travel(s, pose, pose->ground[0] - before_x,
+  body_onto_travel(s, pose, fs, fc, pose->ground[0] - before_x,
                    pose->ground[1] - before_z, dt,
                    s->enabled && p->count >= 2u &&
-                           s->mode == SMGI_STEER_FOLLOW
-                       ? end_fade
-                       : 0.0f);
+                       s->mode != SMGI_STEER_REST);
 }
 
 void smgi_lag_follow(smgi_lag* l, float c, float sn, float da, float px,

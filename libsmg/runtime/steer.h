@@ -45,6 +45,7 @@ typedef struct smgi_steer {
    * to the pose alone: the plan and the ground transform keep the
    * motion's facing) */
   float out_travel[2];
+  float body_face[2];     /* the motion's facing, low-passed as out_travel */
   float body_turn;
   float body_max;         /* the largest body_turn: the angle the slide
                            * ratio crabs the body by (its sine) */

@@ -59,6 +59,7 @@
 #define WIDE_SKEW 0.35f   /* rad (20 deg): beyond the slide bound's 14 */
 #define WIDE_LINE_DEG 4.0f
 #define WIDE_CURVE_DEG 4.5f
+#define STOP_DEG 14.0f    /* the slide ratio's crab: all the turn takes */
 
 /* Turns every frame's whole body by `a` about the vertical through the
  * hips: the root rotation is yawed, the root's path kept. */
@@ -307,11 +308,50 @@ static void test_walk_off_to_the_side(void** state) {
   bg_free(&set);
 }
 
+/* Coming to a stop, the body is still turned onto its travel: the
+ * lead's removal fades out there (the stop is braked along the motion's
+ * own line), so a body 20 degrees off its travel keeps all of it unless
+ * the turn out of the pose goes on until it stands; that turn takes at
+ * most the slide ratio's crab angle (14 degrees) of it (p95 over the
+ * last 4 m and the stop: 21.0 degrees when that turn faded out with the
+ * lead, 11.4 kept on). */
+static void test_faces_travel_into_the_stop(void** state) {
+  (void)state;
+  bg_set set;
+  smg_bake_result res;
+  static walk_rec r;
+  smg_character_state st;
+  smg_graph* g = bake_skewed(&set, &res, WIDE_SKEW, 0);
+  float line[4];
+  rt_line(line, 2u, 16.0f);
+  rec_open(g, line, 2u, &r);
+  int rest = -1, near = -1;
+  while (rest < 0 || r.frames < rest + (int)FPS) {
+    rec_step(&r);
+    memset(&st, 0, sizeof st);
+    st.struct_size = sizeof st;
+    assert_int_equal(smg_character_get_state(r.ch, &st), SMG_OK);
+    if (near < 0 && hypotf(r.hips[r.frames - 1][0] - line[2],
+                           r.hips[r.frames - 1][1] - line[3]) < 4.0f)
+      near = r.frames - 1;
+    if (rest < 0 && (st.flags & SMG_STATE_PATH_END_REACHED)) rest = r.frames;
+  }
+  const float p = rec_p95(&r, near);
+  rec_close(&r);
+  print_message("body 20 deg off its travel, into the stop: pelvis against "
+                "travel p95 %.1f deg\n", p);
+  assert_true(p <= STOP_DEG);
+  smg_graph_destroy(g);
+  smg_bake_result_free(&res);
+  bg_free(&set);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_straight_and_s_curve),
       cmocka_unit_test(test_lead_beyond_the_slide),
       cmocka_unit_test(test_walk_off_to_the_side),
+      cmocka_unit_test(test_faces_travel_into_the_stop),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
