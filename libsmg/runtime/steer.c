@@ -37,8 +37,9 @@
  * feet down from which the settling step (rest.c) brings the hips nearest
  * the last point (a frame with one foot down, or any, when the data has
  * none: by its root) and slows the playback down onto it, never below
- * SMGI_STEER_BRAKE_FLOOR of real time, sliding the remaining offset out on
- * the way. There the playhead stays (the rest stage stands the character)
+ * SMGI_STEER_BRAKE_FLOOR of real time and only while both feet are down
+ * (a swing is not drawn out), sliding the remaining offset out on the
+ * way. There the playhead stays (the rest stage stands the character)
  * until the path changes. Where the path turns too tightly for the
  * available turning at the current speed, the character slows down: the
  * playback to no less than SMGI_STEER_RATE_MIN (slower is slow motion),
@@ -590,6 +591,14 @@ float smgi_steer_frames(smgi_steer* s, const smgi_lower* lower,
    * rest (rest.c) lets the hips glide on over the feet */
   if (r1 < SMGI_STEER_BRAKE_FLOOR && r >= SMGI_STEER_BRAKE_FLOOR)
     r1 = SMGI_STEER_BRAKE_FLOOR;
+  /* nor is a foot in the air slowed: that draws its swing out past the
+   * data's own (a long last step of the data longer still), so the
+   * braking falls on the frames with both feet down */
+  uint32_t fl = 0;
+  const uint32_t both = SMGI_FRAME_LEFT_CONTACT | SMGI_FRAME_RIGHT_CONTACT;
+  float gx, gz;
+  if (frame_ground(lower, in->graph, 0, &gx, &gz, &fl) && (fl & both) != both)
+    r1 = r;
   float frames = 0.5f * (r + (r1 > 0.0f ? r1 : 0.0f)) * full;
   if (r1 <= SMGI_STEER_REST_RATE || frames >= left) {
     s->mode = SMGI_STEER_REST;
