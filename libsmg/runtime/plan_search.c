@@ -475,9 +475,23 @@ void smgi_seq_dfs(smgi_seq_ctx* c, smgi_seq_state st, uint32_t branches,
 #if defined(__GNUC__) || defined(__clang__)
         /* a kid the search may descend into: its out-edge records and
          * its leaf record, cold on a big graph, start coming while the
-         * other kids are weighed (a hint only) */
-        __builtin_prefetch(&smgi_derived_of(c->g)->search_edges[nx.first_edge]);
-        __builtin_prefetch(&smgi_derived_of(c->g)->node_next[nx.node]);
+         * other kids are weighed (a hint only). All of them: the records
+         * of the edges it would branch over span several lines (48 bytes
+         * each), and a leaf record two or three (128 bytes, unaligned) */
+        {
+          const smgi_derived* dv = smgi_derived_of(c->g);
+          const uint32_t kn = nx.edge_count < SMGI_SEQ_MAX_KIDS
+                                  ? nx.edge_count
+                                  : SMGI_SEQ_MAX_KIDS;
+          const char* ep = (const char*)&dv->search_edges[nx.first_edge];
+          const size_t eb = (size_t)(kn ? kn : 1u) * sizeof(smgi_search_edge);
+          for (size_t o = 0; o < eb; o += 64u) __builtin_prefetch(ep + o);
+          __builtin_prefetch(ep + eb - 1u);
+          const char* np = (const char*)&dv->node_next[nx.node];
+          __builtin_prefetch(np);
+          __builtin_prefetch(np + 64);
+          __builtin_prefetch(np + sizeof(smgi_node_next) - 1u);
+        }
 #endif
         uint32_t i = nk++;
         while (i > 0 && kids[i - 1u].cost + kids[i - 1u].pen >

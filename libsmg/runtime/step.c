@@ -64,14 +64,34 @@ SMGI_KEEP_CALL static void prefetch(const smg_character* ch) {
     PREFETCH_RANGE(ch->path.xz + 2u * ch->seg, sizeof(float) * 6u, 0);
     PREFETCH_RANGE(ch->path.cum + ch->seg, sizeof(float) * 3u, 0);
   }
-  /* the lower-body records the playhead is at and goes to next */
+  /* the lower-body records the playhead is at and goes to next, after
+   * this step's advance too (its pose is sampled there), with their
+   * frames' ground placements; past the edge's end, the next edge's first
+   * (on a big graph each was a miss of its own) */
   const smg_graph* g = ch->graph;
   const smgi_qentry* h = smgi_q_at_c(&ch->lower, 0);
   const smgi_edge* e = &g->data.lower_edges[h->edge];
   const uint32_t i0 = (uint32_t)ch->lower.t;
-  if (i0 + 1u < e->frame_count)
+  if (i0 < e->frame_count) {
+    const uint32_t n = e->frame_count - i0 < 3u ? e->frame_count - i0 : 3u;
     PREFETCH_RANGE(smgi_graph_pose(g, e->first_frame + i0),
-                   2u * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
+                   n * (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
+    PREFETCH_RANGE(&g->data.frames[e->first_frame + i0],
+                   n * sizeof(smgi_frame), 0);
+  }
+  /* the next entries' edges: the steering and the upper body look
+   * frames ahead through the queue (smgi_q_locate) */
+  if (ch->lower.count > 1u) {
+    const smgi_edge* e1 =
+        &g->data.lower_edges[smgi_q_at_c(&ch->lower, 1)->edge];
+    PREFETCH_RANGE(e1, sizeof *e1, 0);
+    if (ch->lower.count > 2u)
+      PREFETCH_RANGE(&g->data.lower_edges[smgi_q_at_c(&ch->lower, 2)->edge],
+                     sizeof *e1, 0);
+    if (i0 + 3u >= e->frame_count)
+      PREFETCH_RANGE(smgi_graph_pose(g, e1->first_frame),
+                     (size_t)SMGI_POSE_RECORD_SIZE(J), 0);
+  }
 #undef PREFETCH_RANGE
 #else
   (void)ch;
