@@ -32,6 +32,8 @@
 #define RG_MAX_JOINTS 80
 #define RG_BAND 0.025f     /* m: toe near its floor level */
 #define RG_MIN_SWING 0.1f  /* s */
+#define RG_ARRIVED 0.5f    /* m: hips this near the path's end have arrived */
+#define RG_STILL 0.05f     /* m: hips within this of where they end stand */
 
 typedef struct rg_legs {
   uint32_t toe[2], ankle[2], thigh[2]; /* [0] = left (facing +Z: +X) */
@@ -104,6 +106,40 @@ static inline int rg_record(rg_run* r, const smg_character* ch,
   }
   r->n++;
   return 1;
+}
+
+/* Record ch from its current pose on, one step of r->dt at a time,
+ * until `after` seconds after its hips came within RG_ARRIVED of the
+ * path's end (ex, ez). 0 when a step or a record fails, or the run does
+ * not fit. */
+static inline int rg_record_stop(rg_run* r, smg_character* ch,
+                                 const rg_legs* L, float ex, float ez,
+                                 float after) {
+  if (!rg_record(r, ch, L)) return 0;
+  uint32_t more = 0u;
+  int arrived = 0;
+  for (;;) {
+    if (smg_character_step(ch, r->dt) != SMG_OK || !rg_record(r, ch, L))
+      return 0;
+    const float* h = r->hips[r->n - 1u];
+    if (!arrived && hypotf(h[0] - ex, h[2] - ez) < RG_ARRIVED) {
+      arrived = 1;
+      more = (uint32_t)(after / r->dt + 0.5f);
+    } else if (arrived && --more == 0u) {
+      return 1;
+    }
+  }
+}
+
+/* First frame of the rest: from it on the hips stay within RG_STILL of
+ * where they end. */
+static inline uint32_t rg_rest_start(const rg_run* r) {
+  const float* e = r->hips[r->n - 1u];
+  uint32_t rest = r->n;
+  while (rest > 0u && hypotf(r->hips[rest - 1u][0] - e[0],
+                             r->hips[rest - 1u][2] - e[2]) <= RG_STILL)
+    --rest;
+  return rest;
 }
 
 static inline int rg_cmpf(const void* a, const void* b) {

@@ -40,9 +40,7 @@
 #define FPS 30.0f
 #define SHIFT_M 0.045f   /* how far the standing hips move back */
 #define SHIFT_S 1.5f     /* over how long */
-#define ARRIVED_M 0.5f   /* hips this near the path's end: arrived */
 #define AFTER_S 4.0f     /* recorded after arriving */
-#define STILL_M 0.05f    /* hips stopped: within this of where they end */
 #define MAX_POINTS 256
 
 static rg_run g_run; /* one run at a time */
@@ -111,25 +109,10 @@ static float toe_at_rest_on(smg_graph* g, const float* xz, uint32_t n,
   memset(r, 0, sizeof *r);
   r->J = info.joint_count;
   r->dt = 1.0f / FPS;
-  assert_true(rg_record(r, ch, &legs));
-  const float ex = xz[2 * n - 2], ez = xz[2 * n - 1];
-  uint32_t more = SMGI_NONE;
-  while (more != 0u) {
-    assert_int_equal(smg_character_step(ch, r->dt), SMG_OK);
-    assert_true(rg_record(r, ch, &legs));
-    const float* h = r->hips[r->n - 1u];
-    if (more == SMGI_NONE &&
-        hypotf(h[0] - ex, h[2] - ez) < ARRIVED_M)
-      more = (uint32_t)(AFTER_S * FPS);
-    else if (more != SMGI_NONE)
-      --more;
-  }
+  assert_true(rg_record_stop(r, ch, &legs, xz[2 * n - 2], xz[2 * n - 1],
+                             AFTER_S));
   smg_character_destroy(ch);
-  const float* e = r->hips[r->n - 1u];
-  uint32_t rest = r->n;
-  while (rest > 0u && hypotf(r->hips[rest - 1u][0] - e[0],
-                             r->hips[rest - 1u][2] - e[2]) <= STILL_M)
-    --rest;
+  const uint32_t rest = rg_rest_start(r);
   float up = 0.0f;
   for (int f = 0; f < 2; ++f) {
     const float level = rg_floor(r, f);

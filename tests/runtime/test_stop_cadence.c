@@ -29,9 +29,7 @@
 #include "test_env.h"
 
 #define FPS 30.0f
-#define ARRIVED_M 0.5f /* hips this near the path's end: arrived */
 #define AFTER_S 3.0f   /* recorded after arriving */
-#define STILL_M 0.05f  /* hips stopped: within this of where they end */
 #define MAX_SWINGS 256
 #define PHASES 32        /* stop lengths, 5 cm apart: over a stride */
 #define MEDIAN_BOUND 1.2f /* typical stop swing / steady swing */
@@ -57,23 +55,9 @@ static float stop_swing_ratio(smg_graph* g, const rg_legs* legs, uint32_t J,
   memset(r, 0, sizeof *r);
   r->J = J;
   r->dt = 1.0f / FPS;
-  assert_true(rg_record(r, ch, legs));
-  uint32_t more = SMGI_NONE;
-  while (more != 0u) {
-    assert_int_equal(smg_character_step(ch, r->dt), SMG_OK);
-    assert_true(rg_record(r, ch, legs));
-    const float* h = r->hips[r->n - 1u];
-    if (more == SMGI_NONE && hypotf(h[0] - xz[2], h[2] - xz[3]) < ARRIVED_M)
-      more = (uint32_t)(AFTER_S * FPS);
-    else if (more != SMGI_NONE)
-      --more;
-  }
+  assert_true(rg_record_stop(r, ch, legs, xz[2], xz[3], AFTER_S));
   smg_character_destroy(ch);
-  const float* e = r->hips[r->n - 1u];
-  uint32_t rest = r->n;
-  while (rest > 0u && hypotf(r->hips[rest - 1u][0] - e[0],
-                             r->hips[rest - 1u][2] - e[2]) <= STILL_M)
-    --rest;
+  const uint32_t rest = rg_rest_start(r);
   uint32_t sw[MAX_SWINGS][2];
   const uint32_t c = rg_swings(r, sw, MAX_SWINGS);
   uint32_t steady = 0, last = 0;
