@@ -12,6 +12,34 @@
 #include "pose_simd.h"
 #include "rmath.h"
 
+/* Whether joint j belongs to the set sampled. */
+static inline int joint_wanted(const smgi_joint* joints, smgi_joint_set set,
+                               uint32_t j) {
+  return set == SMGI_JOINTS_ALL ||
+         (set == SMGI_JOINTS_UPPER) == (joints[j].body_part == SMG_BODY_UPPER);
+}
+
+#if SMGI_QPACK_SSE
+/* The joints of the group of four from `base` that the set wants, bit k
+ * for joint base + k (15: all, the common case, computes nothing). */
+static inline unsigned group_want(const smgi_joint* joints,
+                                  smgi_joint_set set, uint32_t base) {
+  if (set == SMGI_JOINTS_ALL) return 15u;
+  unsigned want = 0u;
+  for (uint32_t k = 0; k < 4u; ++k)
+    if (joint_wanted(joints, set, base + k)) want |= 1u << k;
+  return want;
+}
+
+/* A group that mixes wanted and unwanted joints is blended into scratch
+ * q; its wanted joints are copied out. */
+static inline void store_wanted(float* out, uint32_t base, const float* q,
+                                unsigned want) {
+  for (uint32_t k = 0; k < 4u; ++k)
+    if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
+}
+#endif
+
 void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
                         const unsigned char* rb, float t,
                         smgi_joint_set set, float* out) {
@@ -19,9 +47,6 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
   const smgi_joint* joints = g->data.joints;
   const unsigned char* qa = smgi_pose_rot(ra, 0);
   const unsigned char* qb = smgi_pose_rot(rb, 0);
-#define WANTED(j)                                                     \
-  (set == SMGI_JOINTS_ALL ||                                          \
-   (set == SMGI_JOINTS_UPPER) == (joints[j].body_part == SMG_BODY_UPPER))
   uint32_t j = 1;
 #if SMGI_QPACK_SSE
   /* Every joint four at a time: the last group is moved back to end at
@@ -32,35 +57,27 @@ void smgi_sample_joints(const smg_graph* g, const unsigned char* ra,
    * in registers across the groups; the common case (every joint: no
    * action playing) computes no masks. */
   if (J >= 5u) {
-    const int all = set == SMGI_JOINTS_ALL;
     for (; j < J; j += 4u) {
       const uint32_t base = j + 4u <= J ? j : J - 4u;
-      unsigned want = 15u;
-      if (!all) {
-        want = (WANTED(base) ? 1u : 0u) | (WANTED(base + 1u) ? 2u : 0u) |
-               (WANTED(base + 2u) ? 4u : 0u) | (WANTED(base + 3u) ? 8u : 0u);
-        if (want == 0u) continue;
-      }
+      const unsigned want = group_want(joints, set, base);
+      if (want == 0u) continue;
       float q[16];
       smgi_pose_nlerp4_sse(qa + SMGI_QPACK_BYTES * base,
                            qb + SMGI_QPACK_BYTES * base, t,
                            want == 15u ? out + 4u * base : q);
-      if (want != 15u)
-        for (uint32_t k = 0; k < 4u; ++k)
-          if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
+      if (want != 15u) store_wanted(out, base, q, want);
     }
     return;
   }
 #endif
   for (; j < J; ++j) {
-    if (!WANTED(j)) continue;
+    if (!joint_wanted(joints, set, j)) continue;
     /* the same operations as one lane of smgi_pose_nlerp4_sse */
     float ja[4], jb[4];
     smgi_quat_unpack_raw(qa + SMGI_QPACK_BYTES * j, ja);
     smgi_quat_unpack_raw(qb + SMGI_QPACK_BYTES * j, jb);
     smgi_q_nlerp(ja, jb, t, out + 4u * j);
   }
-#undef WANTED
 }
 
 uint32_t smgi_decoded_floats(uint32_t joint_count) {
@@ -120,19 +137,11 @@ void smgi_sample_frames(const smg_graph* g, uint32_t fa, uint32_t fb,
     }
     const float* va = dec->rot + (size_t)sa * n;
     const float* vb = dec->rot + (size_t)sb * n;
-    const int all = set == SMGI_JOINTS_ALL;
     const __m128 tv = _mm_set1_ps(t), u = _mm_set1_ps(1.0f - t);
     for (uint32_t j = 1, i = 0; j < J; j += 4u, ++i) {
       const uint32_t base = j + 4u <= J ? j : J - 4u;
-      unsigned want = 15u;
-      if (!all) {
-        want = 0u;
-        for (uint32_t k = 0; k < 4u; ++k)
-          if ((set == SMGI_JOINTS_UPPER) ==
-              (joints[base + k].body_part == SMG_BODY_UPPER))
-            want |= 1u << k;
-        if (want == 0u) continue;
-      }
+      const unsigned want = group_want(joints, set, base);
+      if (want == 0u) continue;
       float q[16];
       const float* a = va + 16u * i;
       const float* b = vb + 16u * i;
@@ -141,9 +150,7 @@ void smgi_sample_frames(const smg_graph* g, uint32_t fa, uint32_t fb,
                       _mm_loadu_ps(b), _mm_loadu_ps(b + 4),
                       _mm_loadu_ps(b + 8), _mm_loadu_ps(b + 12), tv, u,
                       want == 15u ? out + 4u * base : q);
-      if (want != 15u)
-        for (uint32_t k = 0; k < 4u; ++k)
-          if (want & (1u << k)) memcpy(out + 4u * (base + k), q + 4u * k, 16u);
+      if (want != 15u) store_wanted(out, base, q, want);
     }
     return;
   }
