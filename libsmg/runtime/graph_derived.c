@@ -1165,8 +1165,20 @@ smg_result smgi_graph_derived_build(smg_graph* g) {
   }
   dv->style_can_stop = can_stop;
   smgi_idle_choose(g, &dv->idle);
+  const size_t calm = smgi_idle_calm_floats(g, &dv->idle);
+  if (calm != 0u) {
+    dv->idle.calm =
+        (float*)smgi_alloc(&g->allocator, sizeof(float) * calm, 16);
+    if (!dv->idle.calm) {
+      smgi_free(&g->allocator, mem);
+      return SMG_ERROR_OUT_OF_MEMORY;
+    }
+    smgi_idle_calm_build(g, &dv->idle, dv->idle.calm);
+    dv->idle.calm_joints = smgi_idle_trunk_count(g);
+  }
   smg_result r = build_stops(g, dv);
   if (r != SMG_OK) {
+    if (dv->idle.calm) smgi_free(&g->allocator, dv->idle.calm);
     smgi_free(&g->allocator, mem);
     return r;
   }
@@ -1178,6 +1190,7 @@ void smgi_graph_derived_free(smg_graph* g) {
   if (!g || !g->derived) return;
   smgi_derived* dv = (smgi_derived*)g->derived;
   if (dv->stop_block) smgi_free(&g->allocator, dv->stop_block);
+  if (dv->idle.calm) smgi_free(&g->allocator, dv->idle.calm);
   smgi_free(&g->allocator, g->derived);
   g->derived = NULL;
 }

@@ -148,3 +148,54 @@ void smgi_idle_choose(const smg_graph* g, smgi_idle* out) {
   }
   if (out->count > 0 && !out->whole) choose_arms(g, out);
 }
+
+uint32_t smgi_idle_trunk_count(const smg_graph* g) {
+  uint32_t n = 0;
+  for (uint32_t j = 1; j < g->data.joint_count; ++j)
+    n += (uint32_t)smgi_idle_calmed(g, j);
+  return n;
+}
+
+size_t smgi_idle_calm_floats(const smg_graph* g, const smgi_idle* idle) {
+  if (idle->count == 0u || idle->whole) return 0u;
+  return 4u * (size_t)smgi_idle_trunk_count(g) * (idle->count + 1u);
+}
+
+/* An action's trunk follows the action's beat (an energetic wave bobs the
+ * chest 3-4 deg at 2 Hz); its slower sway is standing. Each entry is a box
+ * over the frames about its own, summed with the signs of that frame's
+ * rotation; rest.c blends two neighbours and normalises. */
+void smgi_idle_calm_build(const smg_graph* g, const smgi_idle* idle,
+                          float* calm) {
+  const uint32_t J = g->data.joint_count;
+  const int32_t K = (int32_t)(0.5f * SMGI_IDLE_TRUNK_SECONDS *
+                                  g->data.info->frame_rate +
+                              0.5f);
+  const int32_t last = (int32_t)idle->count - 1;
+  for (int32_t i = 0; i <= last + 1; ++i) {
+    const int32_t own = i > last ? last : i;
+    for (uint32_t j = 1; j < J; ++j) {
+      if (!smgi_idle_calmed(g, j)) continue;
+      float ref[4], sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      smgi_quat_unpack_raw(
+          smgi_pose_rot(smgi_graph_pose(g, idle->first + (uint32_t)own), j),
+          ref);
+      for (int32_t k = -K; k <= K; ++k) {
+        int32_t f = i + k;
+        f = f < 0 ? 0 : f > last ? last : f;
+        float q[4];
+        smgi_quat_unpack_raw(
+            smgi_pose_rot(smgi_graph_pose(g, idle->first + (uint32_t)f), j),
+            q);
+        const float s =
+            q[0] * ref[0] + q[1] * ref[1] + q[2] * ref[2] + q[3] * ref[3] <
+                    0.0f
+                ? -1.0f
+                : 1.0f;
+        for (int c = 0; c < 4; ++c) sum[c] += s * q[c];
+      }
+      memcpy(calm, sum, sizeof sum);
+      calm += 4;
+    }
+  }
+}

@@ -15,6 +15,7 @@
 #ifndef SMG_IDLE_H
 #define SMG_IDLE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "graph_data.h"
@@ -44,6 +45,14 @@ typedef struct smgi_idle {
   /* how long a foot swings in the graph's locomotion (median of its
    * labelled swings, seconds): the steps made at rest take as long */
   float swing_seconds;
+  /* whole 0: the trunk's rotations averaged over SMGI_IDLE_TRUNK_SECONDS
+   * about each frame of the stretch, count + 1 entries (the last about
+   * the frame after it, the ends repeated) of smgi_idle_trunk_count
+   * quaternions, each entry's signs those of its own frame; built at load
+   * (smgi_idle_calm_build) so that standing plays them, not their sums.
+   * NULL: none (whole 1, or no standing motion). */
+  float* calm;
+  uint32_t calm_joints; /* quaternions per entry of calm */
 } smgi_idle;
 
 /* Whether joint j is part of the trunk: an upper-body joint without a
@@ -51,6 +60,20 @@ typedef struct smgi_idle {
 static inline int smgi_idle_trunk(const smgi_joint* joints, uint32_t j) {
   return joints[j].body_part == SMG_BODY_UPPER && joints[j].mirror == j;
 }
+
+/* The trunk's joints the calm table holds: those of smgi_idle_trunk but
+ * the spine base (whose turn on the hips belongs to the hips' own sway:
+ * played as is), in joint order. */
+static inline int smgi_idle_calmed(const smg_graph* g, uint32_t j) {
+  return j != g->data.info->spine_base_joint &&
+         smgi_idle_trunk(g->data.joints, j);
+}
+uint32_t smgi_idle_trunk_count(const smg_graph* g);
+/* Floats of idle's calm table (0: it has none). */
+size_t smgi_idle_calm_floats(const smg_graph* g, const smgi_idle* idle);
+/* Fills idle's calm table of smgi_idle_calm_floats floats. */
+void smgi_idle_calm_build(const smg_graph* g, const smgi_idle* idle,
+                          float* calm);
 
 /* Clip-space position of joint j in pool frame f (the chain from the root
  * composed joint by joint: a leg is a handful of joints). */

@@ -271,39 +271,30 @@ static void turn_step(smgi_rest* r, const smgi_rest_io* io) {
 
 /* Standing motion from an action: its trunk above the spine base (whose
  * turn on the hips belongs to the hips' own sway, played as is) averaged
- * over SMGI_IDLE_TRUNK_SECONDS about frame i0 + a (a box over the frames,
- * the edge ones weighted by a; the stretch's ends repeated): a
- * performer's trunk follows the action's beat (an energetic wave bobs
- * the chest 3-4 deg at 2 Hz), its slower sway is standing. Bounded: the
- * window's frames times the trunk's joints. */
+ * over SMGI_IDLE_TRUNK_SECONDS about frame i0 + a: the load-time boxes
+ * about frames i0 and i0 + 1 (idle.h) blended by a, each turned to the
+ * hemisphere of the rotation playing, so the one box slides on. */
 static void calm_trunk(const smg_graph* g, const smgi_idle* idle,
                        uint32_t i0, float a, float* tmp) {
-  const smgi_joint* joints = g->data.joints;
   const uint32_t J = g->data.joint_count;
-  const uint32_t sb = g->data.info->spine_base_joint;
-  const int32_t K = (int32_t)(0.5f * SMGI_IDLE_TRUNK_SECONDS *
-                                  g->data.info->frame_rate +
-                              0.5f);
-  const int32_t last = (int32_t)idle->count - 1;
+  const uint32_t n = idle->calm_joints;
+  const float* ca = idle->calm + 4u * (size_t)n * i0;
+  const float* cb = ca + 4u * n;
   for (uint32_t j = 1; j < J; ++j) {
-    if (j == sb || !smgi_idle_trunk(joints, j)) continue;
+    if (!smgi_idle_calmed(g, j)) continue;
     const float* ref = tmp + 4u * j;
-    float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (int32_t k = -K; k <= K + 1; ++k) {
-      const float w = k == -K ? 1.0f - a : k == K + 1 ? a : 1.0f;
-      int32_t i = (int32_t)i0 + k;
-      i = i < 0 ? 0 : i > last ? last : i;
-      float q[4];
-      smgi_quat_unpack_raw(
-          smgi_pose_rot(smgi_graph_pose(g, idle->first + (uint32_t)i), j), q);
-      const float s =
-          q[0] * ref[0] + q[1] * ref[1] + q[2] * ref[2] + q[3] * ref[3] < 0.0f
-              ? -w
-              : w;
-      for (int c = 0; c < 4; ++c) sum[c] += s * q[c];
-    }
+    const float da =
+        ca[0] * ref[0] + ca[1] * ref[1] + ca[2] * ref[2] + ca[3] * ref[3];
+    const float db =
+        cb[0] * ref[0] + cb[1] * ref[1] + cb[2] * ref[2] + cb[3] * ref[3];
+    const float wa = da < 0.0f ? a - 1.0f : 1.0f - a;
+    const float wb = db < 0.0f ? -a : a;
+    float sum[4];
+    for (int c = 0; c < 4; ++c) sum[c] = wa * ca[c] + wb * cb[c];
     smgi_q_normalize(sum);
     memcpy(tmp + 4u * j, sum, sizeof sum);
+    ca += 4;
+    cb += 4;
   }
 }
 
