@@ -187,10 +187,70 @@ static void test_action_at_rest_still_plays(void** state) {
   smg_bake_result_free(&res);
 }
 
+/* An allocator that fails from allocation `fail_at` on (-1: never). */
+typedef struct failing_alloc {
+  int allocs, frees, fail_at;
+} failing_alloc;
+
+static void* failing_alloc_fn(size_t size, size_t align, void* user) {
+  failing_alloc* c = (failing_alloc*)user;
+  void* p = NULL;
+  if (c->fail_at >= 0 && c->allocs >= c->fail_at) return NULL;
+  if (align < sizeof(void*)) align = sizeof(void*);
+  if (posix_memalign(&p, align, size ? size : 1) != 0) return NULL;
+  c->allocs++;
+  return p;
+}
+
+static void failing_free_fn(void* p, void* user) {
+  failing_alloc* c = (failing_alloc*)user;
+  if (p) c->frees++;
+  free(p);
+}
+
+/* The trunk's averages are a table built at load (idle.h): a graph whose
+ * standing motion comes from an action has one, and every allocation of
+ * the load failing (that one too) fails it with OUT_OF_MEMORY, freeing
+ * what it took. */
+static void test_calm_table_load_fails_cleanly(void** state) {
+  (void)state;
+  smg_bake_result res;
+  smg_graph* g = bake_standard(&res);
+  assert_non_null(smgi_derived_of(g)->idle.calm);
+  assert_true(smgi_derived_of(g)->idle.calm_joints > 0u);
+  smg_graph_destroy(g);
+  failing_alloc c;
+  smg_graph_desc desc;
+  memset(&desc, 0, sizeof desc);
+  desc.struct_size = sizeof desc;
+  desc.allocator.alloc = failing_alloc_fn;
+  desc.allocator.free = failing_free_fn;
+  desc.allocator.user = &c;
+  memset(&c, 0, sizeof c);
+  c.fail_at = -1;
+  assert_int_equal(
+      smg_graph_load_memory(res.blob, res.blob_size, &desc, &g), SMG_OK);
+  const int total = c.allocs;
+  smg_graph_destroy(g);
+  assert_int_equal(c.frees, c.allocs);
+  for (int n = 0; n < total; ++n) {
+    memset(&c, 0, sizeof c);
+    c.fail_at = n;
+    g = NULL;
+    assert_int_equal(
+        smg_graph_load_memory(res.blob, res.blob_size, &desc, &g),
+        SMG_ERROR_OUT_OF_MEMORY);
+    assert_null(g);
+    assert_int_equal(c.frees, c.allocs);
+  }
+  smg_bake_result_free(&res);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_upper_body_stands_calmly),
       cmocka_unit_test(test_action_at_rest_still_plays),
+      cmocka_unit_test(test_calm_table_load_fails_cleanly),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
